@@ -1,0 +1,148 @@
+// Subcommand dispatch and the error policy: bad input prints one line and exits 2, a failed check
+// exits 1, anything unexpected prints its context and exits 1.
+#include "cli/cli.h"
+
+#include "cli/render_command.h"
+#include "core/strings.h"
+#include "gl/context.h"
+#include "gl/timer.h"
+#include "gl/gl.h"
+#include "image/image_io.h"
+#include "image/metrics.h"
+#include "scene/input_error.h"
+#include "scene/scene_loader.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <exception>
+
+namespace ispm {
+namespace {
+
+constexpr int kExitBadInput = 2;
+constexpr int kExitCheckFailed = 1;
+
+int runInfo() {
+    auto context = gl::createHeadlessContext();
+    const gl::ContextInfo& info = context->getInfo();
+    std::printf("context path:  %s\n", gl::getContextPathName(info.path));
+    std::printf("device:        %s\n", info.device.c_str());
+    std::printf("vendor:        %s\n", info.vendor.c_str());
+    std::printf("renderer:      %s%s\n", info.renderer.c_str(), info.isSoftware ? " (software)" : "");
+    std::printf("version:       %s\n", info.version.c_str());
+    std::printf("GLSL:          %s\n", info.glslVersion.c_str());
+    std::printf("pass timing:   %s\n",
+                gl::getTimingMethodName(info.isSoftware ? gl::TimingMethod::CpuFinish
+                                                        : gl::TimingMethod::TimerQuery));
+    struct Limit {
+        const char* name;
+        GLenum pname;
+    };
+    const Limit limits[] = {
+        {"max texture size", GL_MAX_TEXTURE_SIZE},
+        {"max array texture layers", GL_MAX_ARRAY_TEXTURE_LAYERS},
+        {"max colour attachments", GL_MAX_COLOR_ATTACHMENTS},
+        {"max SSBO bindings", GL_MAX_SHADER_STORAGE_BUFFER_BINDINGS},
+        {"max SSBO size (bytes)", GL_MAX_SHADER_STORAGE_BLOCK_SIZE},
+        {"max compute invocations", GL_MAX_COMPUTE_WORK_GROUP_INVOCATIONS},
+        {"max compute shared bytes", GL_MAX_COMPUTE_SHARED_MEMORY_SIZE},
+        {"max TF buffers", GL_MAX_TRANSFORM_FEEDBACK_BUFFERS},
+        {"max TF interleaved comps", GL_MAX_TRANSFORM_FEEDBACK_INTERLEAVED_COMPONENTS},
+        {"max geometry out vertices", GL_MAX_GEOMETRY_OUTPUT_VERTICES},
+    };
+    for (const Limit& l : limits) {
+        GLint64 value = 0;
+        glGetInteger64v(l.pname, &value);
+        std::printf("%-26s %lld\n", l.name, static_cast<long long>(value));
+    }
+    GLint extensionCount = 0;
+    glGetIntegerv(GL_NUM_EXTENSIONS, &extensionCount);
+    std::printf("%-26s %d\n", "extensions", extensionCount);
+    return 0;
+}
+
+int runCompare(const std::string& a, const std::string& b, double maxRelMse) {
+    const Image test = readImage(a);
+    const Image reference = readImage(b);
+    const ImageMetrics m = computeMetrics(test, reference);
+    std::printf("pixels      %zu\n", m.pixelCount);
+    std::printf("RMSE        %.6g\n", m.rmse);
+    std::printf("relMSE      %.6g\n", m.relMse);
+    std::printf("SSIM        %.6f\n", m.ssim);
+    std::printf("mean ratio  %.6f %.6f %.6f\n", m.meanRatio.x, m.meanRatio.y, m.meanRatio.z);
+    if (maxRelMse >= 0.0 && !(m.relMse <= maxRelMse)) {
+        std::printf("FAIL: relMSE %.6g > %.6g\n", m.relMse, maxRelMse);
+        return kExitCheckFailed;
+    }
+    return 0;
+}
+
+} // namespace
+
+int runCli(int argc, char** argv) {
+    CLI::App app{"ispm: real-time global illumination by image-space photon mapping"};
+    app.require_subcommand(1);
+    app.set_help_all_flag("--help-all", "help for every subcommand");
+
+    RenderOptions render;
+    addRenderCommand(app, render);
+
+    std::string exportScene;
+    std::string exportOut;
+    CLI::App* exportCmd = app.add_subcommand(
+        "export", "Write the scene's world-space triangles as OBJ + MTL (generated geometry too)");
+    exportCmd->add_option("scene", exportScene, "scene file (JSON)")->required();
+    exportCmd->add_option("-o,--output", exportOut, "output .obj (the .mtl is written beside it)")
+        ->required();
+
+    CLI::App* infoCmd = app.add_subcommand(
+        "info", "Print the OpenGL context: path taken, vendor, renderer, version, limits");
+
+    std::string compareA;
+    std::string compareB;
+    double maxRelMse = -1.0;
+    CLI::App* compareCmd = app.add_subcommand(
+        "compare", "Compare image A against reference B: RMSE, relMSE, SSIM, mean ratio");
+    compareCmd->add_option("a", compareA, "test image (.png, .pfm, .exr)")->required();
+    compareCmd->add_option("b", compareB, "reference image (.png, .pfm, .exr)")->required();
+    compareCmd->add_option("--max-relmse", maxRelMse, "exit 1 when relMSE exceeds this")
+        ->check(CLI::NonNegativeNumber);
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        if (argc > 1 && app.get_subcommands().empty() && argv[1][0] != '-') {
+            std::fprintf(stderr, "ispm: unknown subcommand '%s' (expected render, export, info or "
+                                 "compare; see ispm --help)\n", argv[1]);
+        } else {
+            std::fprintf(stderr, "ispm: %s\n", e.what());
+        }
+        return kExitBadInput;
+    }
+
+    try {
+        if (app.got_subcommand("render")) return runRender(render);
+        if (app.got_subcommand(exportCmd)) {
+            const Scene scene = loadScene(exportScene);
+            exportObj(scene, exportOut);
+            std::printf("wrote %s (%zu triangles)\n", exportOut.c_str(), scene.countTriangles());
+            return 0;
+        }
+        if (app.got_subcommand(infoCmd)) return runInfo();
+        if (app.got_subcommand(compareCmd)) return runCompare(compareA, compareB, maxRelMse);
+    } catch (const InputError& e) {
+        std::fprintf(stderr, "ispm: %s\n", e.what());
+        return kExitBadInput;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "ispm: error: %s\n", e.what());
+        return kExitCheckFailed;
+    }
+    return 0;
+}
+
+} // namespace ispm

@@ -1,0 +1,59 @@
+// Shared CLI helpers.
+#include "cli/cli_common.h"
+
+#include "core/strings.h"
+#include "scene/input_error.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+
+namespace ispm {
+
+OutputKind classifyOutput(const std::string& path, const std::string& where) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (ext == ".png") return OutputKind::Png;
+    if (ext == ".pfm") return OutputKind::Pfm;
+    if (ext == ".exr") return OutputKind::Exr;
+    throw InputError(strCat(where, ": expected a file ending in .png, .pfm or .exr, got '", path, "'"));
+}
+
+Settings makeCommandLineSettings(const std::vector<std::string>& sets, std::optional<int> width,
+                                 std::optional<int> height) {
+    Settings settings;
+    for (const std::string& s : sets) settings.setFromString(s, "--set " + s);
+    if (width) settings.set("width", *width, "--width");
+    if (height) settings.set("height", *height, "--height");
+    return settings;
+}
+
+Image readAovImage(const FrameRunner& runner, Aov aov) {
+    const gl::Texture& texture = runner.getAov(aov);
+    const std::vector<glm::vec4> texels = texture.readRgba();
+    const int w = texture.getWidth();
+    const int h = texture.getHeight();
+    Image image(w, h, glm::vec3(0.0f));
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            // GL rows start at the bottom; images start at the top.
+            image.at(x, y) = glm::vec3(texels[static_cast<size_t>((h - 1 - y) * w + x)]);
+        }
+    }
+    return image;
+}
+
+void printTimings(const FrameRunner& runner, const gl::ContextInfo& info) {
+    std::printf("renderer: %s (%s); pass times by %s\n", info.renderer.c_str(),
+                gl::getContextPathName(info.path), gl::getTimingMethodName(runner.getTimingMethod()));
+    double total = 0.0;
+    for (const PassTiming& t : runner.getLastTimings()) {
+        std::printf("  %-12s %9.2f ms\n", t.name.c_str(), t.ms);
+        total += t.ms;
+    }
+    std::printf("  %-12s %9.2f ms\n", "frame", total);
+}
+
+} // namespace ispm

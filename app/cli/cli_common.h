@@ -1,0 +1,30 @@
+// Pieces the subcommands share: output kinds, effective settings, read-back, timing tables.
+#pragma once
+
+#include "gl/context.h"
+#include "image/image.h"
+#include "render/frame.h"
+#include "scene/scene.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace ispm {
+
+enum class OutputKind { Png, Pfm, Exr };
+
+// From the file extension; throws InputError naming `where` for anything else.
+OutputKind classifyOutput(const std::string& path, const std::string& where);
+
+// --set values, then --width/--height, checked against the settings table. Callers merge the
+// result over the scene's `render` block (the command line wins).
+Settings makeCommandLineSettings(const std::vector<std::string>& sets, std::optional<int> width,
+                                 std::optional<int> height);
+
+// Reads an AOV texture back into an image with row 0 at the top.
+Image readAovImage(const FrameRunner& runner, Aov aov);
+
+void printTimings(const FrameRunner& runner, const gl::ContextInfo& info);
+
+} // namespace ispm

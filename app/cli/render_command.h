@@ -1,0 +1,27 @@
+// `ispm render`: one frame of a scene, headless, to PNG (tone mapped) or PFM/EXR (linear).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace CLI {
+class App;
+}
+
+namespace ispm {
+
+struct RenderOptions {
+    std::string scenePath;
+    std::string outputPath;
+    std::optional<int> width; // unset: from the settings
+    std::optional<int> height;
+    std::vector<std::string> sets;
+    std::string aov = "total";
+    bool quiet = false;
+};
+
+void addRenderCommand(CLI::App& app, RenderOptions& options);
+int runRender(const RenderOptions& options);
+
+} // namespace ispm

@@ -1,0 +1,118 @@
+// FrameRunner: per-frame constants, pass order, timing.
+#include "render/frame.h"
+
+#include "core/strings.h"
+#include "gl/debug.h"
+#include "scene/input_error.h"
+
+#include <shared/scene_data.h>
+
+#include <cmath>
+
+namespace ispm {
+
+Aov parseAov(const std::string& text, const std::string& where) {
+    if (text == "direct") return Aov::Direct;
+    if (text == "indirect") return Aov::Indirect;
+    if (text == "total") return Aov::Total;
+    throw InputError(strCat(where, ": expected direct, indirect or total, got '", text, "'"));
+}
+
+void computeCameraRange(const Camera& camera, const Aabb& bounds, float& nearM, float& farM) {
+    const glm::vec3 axis = glm::normalize(camera.target - camera.position);
+    computeDepthRange(bounds, camera.position, axis, nearM, farM);
+    // The viewer's frustum corners reach further than its axis: grow far for the widest ray.
+    const float halfDiagonal = glm::length(bounds.getExtent());
+    farM = std::max(farM, glm::length(bounds.getCenter() - camera.position) + halfDiagonal);
+    if (camera.nearM > 0.0f) nearM = camera.nearM;
+    if (camera.farM > 0.0f) farM = camera.farM;
+}
+
+FrameRunner::FrameRunner(const Scene& scene, const Settings& settings, gl::TimingMethod timing)
+    : mScene(scene), mSettings(settings), mWidth(settings.getInt("width")),
+      mHeight(settings.getInt("height")), mTimer(timing),
+      mGpuScene(scene, settings.getInt("shadow_map_size")),
+      mFrameConstants("frame constants", sizeof(gpu::FrameConstants)) {
+    // Indirect light arrives with the photon passes; until then the compose pass reads black.
+    mBlack = gl::Texture::create2D("indirect", gl::Format::RGBA32F, mWidth, mHeight);
+    mBlack.clear(glm::vec4(0.0f));
+    mGBuffer = std::make_unique<GBufferPass>();
+    mLightViews = std::make_unique<LightViewPass>();
+    mDirect = std::make_unique<DirectPass>(mGBuffer->getGBuffer(), mLightViews->getGBuffer());
+    mCompose = std::make_unique<ComposePass>(mGBuffer->getGBuffer(), mDirect->getOutput(),
+                                             mBlack);
+    mTonemap = std::make_unique<TonemapPass>(mCompose->getOutput());
+    for (Pass* pass : std::initializer_list<Pass*>{mGBuffer.get(), mLightViews.get(), mDirect.get(),
+                                                   mCompose.get(), mTonemap.get()}) {
+        pass->resize(mWidth, mHeight);
+    }
+}
+
+void FrameRunner::updateFrameConstants() {
+    const Camera& cam = mScene.camera;
+    float nearM = 0.0f;
+    float farM = 0.0f;
+    computeCameraRange(cam, mGpuScene.getBounds(), nearM, farM);
+    const float aspect = static_cast<float>(mWidth) / static_cast<float>(mHeight);
+    mClipFromWorld = computeClipFromView(cam, aspect, nearM, farM) * computeViewFromWorld(cam);
+    gpu::FrameConstants fc{};
+    fc.clipFromWorld = mClipFromWorld;
+    fc.worldFromClip = glm::inverse(mClipFromWorld);
+    fc.cameraPosition = glm::vec4(cam.position, 1.0f);
+    fc.background = glm::vec4(mScene.background, 0.0f);
+    fc.imageSize = glm::vec4(mWidth, mHeight, 1.0f / static_cast<float>(mWidth),
+                             1.0f / static_cast<float>(mHeight));
+    fc.counts = glm::uvec4(mGpuScene.getLightCount(),
+                           static_cast<uint32_t>(mGpuScene.getLightCameras().size()),
+                           static_cast<uint32_t>(mSettings.getInt("seed")), 0u);
+    fc.shadow = glm::vec4(mSettings.getFloat("shadow_bias"),
+                          static_cast<float>(mGpuScene.getLightResolution()), 0.0f, 0.0f);
+    const float tonemapIndex = static_cast<float>(mSettings.get("tonemap"));
+    fc.tonemap = glm::vec4(tonemapIndex, std::exp2(mSettings.getFloat("exposure")),
+                           1.0f / mSettings.getFloat("gamma"),
+                           mSettings.isSet("luminance_max") ? mSettings.getFloat("luminance_max")
+                                                            : 0.0f);
+    mFrameConstants.upload(0, sizeof(fc), &fc);
+}
+
+void FrameRunner::runPass(Pass& pass, const FrameInputs& inputs) {
+    gl::DebugGroup group(pass.getName());
+    mTimer.begin(pass.getName());
+    pass.execute(inputs);
+    mTimer.end();
+}
+
+void FrameRunner::renderFrame() {
+    updateFrameConstants();
+    const FrameInputs inputs{mGpuScene, mSettings, mFrameConstants, mClipFromWorld,
+                             mScene.camera.position, mWidth, mHeight};
+    runPass(*mGBuffer, inputs);
+    runPass(*mLightViews, inputs);
+    runPass(*mDirect, inputs);
+    runPass(*mCompose, inputs);
+    runPass(*mTonemap, inputs);
+    mTimings.clear();
+    for (const gl::PassTimer::Sample& s : mTimer.collect()) mTimings.push_back({s.name, s.ms});
+}
+
+const gl::Texture& FrameRunner::getAov(Aov aov) const {
+    switch (aov) {
+    case Aov::Direct: return mDirect->getOutput();
+    case Aov::Indirect: return mBlack;
+    case Aov::Total: return mCompose->getOutput();
+    case Aov::Display: return mTonemap->getOutput();
+    }
+    return mCompose->getOutput();
+}
+
+size_t FrameRunner::getGpuBytes() const {
+    constexpr size_t kBytesRgba32F = 16;
+    constexpr size_t kBytesRgba8 = 4;
+    constexpr size_t kFullResolutionRgba32F = 3; // direct, total, black indirect
+    const size_t pixels = static_cast<size_t>(mWidth) * static_cast<size_t>(mHeight);
+    return mGpuScene.getGpuBytes() + mGBuffer->getGBuffer().getGpuBytes() +
+           mLightViews->getGBuffer().getGpuBytes() +
+           pixels * (kFullResolutionRgba32F * kBytesRgba32F + kBytesRgba8);
+}
+
+} // namespace ispm

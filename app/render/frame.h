@@ -1,0 +1,69 @@
+// The frame runner: wires the passes in data-flow order (DESIGN.md, "Frame, as data flows"),
+// wraps each in a debug group and a timer named after it, and exposes the AOVs.
+#pragma once
+
+#include "gl/timer.h"
+#include "render/gbuffer_pass.h"
+#include "render/gpu_scene.h"
+#include "render/shading_passes.h"
+#include "scene/scene.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace ispm {
+
+enum class Aov { Direct, Indirect, Total, Display };
+
+// Parses "direct|indirect|total"; throws InputError naming `where` otherwise.
+Aov parseAov(const std::string& text, const std::string& where);
+
+struct PassTiming {
+    std::string name;
+    double ms = 0.0;
+};
+
+class FrameRunner {
+public:
+    // `settings` are the effective settings (scene overrides with the command line on top).
+    FrameRunner(const Scene& scene, const Settings& settings, gl::TimingMethod timing);
+
+    void renderFrame();
+    const std::vector<PassTiming>& getLastTimings() const { return mTimings; }
+    gl::TimingMethod getTimingMethod() const { return mTimer.getMethod(); }
+
+    // Linear radiance (Direct, Indirect, Total) or display values (Display), row 0 at the bottom.
+    const gl::Texture& getAov(Aov aov) const;
+    const GBuffer& getViewerGBuffer() const { return mGBuffer->getGBuffer(); }
+    const GBuffer& getLightGBuffer() const { return mLightViews->getGBuffer(); }
+    float readLuminanceMax() const { return mTonemap->readLuminanceMax(); }
+    int getWidth() const { return mWidth; }
+    int getHeight() const { return mHeight; }
+    size_t getGpuBytes() const;
+
+private:
+    void updateFrameConstants();
+    void runPass(Pass& pass, const FrameInputs& inputs);
+
+    const Scene& mScene;
+    Settings mSettings;
+    int mWidth;
+    int mHeight;
+    gl::PassTimer mTimer;
+    std::vector<PassTiming> mTimings;
+    GpuScene mGpuScene;
+    gl::Buffer mFrameConstants;
+    glm::mat4 mClipFromWorld{1.0f};
+    std::unique_ptr<GBufferPass> mGBuffer;
+    std::unique_ptr<LightViewPass> mLightViews;
+    std::unique_ptr<DirectPass> mDirect;
+    std::unique_ptr<ComposePass> mCompose;
+    std::unique_ptr<TonemapPass> mTonemap;
+    gl::Texture mBlack;
+};
+
+// Camera clip planes when the scene does not set them: enclose the scene bounds.
+void computeCameraRange(const Camera& camera, const Aabb& bounds, float& nearM, float& farM);
+
+} // namespace ispm

@@ -1,0 +1,121 @@
+// G-buffer resources and the scene rasteriser shared by the viewer and light-view passes.
+#include "render/gbuffer.h"
+
+#include "gl/gl.h"
+#include "gl/state.h"
+#include "render/gpu_scene.h"
+#include "render/shader_root.h"
+
+#include <stdexcept>
+
+namespace ispm {
+namespace {
+
+// Uniform locations of shaders/gbuffer/gbuffer.vert (explicit, no name look-ups).
+constexpr GLint kLocationInstance = 0;
+constexpr GLint kLocationClipFromWorld = 1;
+constexpr GLint kLocationEye = 2;
+
+constexpr GBufferChannel kChannels[] = {
+    {"position", "GBUFFER_POSITION", gl::Format::RGBA32F,
+     "world position in metres; w = 1 on a surface, 0 where nothing was hit"},
+    {"normal", "GBUFFER_NORMAL", gl::Format::RGBA16F,
+     "unit world normal turned toward the camera"},
+    {"diffuse", "GBUFFER_DIFFUSE", gl::Format::RGBA16F, "diffuse reflectance rgb"},
+    {"specular", "GBUFFER_SPECULAR", gl::Format::RGBA16F,
+     "specular reflectance rgb; w = Phong exponent"},
+    {"transmissive", "GBUFFER_TRANSMISSIVE", gl::Format::RGBA16F,
+     "transmittance rgb; w = index of refraction"},
+    {"emission", "GBUFFER_EMISSION", gl::Format::RGBA16F, "emitted radiance rgb, W/(m^2 sr)"},
+};
+
+} // namespace
+
+std::span<const GBufferChannel> getGBufferChannels() { return kChannels; }
+
+std::vector<std::string> getGBufferDefines() {
+    std::vector<std::string> defines;
+    for (size_t i = 0; i < std::size(kChannels); ++i) {
+        defines.push_back(std::string(kChannels[i].define) + " " + std::to_string(i));
+    }
+    return defines;
+}
+
+GBuffer::GBuffer(std::string_view label, int width, int height, int layers, bool isArray)
+    : mWidth(width), mHeight(height), mLayers(layers) {
+    const std::string base(label);
+    for (const GBufferChannel& c : kChannels) {
+        const std::string name = base + " " + std::string(c.name);
+        mChannels.push_back(isArray ? gl::Texture::create2DArray(name, c.format, width, height, layers)
+                                    : gl::Texture::create2D(name, c.format, width, height));
+    }
+    mDepth = isArray ? gl::Texture::create2DArray(base + " depth", gl::Format::Depth32F, width,
+                                                  height, layers)
+                     : gl::Texture::create2D(base + " depth", gl::Format::Depth32F, width, height);
+    for (int layer = 0; layer < layers; ++layer) {
+        gl::Framebuffer fb(base + " target " + std::to_string(layer));
+        for (size_t i = 0; i < mChannels.size(); ++i) {
+            fb.attachColor(static_cast<int>(i), mChannels[i], isArray ? layer : -1);
+        }
+        fb.attachDepth(mDepth, isArray ? layer : -1);
+        fb.setDrawBufferCount(static_cast<int>(mChannels.size()));
+        fb.checkComplete();
+        mTargets.push_back(std::move(fb));
+    }
+}
+
+void GBuffer::clear(int layer) const {
+    const gl::Framebuffer& fb = mTargets[static_cast<size_t>(layer)];
+    for (size_t i = 0; i < mChannels.size(); ++i) fb.clearColor(static_cast<int>(i), glm::vec4(0.0f));
+    fb.clearDepth(1.0f);
+}
+
+void GBuffer::bindTarget(int layer) const { mTargets[static_cast<size_t>(layer)].bind(); }
+
+void GBuffer::bindTextures(int firstUnit) const {
+    for (size_t i = 0; i < mChannels.size(); ++i) {
+        mChannels[i].bindUnit(static_cast<GLuint>(firstUnit) + static_cast<GLuint>(i));
+    }
+}
+
+const gl::Texture& GBuffer::getChannel(std::string_view name) const {
+    for (size_t i = 0; i < std::size(kChannels); ++i) {
+        if (kChannels[i].name == name) return mChannels[i];
+    }
+    throw std::logic_error("no G-buffer channel named " + std::string(name));
+}
+
+size_t GBuffer::getGpuBytes() const {
+    constexpr size_t kBytesRgba32F = 16;
+    constexpr size_t kBytesRgba16F = 8;
+    constexpr size_t kBytesDepth = 4;
+    size_t perTexel = kBytesDepth;
+    for (const GBufferChannel& c : kChannels) {
+        perTexel += c.format == gl::Format::RGBA32F ? kBytesRgba32F : kBytesRgba16F;
+    }
+    return perTexel * static_cast<size_t>(mWidth) * static_cast<size_t>(mHeight) *
+           static_cast<size_t>(mLayers);
+}
+
+void drawSceneGBuffer(const gl::Program& program, const GpuScene& scene,
+                      const glm::mat4& clipFromWorld, const glm::vec4& eye) {
+    gl::applyState({.depthTest = gl::DepthTest::Less, .depthWrite = true});
+    program.use();
+    glUniformMatrix4fv(kLocationClipFromWorld, 1, GL_FALSE, &clipFromWorld[0][0]);
+    glUniform4fv(kLocationEye, 1, &eye.x);
+    for (uint32_t i = 0; i < scene.getInstanceCount(); ++i) {
+        glUniform1ui(kLocationInstance, i);
+        const auto vertexCount = static_cast<int>(scene.getInstance(i).range.y * 3u);
+        gl::drawArrays(gl::Primitive::Triangles, 0, vertexCount);
+    }
+}
+
+gl::Program buildGBufferProgram() {
+    return gl::Program::build(getShaderRoot(),
+                              {.label = "gbuffer",
+                               .stages = {{gl::ShaderStage::Vertex, "gbuffer/gbuffer.vert"},
+                                          {gl::ShaderStage::Fragment, "gbuffer/gbuffer.frag"}},
+                               .defines = getGBufferDefines()});
+}
+
+} // namespace ispm

@@ -1,0 +1,61 @@
+// The G-buffer: one table of channels (name, format, meaning) builds the attachments, the shader
+// output locations (as #defines) and the viewer's debug-view menu. The viewer and every light
+// camera render the same channels; light views are layers of 2D array textures.
+#pragma once
+
+#include "gl/objects.h"
+#include "gl/program.h"
+
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace ispm {
+
+class GpuScene;
+
+struct GBufferChannel {
+    std::string_view name;
+    std::string_view define; // GLSL output location macro
+    gl::Format format;
+    std::string_view meaning;
+};
+
+std::span<const GBufferChannel> getGBufferChannels();
+// "GBUFFER_POSITION 0", ... for the G-buffer program.
+std::vector<std::string> getGBufferDefines();
+
+class GBuffer {
+public:
+    GBuffer() = default;
+    GBuffer(std::string_view label, int width, int height, int layers, bool isArray);
+
+    void clear(int layer) const;
+    void bindTarget(int layer) const; // framebuffer of one layer, with viewport
+    void bindTextures(int firstUnit) const;
+    const gl::Texture& getChannel(size_t index) const { return mChannels[index]; }
+    const gl::Texture& getChannel(std::string_view name) const;
+    int getWidth() const { return mWidth; }
+    int getHeight() const { return mHeight; }
+    int getLayers() const { return mLayers; }
+    size_t getGpuBytes() const;
+
+private:
+    std::vector<gl::Texture> mChannels;
+    gl::Texture mDepth;
+    std::vector<gl::Framebuffer> mTargets; // one per layer
+    int mWidth = 0;
+    int mHeight = 0;
+    int mLayers = 0;
+};
+
+// Rasterises every instance of the scene into the bound G-buffer target. `eye` is the camera
+// position (w = 1) or the direction toward an orthographic camera (w = 0): normals are turned to
+// face it, since surfaces are two-sided.
+void drawSceneGBuffer(const gl::Program& program, const GpuScene& scene,
+                      const glm::mat4& clipFromWorld, const glm::vec4& eye);
+
+gl::Program buildGBufferProgram();
+
+} // namespace ispm

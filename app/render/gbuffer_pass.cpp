@@ -1,0 +1,48 @@
+// Rasterises the scene for the viewer and for each light camera (one array layer per view).
+#include "render/gbuffer_pass.h"
+
+#include "render/gpu_scene.h"
+
+namespace ispm {
+
+GBufferPass::GBufferPass() : mProgram(buildGBufferProgram()), mVertexArray("gbuffer vao") {}
+
+void GBufferPass::resize(int width, int height) {
+    if (mGBuffer.getWidth() != width || mGBuffer.getHeight() != height) {
+        mGBuffer = GBuffer("viewer gbuffer", width, height, 1, false);
+    }
+}
+
+void GBufferPass::execute(const FrameInputs& inputs) {
+    mGBuffer.clear(0);
+    mGBuffer.bindTarget(0);
+    mVertexArray.bind();
+    inputs.scene.bind();
+    drawSceneGBuffer(mProgram, inputs.scene, inputs.clipFromWorld,
+                     glm::vec4(inputs.cameraPosition, 1.0f));
+}
+
+LightViewPass::LightViewPass() : mProgram(buildGBufferProgram()), mVertexArray("light view vao") {}
+
+void LightViewPass::execute(const FrameInputs& inputs) {
+    const std::vector<LightCamera>& cameras = inputs.scene.getLightCameras();
+    const int resolution = inputs.scene.getLightResolution();
+    // At least one layer, so the light G-buffer textures exist even in a scene without lights.
+    const int layers = std::max(1, static_cast<int>(cameras.size()));
+    if (mGBuffer.getWidth() != resolution || mGBuffer.getLayers() != layers) {
+        mGBuffer = GBuffer("light gbuffer", resolution, resolution, layers, true);
+    }
+    mVertexArray.bind();
+    inputs.scene.bind();
+    for (size_t i = 0; i < cameras.size(); ++i) {
+        const LightCamera& cam = cameras[i];
+        const int layer = static_cast<int>(i);
+        mGBuffer.clear(layer);
+        mGBuffer.bindTarget(layer);
+        const glm::vec4 eye = cam.isOrthographic ? glm::vec4(-cam.axis, 0.0f)
+                                                 : glm::vec4(cam.origin, 1.0f);
+        drawSceneGBuffer(mProgram, inputs.scene, cam.getClipFromWorld(), eye);
+    }
+}
+
+} // namespace ispm

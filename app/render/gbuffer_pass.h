@@ -1,0 +1,37 @@
+// Viewer G-buffer pass and light-view pass: the scene seen from the camera and from every light
+// camera, into the channels of the G-buffer table. Light views double as shadow maps.
+#pragma once
+
+#include "render/gbuffer.h"
+#include "render/pass.h"
+
+namespace ispm {
+
+class GBufferPass final : public Pass {
+public:
+    GBufferPass();
+    const char* getName() const override { return "gbuffer"; }
+    void resize(int width, int height) override;
+    void execute(const FrameInputs& inputs) override;
+    const GBuffer& getGBuffer() const { return mGBuffer; }
+
+private:
+    gl::Program mProgram;
+    gl::VertexArray mVertexArray;
+    GBuffer mGBuffer;
+};
+
+class LightViewPass final : public Pass {
+public:
+    LightViewPass();
+    const char* getName() const override { return "light_views"; }
+    void execute(const FrameInputs& inputs) override;
+    const GBuffer& getGBuffer() const { return mGBuffer; }
+
+private:
+    gl::Program mProgram;
+    gl::VertexArray mVertexArray;
+    GBuffer mGBuffer;
+};
+
+} // namespace ispm

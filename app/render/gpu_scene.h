@@ -1,0 +1,49 @@
+// The scene uploaded to storage buffers in the layouts of shaders/shared/scene_data.h: vertex
+// positions, triangles with material, instances, materials, lights and light cameras. Shared by
+// every pass (rasterisers pull vertices from it, the photon tracer will traverse it).
+#pragma once
+
+#include "gl/objects.h"
+#include "render/light_cameras.h"
+#include "scene/scene.h"
+
+#include <shared/scene_data.h>
+
+#include <vector>
+
+namespace ispm {
+
+class GpuScene {
+public:
+    GpuScene(const Scene& scene, int lightResolution);
+
+    // Re-uploads instance transforms and lights (animation, viewer edits); same topology.
+    void updateDynamic(const Scene& scene);
+
+    void bind() const; // binds every buffer to its kBinding* point
+
+    uint32_t getInstanceCount() const { return static_cast<uint32_t>(mInstances.size()); }
+    const gpu::GpuInstance& getInstance(uint32_t i) const { return mInstances[i]; }
+    const std::vector<LightCamera>& getLightCameras() const { return mLightCameras; }
+    uint32_t getLightCount() const { return mLightCount; }
+    int getLightResolution() const { return mLightResolution; }
+    const Aabb& getBounds() const { return mBounds; }
+    size_t getGpuBytes() const;
+
+private:
+    void uploadLights(const Scene& scene);
+
+    std::vector<gpu::GpuInstance> mInstances;
+    std::vector<LightCamera> mLightCameras;
+    uint32_t mLightCount = 0;
+    int mLightResolution = 0;
+    Aabb mBounds;
+    gl::Buffer mPositions;
+    gl::Buffer mTriangles;
+    gl::Buffer mInstanceBuffer;
+    gl::Buffer mMaterials;
+    gl::Buffer mLights;
+    gl::Buffer mLightViews;
+};
+
+} // namespace ispm

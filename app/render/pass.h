@@ -1,0 +1,37 @@
+// The shape every render pass shares: a name for timers and debug groups, execute() for the
+// frame, resize() when the output size changes. Inputs arrive through FrameInputs, outputs are
+// the pass's own resources, read through its getters.
+#pragma once
+
+#include "gl/objects.h"
+
+#include <glm/glm.hpp>
+
+namespace ispm {
+
+class GpuScene;
+class Settings;
+
+// What a frame hands every pass.
+struct FrameInputs {
+    const GpuScene& scene;
+    const Settings& settings;
+    const gl::Buffer& frameConstants; // gpu::FrameConstants, bound at kBindingFrameConstants
+    glm::mat4 clipFromWorld{1.0f};
+    glm::vec3 cameraPosition{0.0f};
+    int width = 0;
+    int height = 0;
+};
+
+class Pass {
+public:
+    virtual ~Pass() = default;
+    virtual const char* getName() const = 0;
+    virtual void resize(int width, int height) {
+        (void)width;
+        (void)height;
+    }
+    virtual void execute(const FrameInputs& inputs) = 0;
+};
+
+} // namespace ispm

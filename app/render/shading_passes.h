@@ -1,0 +1,59 @@
+// The deferred passes after the G-buffers: direct light (shadow maps from the light views),
+// compose (direct + indirect + emission, background) and tone mapping (with the white point
+// derived on the GPU when luminance_max is not set).
+#pragma once
+
+#include "render/fullscreen.h"
+#include "render/gbuffer.h"
+#include "render/pass.h"
+
+namespace ispm {
+
+class DirectPass final : public Pass {
+public:
+    DirectPass(const GBuffer& viewer, const GBuffer& lights);
+    const char* getName() const override { return "direct"; }
+    void resize(int width, int height) override { mTarget.resize(width, height); }
+    void execute(const FrameInputs& inputs) override;
+    const gl::Texture& getOutput() const { return mTarget.getTexture(); }
+
+private:
+    const GBuffer& mViewer;
+    const GBuffer& mLights;
+    FullscreenTarget mTarget;
+};
+
+class ComposePass final : public Pass {
+public:
+    ComposePass(const GBuffer& viewer, const gl::Texture& direct, const gl::Texture& indirect);
+    const char* getName() const override { return "compose"; }
+    void resize(int width, int height) override { mTarget.resize(width, height); }
+    void execute(const FrameInputs& inputs) override;
+    const gl::Texture& getOutput() const { return mTarget.getTexture(); }
+
+private:
+    const GBuffer& mViewer;
+    const gl::Texture& mDirect;
+    const gl::Texture& mIndirect;
+    FullscreenTarget mTarget;
+};
+
+class TonemapPass final : public Pass {
+public:
+    explicit TonemapPass(const gl::Texture& hdr);
+    const char* getName() const override { return "tonemap"; }
+    void resize(int width, int height) override { mTarget.resize(width, height); }
+    void execute(const FrameInputs& inputs) override;
+    const gl::Texture& getOutput() const { return mTarget.getTexture(); }
+    // The white point used by the last frame (derived or set), read back: for reports only.
+    float readLuminanceMax() const;
+
+private:
+    const gl::Texture& mHdr;
+    gl::Program mHistogram;
+    gl::Program mResolve;
+    gl::Buffer mExposure;
+    FullscreenTarget mTarget;
+};
+
+} // namespace ispm

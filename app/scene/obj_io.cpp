@@ -1,0 +1,205 @@
+// OBJ import through tinyobjloader and OBJ + MTL export. Numbers are written with std::to_chars:
+// shortest round-trip form, independent of the C++ locale.
+#include "scene/obj_io.h"
+
+#include "core/strings.h"
+#include "scene/mesh_builder.h"
+
+#include <tiny_obj_loader.h>
+
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+namespace ispm {
+
+namespace {
+
+constexpr uint32_t kUnmapped = 0xffffffffu;
+
+// MTL illumination models that refract (4: glass, 6: refraction, 7: refraction + Fresnel,
+// 9: glass without ray-traced reflection): only these make Tf and Ni mean transmission.
+bool isRefractingIllum(int illum) {
+    return illum == 4 || illum == 6 || illum == 7 || illum == 9;
+}
+constexpr int kIllumHighlight = 2;      // Phong: diffuse + specular highlight
+constexpr int kIllumRefractFresnel = 7; // what we write for transmissive materials
+
+glm::vec3 toVec3(const tinyobj::real_t* v) {
+    return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])};
+}
+
+Material convertMaterial(const tinyobj::material_t& m) {
+    Material material;
+    material.name = m.name;
+    material.diffuse = toVec3(m.diffuse);
+    material.specular = toVec3(m.specular);
+    material.phongExponent = static_cast<float>(m.shininess);
+    material.emission = toVec3(m.emission);
+    if (isRefractingIllum(m.illum)) {
+        material.transmissive = toVec3(m.transmittance);
+        material.ior = static_cast<float>(m.ior);
+    }
+    return material;
+}
+
+std::string sanitizeName(const std::string& name, const char* fallbackPrefix, size_t index) {
+    if (name.empty()) return strCat(fallbackPrefix, index);
+    std::string out = name;
+    for (char& c : out) {
+        if (c == ' ' || c == '\t' || c == '\n' || c == '\r') c = '_';
+    }
+    return out;
+}
+
+// Appends a float in its shortest form that reads back to the same value.
+void appendFloat(std::string& out, float v) {
+    constexpr size_t kMaxFloatChars = 32; // to_chars needs at most ~15 for a float
+    std::array<char, kMaxFloatChars> buffer{};
+    const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), v);
+    out.append(buffer.data(), result.ptr);
+}
+
+void appendVec3(std::string& out, const char* keyword, const glm::vec3& v) {
+    out += keyword;
+    for (int i = 0; i < 3; ++i) {
+        out += ' ';
+        appendFloat(out, v[i]);
+    }
+    out += '\n';
+}
+
+void writeFile(const std::filesystem::path& path, const std::string& text) {
+    std::ofstream out(path, std::ios::binary);
+    if (!out) throw std::runtime_error(strCat(path.string(), ": cannot open for writing"));
+    out.write(text.data(), static_cast<std::streamsize>(text.size()));
+    out.close();
+    if (!out) throw std::runtime_error(strCat(path.string(), ": write failed"));
+}
+
+} // namespace
+
+ObjModel importObj(const std::string& objPath) {
+    tinyobj::ObjReaderConfig config;
+    config.triangulate = true;
+    config.vertex_color = false;
+    tinyobj::ObjReader reader;
+    if (!reader.ParseFromFile(objPath, config)) {
+        throw std::runtime_error(reader.Error().empty() ? "unreadable OBJ file" : reader.Error());
+    }
+    ObjModel model;
+    model.warnings = reader.Warning();
+    for (const tinyobj::material_t& m : reader.GetMaterials()) {
+        model.materials.push_back(convertMaterial(m));
+    }
+
+    const std::vector<tinyobj::real_t>& vertices = reader.GetAttrib().vertices;
+    const size_t vertexCount = vertices.size() / 3;
+    std::vector<uint32_t> remap(vertexCount, kUnmapped);
+    Mesh& mesh = model.mesh;
+    mesh.name = std::filesystem::path(objPath).stem().string();
+    const auto useVertex = [&](int index) -> uint32_t {
+        if (index < 0 || static_cast<size_t>(index) >= vertexCount) {
+            throw std::runtime_error(
+                strCat("face refers to vertex ", index + 1, " of ", vertexCount));
+        }
+        const auto i = static_cast<size_t>(index);
+        if (remap[i] == kUnmapped) {
+            const glm::vec3 p = toVec3(&vertices[3 * i]);
+            if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+                throw std::runtime_error(strCat("vertex ", i + 1, " is not finite"));
+            }
+            remap[i] = static_cast<uint32_t>(mesh.positions.size());
+            mesh.positions.push_back(p);
+        }
+        return remap[i];
+    };
+
+    for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+        const tinyobj::mesh_t& shapeMesh = shape.mesh;
+        size_t offset = 0;
+        for (size_t face = 0; face < shapeMesh.num_face_vertices.size(); ++face) {
+            const size_t corners = shapeMesh.num_face_vertices[face];
+            if (corners != 3) {
+                // Triangulation leaves only lines and points (l, p) with other counts: not
+                // surfaces.
+                offset += corners;
+                continue;
+            }
+            const std::array<int, 3> idx = {shapeMesh.indices[offset].vertex_index,
+                                            shapeMesh.indices[offset + 1].vertex_index,
+                                            shapeMesh.indices[offset + 2].vertex_index};
+            offset += corners;
+            const glm::uvec3 tri{useVertex(idx[0]), useVertex(idx[1]), useVertex(idx[2])};
+            if (isDegenerateTriangle(mesh.positions[tri.x], mesh.positions[tri.y],
+                                     mesh.positions[tri.z])) {
+                ++model.droppedDegenerateCount;
+                continue;
+            }
+            const int materialId =
+                face < shapeMesh.material_ids.size() ? shapeMesh.material_ids[face] : -1;
+            const bool hasMaterial =
+                materialId >= 0 && static_cast<size_t>(materialId) < model.materials.size();
+            mesh.triangles.push_back(tri);
+            mesh.triangleMaterials.push_back(hasMaterial ? static_cast<uint32_t>(materialId)
+                                                         : kNoObjMaterial);
+        }
+    }
+    return model;
+}
+
+void exportObj(const Scene& scene, const std::string& objPath) {
+    const std::filesystem::path path(objPath);
+    std::filesystem::path mtlPath = path;
+    mtlPath.replace_extension(".mtl");
+
+    std::vector<std::string> names;
+    std::string mtl = "# ispm scene materials\n";
+    for (size_t i = 0; i < scene.materials.size(); ++i) {
+        const Material& m = scene.materials[i];
+        names.push_back(sanitizeName(m.name, "material_", i));
+        const bool isTransmissive = m.transmissive != glm::vec3(0.0f);
+        mtl += "\nnewmtl " + names.back() + "\n";
+        appendVec3(mtl, "Kd", m.diffuse);
+        appendVec3(mtl, "Ks", m.specular);
+        mtl += "Ns ";
+        appendFloat(mtl, m.phongExponent);
+        mtl += "\nNi ";
+        appendFloat(mtl, m.ior);
+        mtl += "\n";
+        if (m.emission != glm::vec3(0.0f)) appendVec3(mtl, "Ke", m.emission);
+        if (isTransmissive) appendVec3(mtl, "Tf", m.transmissive);
+        mtl += strCat("illum ", isTransmissive ? kIllumRefractFresnel : kIllumHighlight, "\n");
+    }
+
+    std::string obj = strCat("# ispm scene, world-space triangles (metres)\nmtllib ",
+                             mtlPath.filename().string(), "\n");
+    size_t vertexBase = 1; // OBJ indices are 1-based and global over the file
+    for (size_t i = 0; i < scene.instances.size(); ++i) {
+        const Instance& instance = scene.instances[i];
+        const Mesh& mesh = scene.meshes.at(instance.meshIndex);
+        obj += "o " + sanitizeName(mesh.name, "mesh_", instance.meshIndex) + "\n";
+        for (const glm::vec3& p : mesh.positions) {
+            appendVec3(obj, "v", glm::vec3(instance.worldFromObject * glm::vec4(p, 1.0f)));
+        }
+        uint32_t currentMaterial = kUnmapped;
+        for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+            const uint32_t material = mesh.triangleMaterials.at(t);
+            if (material != currentMaterial) {
+                obj += "usemtl " + names.at(material) + "\n";
+                currentMaterial = material;
+            }
+            const glm::uvec3& tri = mesh.triangles[t];
+            obj += strCat("f ", vertexBase + tri.x, " ", vertexBase + tri.y, " ",
+                          vertexBase + tri.z, "\n");
+        }
+        vertexBase += mesh.positions.size();
+    }
+    writeFile(mtlPath, mtl);
+    writeFile(path, obj);
+}
+
+} // namespace ispm

@@ -1,0 +1,96 @@
+// The scene model: camera, lights, materials, meshes and their instances, plus the render
+// settings the scene overrides. Plain data in metres and SI radiometric units (DESIGN.md); no GL.
+#pragma once
+
+#include "scene/settings.h"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace ispm {
+
+struct Aabb {
+    glm::vec3 lo{std::numeric_limits<float>::max()};
+    glm::vec3 hi{-std::numeric_limits<float>::max()};
+    void extend(const glm::vec3& p) { lo = glm::min(lo, p); hi = glm::max(hi, p); }
+    void extend(const Aabb& b) { lo = glm::min(lo, b.lo); hi = glm::max(hi, b.hi); }
+    bool isEmpty() const { return lo.x > hi.x; }
+    glm::vec3 getCenter() const { return 0.5f * (lo + hi); }
+    glm::vec3 getExtent() const { return hi - lo; }
+};
+
+// Pinhole camera as gluLookAt + gluPerspective; the aspect ratio comes from the image size.
+struct Camera {
+    glm::vec3 position{0.0f, 0.0f, 0.0f};
+    glm::vec3 target{0.0f, 0.0f, -1.0f};
+    glm::vec3 up{0.0f, 1.0f, 0.0f};
+    float fovYDeg = 45.0f; // full vertical field of view
+    float nearM = 0.0f;    // 0: derived from the scene bounds
+    float farM = 0.0f;     // 0: derived from the scene bounds
+};
+
+// Reflectances in [0,1] per channel; defaults are all zero (ior 1.5), as in the scene format.
+struct Material {
+    std::string name;
+    glm::vec3 diffuse{0.0f};
+    glm::vec3 specular{0.0f};
+    float phongExponent = 0.0f;
+    glm::vec3 transmissive{0.0f};
+    float ior = 1.5f;
+    glm::vec3 emission{0.0f}; // radiance W/(m^2 sr), seen by the camera, lights nothing
+};
+
+enum class LightType : uint32_t { Point = 0, Spot = 1, Sun = 2 };
+
+struct Light {
+    LightType type = LightType::Point;
+    glm::vec3 position{0.0f};  // point, spot
+    glm::vec3 direction{0.0f, -1.0f, 0.0f}; // spot axis; sun: the direction light travels (unit)
+    glm::vec3 intensity{0.0f}; // point, spot: W/sr (spot: on the axis)
+    glm::vec3 irradiance{0.0f}; // sun: W/m^2 on a surface facing it
+    float innerDeg = 0.0f;     // spot half-angles
+    float outerDeg = 0.0f;
+    float photonShare = -1.0f; // < 0: derived from the light's power
+};
+
+// Spot falloff S(a): 1 inside inner, 0 outside outer, smoothstep in cos space between.
+float computeSpotFalloff(float cosAngle, float innerDeg, float outerDeg);
+
+// Triangles in object space, one material index per triangle (into Scene::materials).
+struct Mesh {
+    std::string name;
+    std::vector<glm::vec3> positions;
+    std::vector<glm::uvec3> triangles;
+    std::vector<uint32_t> triangleMaterials;
+    Aabb computeBounds() const;
+};
+
+// One placement of a mesh in the world.
+struct Instance {
+    uint32_t meshIndex = 0;
+    glm::mat4 worldFromObject{1.0f};
+};
+
+struct Scene {
+    std::string sourcePath; // the file it was loaded from, for messages
+    Camera camera;
+    glm::vec3 background{0.0f};
+    std::vector<Material> materials;
+    std::vector<Mesh> meshes;
+    std::vector<Instance> instances;
+    std::vector<Light> lights;
+    Settings settings; // overrides from the `render` block
+
+    Aabb computeWorldBounds() const;
+    size_t countTriangles() const;
+};
+
+// Camera matrices (OpenGL clip conventions, right-handed, -z forward in view space).
+glm::mat4 computeViewFromWorld(const Camera& camera);
+glm::mat4 computeClipFromView(const Camera& camera, float aspect, float nearM, float farM);
+
+} // namespace ispm

@@ -1,0 +1,157 @@
+// Scene files to the scene model: the top level, camera, lights and render settings (materials
+// and objects have their own files). The format is documented in docs/scene-format.md.
+#include "scene/scene_loader.h"
+
+#include "core/strings.h"
+#include "scene/input_error.h"
+#include "scene/scene_parse.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <sstream>
+
+namespace ispm {
+
+namespace {
+
+// A spot's light camera has a field of view of twice its outer angle: at 90 degrees the
+// perspective projection degenerates, so the outer half-angle stops just short of it.
+constexpr double kMaxSpotHalfAngleDeg = 89.9;
+// The camera's up vector must make at least this sine with the view direction to define a roll.
+constexpr float kMinUpSine = 1e-4f;
+constexpr double kMaxFovYDeg = 180.0; // exclusive: a pinhole sees less than a half space
+
+Camera parseCamera(const JsonNode& node) {
+    node.checkKeys({"position", "target", "up", "fov_y_deg", "near", "far"}, "the camera");
+    Camera camera;
+    camera.position = node.get("position").readVec3();
+    const JsonNode target = node.get("target");
+    camera.target = target.readVec3();
+    const glm::vec3 forward = camera.target - camera.position;
+    if (!(glm::length(forward) > 0.0f)) target.fail("a target different from the position");
+    const std::optional<JsonNode> up = node.find("up");
+    if (up) camera.up = up->readDirection();
+    if (!(glm::length(glm::cross(glm::normalize(forward), camera.up)) > kMinUpSine)) {
+        // The default up fails for a camera looking straight up or down: the file must say.
+        const std::string what = "an up vector not parallel to the view direction";
+        if (up) up->fail(what);
+        throwInputError(node.getFile(), node.getPath() + "/up",
+                        what + " (the default is [0, 1, 0])");
+    }
+    if (auto fov = node.find("fov_y_deg")) {
+        camera.fovYDeg = fov->readFloat(NumberRange::getOpen(0.0, kMaxFovYDeg));
+    }
+    if (auto nearNode = node.find("near")) {
+        camera.nearM = nearNode->readFloat(NumberRange::getAbove(0.0));
+    }
+    if (auto farNode = node.find("far")) {
+        camera.farM = farNode->readFloat(NumberRange::getAbove(0.0));
+        if (camera.nearM > 0.0f && !(camera.farM > camera.nearM)) {
+            farNode->failGot(strCat("far > near (", formatFloat(camera.nearM), ")"));
+        }
+    }
+    return camera;
+}
+
+Light parseLight(const JsonNode& node) {
+    node.requireObject("a light");
+    const JsonNode typeNode = node.get("type");
+    const std::string type = typeNode.readString();
+    const NumberRange nonNegative = NumberRange::getAtLeast(0.0);
+    Light light;
+    if (type == "point") {
+        node.checkKeys({"type", "position", "intensity", "photon_share"}, "a point light");
+        light.type = LightType::Point;
+        light.position = node.get("position").readVec3();
+        light.intensity = node.get("intensity").readVec3(nonNegative);
+    } else if (type == "spot") {
+        node.checkKeys({"type", "position", "direction", "intensity", "inner_deg", "outer_deg",
+                        "photon_share"},
+                       "a spot light");
+        light.type = LightType::Spot;
+        light.position = node.get("position").readVec3();
+        light.direction = node.get("direction").readDirection();
+        light.intensity = node.get("intensity").readVec3(nonNegative);
+        light.outerDeg =
+            node.get("outer_deg").readFloat(NumberRange::getLeftOpen(0.0, kMaxSpotHalfAngleDeg));
+        const JsonNode inner = node.get("inner_deg");
+        light.innerDeg = inner.readFloat(NumberRange::getClosed(0.0, kMaxSpotHalfAngleDeg));
+        if (light.innerDeg > light.outerDeg) {
+            inner.failGot(strCat("inner_deg <= outer_deg (", formatFloat(light.outerDeg), ")"));
+        }
+    } else if (type == "sun") {
+        node.checkKeys({"type", "direction", "irradiance", "photon_share"}, "a sun light");
+        light.type = LightType::Sun;
+        light.direction = node.get("direction").readDirection();
+        light.irradiance = node.get("irradiance").readVec3(nonNegative);
+    } else {
+        typeNode.failGot("a light type: point, spot or sun");
+    }
+    if (auto share = node.find("photon_share")) light.photonShare = share->readFloat(nonNegative);
+    return light;
+}
+
+void parseRender(const JsonNode& node, Settings& settings) {
+    node.requireObject("render settings by name");
+    for (const auto& [name, value] : node.getMembers()) {
+        const std::string where = strCat(node.getFile(), ": ", value.getPath());
+        const nlohmann::json& json = value.getJson();
+        if (json.is_number()) {
+            settings.set(name, json.get<double>(), where);
+        } else if (json.is_string()) {
+            settings.setEnum(name, json.get<std::string>(), where);
+        } else {
+            value.failGot("a setting value (a number or a name)");
+        }
+    }
+}
+
+} // namespace
+
+Scene parseScene(const nlohmann::json& doc, const std::string& file, const std::string& baseDir) {
+    const JsonNode root(doc, "", file);
+    root.checkKeys(
+        {"name", "description", "camera", "background", "materials", "objects", "lights", "render"},
+        "a scene");
+    Scene scene;
+    scene.sourcePath = file;
+    ParseContext context{scene, baseDir, {}};
+    // Only checked: names and descriptions are for people reading the file.
+    if (auto name = root.find("name")) name->readString();
+    if (auto description = root.find("description")) description->readString();
+
+    if (auto materials = root.find("materials")) parseMaterials(*materials, context);
+    scene.camera = parseCamera(root.get("camera"));
+    if (auto background = root.find("background")) {
+        scene.background = background->readVec3(NumberRange::getAtLeast(0.0));
+    }
+    const JsonNode objects = root.get("objects");
+    const std::vector<JsonNode> objectNodes = objects.getElements("an array of objects");
+    if (objectNodes.empty()) objects.fail("at least one object");
+    for (size_t i = 0; i < objectNodes.size(); ++i)
+        parseObject(objectNodes[i], i, context);
+    if (auto lights = root.find("lights")) {
+        for (const JsonNode& light : lights->getElements("an array of lights")) {
+            scene.lights.push_back(parseLight(light));
+        }
+    }
+    if (auto render = root.find("render")) parseRender(*render, scene.settings);
+    return scene;
+}
+
+Scene loadScene(const std::string& path) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) {
+        throwInputError(path, "", "a scene file, cannot open it");
+    }
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (!in) throwInputError(path, "", "a readable scene file");
+    const nlohmann::json doc = parseJsonText(text.str(), path);
+    return parseScene(doc, path, std::filesystem::path(path).parent_path().string());
+}
+
+} // namespace ispm

@@ -1,0 +1,128 @@
+// The settings table and the checks every value passes on its way in.
+#include "scene/settings.h"
+
+#include "core/strings.h"
+#include "scene/input_error.h"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
+
+namespace ispm {
+namespace {
+
+const std::vector<SettingDesc>& table() {
+    static const std::vector<SettingDesc> kTable = {
+        {"width", SettingType::Int, 512, 1, 16384, "px", "image width", {}},
+        {"height", SettingType::Int, 512, 1, 16384, "px", "image height", {}},
+        {"tonemap", SettingType::Enum, 0, 0, 2, "",
+         "tone-map operator: thesis (luminance clamped at luminance_max), filmic (ACES fit), "
+         "linear (exposure only, clipped)",
+         {"thesis", "filmic", "linear"}},
+        {"exposure", SettingType::Float, 0, -30, 30, "stops", "scale before tone mapping, 2^exposure",
+         {}},
+        {"luminance_max", SettingType::Float, 0, 1e-6, 1e9, "W/(m^2 sr)",
+         "luminance mapped to white by the thesis operator; derived from the image (99th "
+         "percentile of luminance) when not set",
+         {}, true},
+        {"gamma", SettingType::Float, 2.2, 0.1, 10, "", "display gamma applied after tone mapping",
+         {}},
+        {"shadow_map_size", SettingType::Int, 1024, 16, 8192, "px",
+         "resolution of every light camera's G-buffer and shadow map", {}},
+        {"shadow_bias", SettingType::Float, 1.5, 0, 100, "texels",
+         "shadow-map depth bias, in light-camera texels at the receiver's depth", {}},
+        {"seed", SettingType::Int, 1, 0, 2147483647, "", "random seed of the frame", {}},
+    };
+    return kTable;
+}
+
+} // namespace
+
+std::span<const SettingDesc> getSettingTable() { return table(); }
+
+const SettingDesc* findSetting(std::string_view name) {
+    for (const SettingDesc& d : table()) {
+        if (d.name == name) return &d;
+    }
+    return nullptr;
+}
+
+static const SettingDesc& requireSetting(std::string_view name, const std::string& where) {
+    const SettingDesc* desc = findSetting(name);
+    if (!desc) {
+        std::string known;
+        for (const SettingDesc& d : table()) known += (known.empty() ? "" : ", ") + std::string(d.name);
+        throw InputError(strCat(where, ": unknown setting '", name, "' (known: ", known, ")"));
+    }
+    return *desc;
+}
+
+void Settings::set(std::string_view name, double value, const std::string& where) {
+    const SettingDesc& desc = requireSetting(name, where);
+    if (!std::isfinite(value) || value < desc.minValue || value > desc.maxValue) {
+        throw InputError(strCat(where, ": expected ", desc.name, " in [", desc.minValue, ", ", desc.maxValue, "], got ", value));
+    }
+    if (desc.type != SettingType::Float && value != std::floor(value)) {
+        throw InputError(strCat(where, ": expected an integer for ", desc.name, ", got ", value));
+    }
+    mValues[std::string(name)] = value;
+}
+
+void Settings::setEnum(std::string_view name, std::string_view choice, const std::string& where) {
+    const SettingDesc& desc = requireSetting(name, where);
+    if (desc.type != SettingType::Enum) {
+        throw InputError(strCat(where, ": expected a number for ", name, ", got '", choice, "'"));
+    }
+    auto it = std::find(desc.choices.begin(), desc.choices.end(), choice);
+    if (it == desc.choices.end()) {
+        std::string options;
+        for (std::string_view c : desc.choices) options += (options.empty() ? "" : "|") + std::string(c);
+        throw InputError(strCat(where, ": expected ", name, " to be one of ", options, ", got '", choice, "'"));
+    }
+    mValues[std::string(name)] = static_cast<double>(it - desc.choices.begin());
+}
+
+void Settings::setFromString(std::string_view assignment, const std::string& where) {
+    const size_t eq = assignment.find('=');
+    if (eq == std::string_view::npos || eq == 0) {
+        throw InputError(strCat(where, ": expected name=value, got '", assignment, "'"));
+    }
+    const std::string_view name = assignment.substr(0, eq);
+    const std::string_view text = assignment.substr(eq + 1);
+    const SettingDesc& desc = requireSetting(name, where);
+    if (desc.type == SettingType::Enum) {
+        setEnum(name, text, where);
+        return;
+    }
+    double value = 0;
+    const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (ec != std::errc() || ptr != text.data() + text.size() || text.empty()) {
+        throw InputError(strCat(where, ": expected a number for ", name, ", got '", text, "'"));
+    }
+    set(name, value, where);
+}
+
+bool Settings::isSet(std::string_view name) const { return mValues.find(name) != mValues.end(); }
+
+double Settings::get(std::string_view name) const {
+    auto it = mValues.find(name);
+    if (it != mValues.end()) return it->second;
+    const SettingDesc* desc = findSetting(name);
+    if (!desc) throw std::logic_error(strCat("no setting named '", name, "'"));
+    return desc->defaultValue;
+}
+
+std::string_view Settings::getEnum(std::string_view name) const {
+    const SettingDesc* desc = findSetting(name);
+    if (!desc || desc->type != SettingType::Enum) {
+        throw std::logic_error(strCat("'", name, "' is not an enum setting"));
+    }
+    return desc->choices.at(static_cast<size_t>(get(name)));
+}
+
+void Settings::merge(const Settings& other) {
+    for (const auto& [name, value] : other.mValues) mValues[name] = value;
+}
+
+} // namespace ispm

@@ -1,0 +1,36 @@
+// Direct light, deferred: for every viewer G-buffer pixel, the sum over lights of
+// BRDF * irradiance * cos(theta) * visibility. Radiance in W/(m^2 sr).
+#include "lib/scene_buffers.glsl"
+#include "lib/frame_constants.glsl"
+#include "lib/brdf.glsl"
+#include "lib/lights.glsl"
+
+layout(binding = kUnitGBufferFirst + GBUFFER_POSITION) uniform sampler2D uPosition;
+layout(binding = kUnitGBufferFirst + GBUFFER_NORMAL) uniform sampler2D uNormal;
+layout(binding = kUnitGBufferFirst + GBUFFER_DIFFUSE) uniform sampler2D uDiffuse;
+layout(binding = kUnitGBufferFirst + GBUFFER_SPECULAR) uniform sampler2D uSpecular;
+
+layout(location = 0) out vec4 outRadiance;
+
+void main() {
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    vec4 position = texelFetch(uPosition, pixel, 0);
+    if (position.w < 0.5) {
+        outRadiance = vec4(0.0);
+        return;
+    }
+    vec3 n = texelFetch(uNormal, pixel, 0).xyz;
+    vec3 diffuse = texelFetch(uDiffuse, pixel, 0).rgb;
+    vec4 specular = texelFetch(uSpecular, pixel, 0);
+    vec3 wo = normalize(frame.cameraPosition.xyz - position.xyz);
+    vec3 radiance = vec3(0.0);
+    for (uint i = 0u; i < frame.counts.x; ++i) {
+        GpuLight light = lights[i];
+        LightSample s = sampleLight(light, position.xyz);
+        float cosTheta = dot(n, s.wi);
+        if (cosTheta <= 0.0 || all(equal(s.irradiance, vec3(0.0)))) continue;
+        float visibility = computeVisibility(light, position.xyz, n);
+        radiance += evaluateBrdf(diffuse, specular, n, s.wi, wo) * s.irradiance * cosTheta * visibility;
+    }
+    outRadiance = vec4(radiance, 1.0);
+}

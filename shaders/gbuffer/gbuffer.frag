@@ -1,0 +1,28 @@
+// G-buffer fragment stage: writes the channels of the table in app/render/gbuffer.cpp.
+#include "lib/scene_buffers.glsl"
+
+layout(location = 2) uniform vec4 uEye; // w = 1: eye position; w = 0: direction toward the eye
+
+in vec3 vPositionW;
+flat in vec3 vNormalW;
+flat in uint vMaterial;
+
+layout(location = GBUFFER_POSITION) out vec4 outPosition;
+layout(location = GBUFFER_NORMAL) out vec4 outNormal;
+layout(location = GBUFFER_DIFFUSE) out vec4 outDiffuse;
+layout(location = GBUFFER_SPECULAR) out vec4 outSpecular;
+layout(location = GBUFFER_TRANSMISSIVE) out vec4 outTransmissive;
+layout(location = GBUFFER_EMISSION) out vec4 outEmission;
+
+void main() {
+    vec3 toEye = uEye.w > 0.5 ? uEye.xyz - vPositionW : uEye.xyz;
+    // Surfaces are two-sided: the normal faces whoever looks at it.
+    vec3 n = dot(vNormalW, toEye) < 0.0 ? -vNormalW : vNormalW;
+    GpuMaterial m = materials[vMaterial];
+    outPosition = vec4(vPositionW, 1.0);
+    outNormal = vec4(n, 0.0);
+    outDiffuse = vec4(m.diffuse.rgb, 0.0);
+    outSpecular = m.specular;
+    outTransmissive = m.transmissive;
+    outEmission = vec4(m.emission.rgb, 0.0);
+}

@@ -1,0 +1,25 @@
+// G-buffer vertex stage: pulls the triangle's three vertices from the scene buffers, so the flat
+// face normal needs no extra vertex data. One draw per instance.
+#include "lib/scene_buffers.glsl"
+
+layout(location = 0) uniform uint uInstance;
+layout(location = 1) uniform mat4 uClipFromWorld;
+
+out vec3 vPositionW;
+flat out vec3 vNormalW;
+flat out uint vMaterial;
+
+void main() {
+    GpuInstance inst = instances[uInstance];
+    uvec4 tri = triangles[inst.range.x + uint(gl_VertexID) / 3u];
+    vec3 p0 = positions[tri.x].xyz;
+    vec3 p1 = positions[tri.y].xyz;
+    vec3 p2 = positions[tri.z].xyz;
+    uint corner = uint(gl_VertexID) % 3u;
+    vec3 p = corner == 0u ? p0 : (corner == 1u ? p1 : p2);
+    vec4 positionW = inst.worldFromObject * vec4(p, 1.0);
+    vPositionW = positionW.xyz;
+    vNormalW = normalize(mat3(inst.normalFromObject) * cross(p1 - p0, p2 - p0));
+    vMaterial = tri.w;
+    gl_Position = uClipFromWorld * positionW;
+}

@@ -1,0 +1,77 @@
+// Light evaluation: incident direction, distance and irradiance (W/m^2 on a surface facing the
+// light) of point, spot and sun lights, and shadow-map visibility from the light G-buffers.
+// Needs scene_buffers.glsl and frame_constants.glsl included before.
+
+// Spot falloff S: 1 inside the inner cone, 0 outside the outer, smoothstep in cos space between.
+float computeSpotFalloff(float cosAngle, float cosInner, float cosOuter) {
+    if (cosInner <= cosOuter) return cosAngle >= cosOuter ? 1.0 : 0.0;
+    float s = clamp((cosAngle - cosOuter) / (cosInner - cosOuter), 0.0, 1.0);
+    return s * s * (3.0 - 2.0 * s);
+}
+
+struct LightSample {
+    vec3 wi;          // unit direction toward the light
+    float distanceM;  // to the light (huge for the sun)
+    vec3 irradiance;  // on a surface facing the light, falloff included
+};
+
+LightSample sampleLight(GpuLight light, vec3 positionW) {
+    LightSample s;
+    uint type = uint(light.positionType.w + 0.5);
+    if (type == kLightSun) {
+        s.wi = -light.directionCos.xyz;
+        s.distanceM = 1e30;
+        s.irradiance = light.power.rgb;
+        return s;
+    }
+    vec3 toLight = light.positionType.xyz - positionW;
+    float d2 = max(dot(toLight, toLight), 1e-12);
+    s.distanceM = sqrt(d2);
+    s.wi = toLight / s.distanceM;
+    float falloff = 1.0;
+    if (type == kLightSpot) {
+        falloff = computeSpotFalloff(dot(-s.wi, light.directionCos.xyz), light.power.w,
+                                     light.directionCos.w);
+    }
+    s.irradiance = light.power.rgb * (falloff / d2);
+    return s;
+}
+
+// Which light view (G-buffer layer) sees `positionW`: a point light picks the cube face of the
+// direction's major axis, in the order +x, -x, +y, -y, +z, -z.
+uint selectLightView(GpuLight light, vec3 positionW) {
+    uint first = light.views.x;
+    if (light.views.y < 6u) return first;
+    vec3 d = positionW - light.positionType.xyz;
+    vec3 a = abs(d);
+    if (a.x >= a.y && a.x >= a.z) return first + (d.x >= 0.0 ? 0u : 1u);
+    if (a.y >= a.z) return first + (d.y >= 0.0 ? 2u : 3u);
+    return first + (d.z >= 0.0 ? 4u : 5u);
+}
+
+layout(binding = kUnitLightGBufferFirst + GBUFFER_POSITION) uniform sampler2DArray uLightPosition;
+
+// 1 if nothing in the light's G-buffer lies between the light and the point, else 0. The point
+// is pushed off its surface along the normal and compared with a depth bias, both measured in
+// light-camera texels at the point's depth, so the bias scales with the shadow map's resolution.
+float computeVisibility(GpuLight light, vec3 positionW, vec3 normalW) {
+    uint viewIndex = selectLightView(light, positionW);
+    GpuLightView view = lightViews[viewIndex];
+    vec3 axis = view.axisTexel.xyz;
+    bool ortho = view.info.y == 1u;
+    float depth = dot(positionW - view.originAxis.xyz, axis);
+    float texelM = ortho ? view.axisTexel.w : view.axisTexel.w * max(depth, 0.0);
+    float biasM = frame.shadow.x * texelM;
+    vec3 p = positionW + normalW * biasM;
+    vec4 clip = view.clipFromWorld * vec4(p, 1.0);
+    if (clip.w <= 0.0) return 1.0;
+    vec3 ndc = clip.xyz / clip.w;
+    if (any(greaterThan(abs(ndc.xy), vec2(1.0)))) return 1.0; // outside: the falloff decides
+    int resolution = int(frame.shadow.y);
+    ivec2 texel = clamp(ivec2((ndc.xy * 0.5 + 0.5) * float(resolution)), ivec2(0), ivec2(resolution - 1));
+    vec4 occluder = texelFetch(uLightPosition, ivec3(texel, int(viewIndex)), 0);
+    if (occluder.w < 0.5) return 1.0; // the light sees nothing there
+    float occluderDepth = dot(occluder.xyz - view.originAxis.xyz, axis);
+    float receiverDepth = dot(p - view.originAxis.xyz, axis);
+    return receiverDepth <= occluderDepth + biasM ? 1.0 : 0.0;
+}

@@ -1,0 +1,30 @@
+// Shared between C++ and GLSL: lets one header declare structs and constants for both.
+// In C++ the GLSL vector/matrix names map to glm; structs follow std430/std140 rules by using only
+// vec4/mat4/uvec4-sized members (checked by static_assert beside each struct).
+#ifndef ISPM_HOST_DEVICE_H
+#define ISPM_HOST_DEVICE_H
+
+#ifdef __cplusplus
+#include <glm/glm.hpp>
+#include <cstdint>
+#define ISPM_NAMESPACE_BEGIN namespace ispm::gpu {
+#define ISPM_NAMESPACE_END }
+#define ISPM_CONST inline constexpr
+#define ISPM_STATIC_ASSERT_SIZE(T, bytes) static_assert(sizeof(T) == (bytes), #T " layout")
+ISPM_NAMESPACE_BEGIN
+using vec2 = glm::vec2;
+using vec3 = glm::vec3;
+using vec4 = glm::vec4;
+using uvec4 = glm::uvec4;
+using ivec4 = glm::ivec4;
+using mat4 = glm::mat4;
+using uint = uint32_t;
+ISPM_NAMESPACE_END
+#else
+#define ISPM_NAMESPACE_BEGIN
+#define ISPM_NAMESPACE_END
+#define ISPM_CONST const
+#define ISPM_STATIC_ASSERT_SIZE(T, bytes)
+#endif
+
+#endif

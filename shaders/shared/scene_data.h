@@ -1,0 +1,87 @@
+// Scene data as the GPU sees it (std430 storage buffers), and the binding points of every pass.
+// Included by C++ (app/render) and by GLSL through the shader loader.
+#ifndef ISPM_SCENE_DATA_H
+#define ISPM_SCENE_DATA_H
+
+#include "host_device.h"
+
+ISPM_NAMESPACE_BEGIN
+
+// Reflectances and emission of one material; w components carry the scalars.
+struct GpuMaterial {
+    vec4 diffuse;      // rgb reflectance, w unused
+    vec4 specular;     // rgb reflectance, w = Phong exponent
+    vec4 transmissive; // rgb transmittance, w = index of refraction
+    vec4 emission;     // rgb radiance W/(m^2 sr), w unused
+};
+ISPM_STATIC_ASSERT_SIZE(GpuMaterial, 64);
+
+// One placed mesh: its triangles are triangles[firstTriangle .. firstTriangle + triangleCount).
+struct GpuInstance {
+    mat4 worldFromObject;
+    mat4 normalFromObject; // inverse transpose of worldFromObject (upper 3x3 used)
+    uvec4 range;           // x = firstTriangle, y = triangleCount
+};
+ISPM_STATIC_ASSERT_SIZE(GpuInstance, 144);
+
+ISPM_CONST uint kLightPoint = 0u;
+ISPM_CONST uint kLightSpot = 1u;
+ISPM_CONST uint kLightSun = 2u;
+
+struct GpuLight {
+    vec4 positionType;  // xyz position (point, spot), w = type as float
+    vec4 directionCos;  // xyz unit axis (spot) or travel direction (sun), w = cos(outer)
+    vec4 power;         // rgb intensity W/sr (point, spot) or irradiance W/m^2 (sun), w = cos(inner)
+    uvec4 views;        // x = first light view, y = view count (6 for a point light)
+};
+ISPM_STATIC_ASSERT_SIZE(GpuLight, 64);
+
+// One light camera (a layer of the light G-buffer array).
+struct GpuLightView {
+    mat4 clipFromWorld;
+    vec4 originAxis;   // xyz: eye (perspective) or a point on the near plane (ortho)
+    vec4 axisTexel;    // xyz: unit view axis; w: texel size per metre of depth (perspective,
+                       // 2 tan(fov/2) / res) or texel size in metres (ortho)
+    uvec4 info;        // x = light index, y = 1 if orthographic
+};
+ISPM_STATIC_ASSERT_SIZE(GpuLightView, 112);
+
+// Binding points (storage buffers).
+ISPM_CONST int kBindingPositions = 0;   // vec4 per vertex, object space
+ISPM_CONST int kBindingTriangles = 1;   // uvec4 (i0, i1, i2, material)
+ISPM_CONST int kBindingInstances = 2;   // GpuInstance
+ISPM_CONST int kBindingMaterials = 3;   // GpuMaterial
+ISPM_CONST int kBindingLights = 4;      // GpuLight
+ISPM_CONST int kBindingLightViews = 5;  // GpuLightView
+ISPM_CONST int kBindingExposure = 6;    // tone-map statistics
+
+// Binding points (uniform buffers).
+ISPM_CONST int kBindingFrameConstants = 0;
+
+// Texture units.
+ISPM_CONST int kUnitGBufferFirst = 0;    // viewer G-buffer channels, in table order
+ISPM_CONST int kUnitLightGBufferFirst = 8; // light G-buffer channels (2D arrays), in table order
+ISPM_CONST int kUnitDirect = 16;
+ISPM_CONST int kUnitIndirect = 17;
+ISPM_CONST int kUnitHdr = 18;
+
+// Per-frame values every pass may read (std140).
+struct FrameConstants {
+    mat4 clipFromWorld;
+    mat4 worldFromClip;
+    vec4 cameraPosition; // xyz, w unused
+    vec4 background;     // rgb radiance where no surface is
+    vec4 imageSize;      // x = width, y = height, z = 1/width, w = 1/height
+    uvec4 counts;        // x = light count, y = light view count, z = seed
+    vec4 shadow;         // x = bias in texels, y = light G-buffer resolution
+    vec4 tonemap;        // x = operator, y = exposure scale, z = 1/gamma, w = luminance_max (<=0: derived)
+};
+ISPM_STATIC_ASSERT_SIZE(FrameConstants, 224);
+
+ISPM_CONST uint kTonemapThesis = 0u;
+ISPM_CONST uint kTonemapFilmic = 1u;
+ISPM_CONST uint kTonemapLinear = 2u;
+
+ISPM_NAMESPACE_END
+
+#endif

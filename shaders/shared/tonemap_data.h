@@ -1,0 +1,25 @@
+// Tone-map statistics written on the GPU (a log-luminance histogram and the white point derived
+// from it), so deriving luminance_max needs no CPU read-back.
+#ifndef ISPM_TONEMAP_DATA_H
+#define ISPM_TONEMAP_DATA_H
+
+#include "host_device.h"
+
+ISPM_NAMESPACE_BEGIN
+
+ISPM_CONST uint kLuminanceBins = 256u;
+ISPM_CONST float kLog2LuminanceMin = -24.0f; // below: treated as black, not counted
+ISPM_CONST float kLog2LuminanceMax = 40.0f;
+ISPM_CONST float kWhitePercentile = 0.99f;   // derived luminance_max: 99% of lit pixels are below
+ISPM_CONST uint kExposureGroupSize = 16u;
+
+struct ExposureData {
+    uint histogram[kLuminanceBins];
+    uvec4 counts;        // x = pixels counted
+    vec4 luminanceMax;   // x = derived white point, W/(m^2 sr)
+};
+ISPM_STATIC_ASSERT_SIZE(ExposureData, 1056);
+
+ISPM_NAMESPACE_END
+
+#endif

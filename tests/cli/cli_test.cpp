@@ -1,0 +1,155 @@
+// The executable's contract with users: bad input gives one line naming the file and the JSON path
+// (or the flag) and exit code 2; good input renders a non-black image.
+#include "image/image_io.h"
+
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+namespace ispm::test {
+namespace {
+
+struct RunResult {
+    int exitCode = -1;
+    std::string output; // stdout and stderr together
+};
+
+RunResult run(const std::string& args) {
+    const std::string command = std::string(ISPM_EXECUTABLE) + " " + args + " 2>&1";
+    RunResult result;
+    FILE* pipe = ::popen(command.c_str(), "r");
+    if (!pipe) return result;
+    std::array<char, 4096> buffer{};
+    while (std::fgets(buffer.data(), static_cast<int>(buffer.size()), pipe)) result.output += buffer.data();
+    const int status = ::pclose(pipe);
+    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1; // -1: killed by a signal
+    return result;
+}
+
+class CliTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        mDir = std::filesystem::temp_directory_path() /
+               ("ispm_cli_test_" +
+                std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
+                std::to_string(::getpid()));
+        std::filesystem::create_directories(mDir);
+    }
+    void TearDown() override { std::filesystem::remove_all(mDir); }
+    std::string writeScene(const std::string& name, const std::string& text) {
+        const std::filesystem::path p = mDir / name;
+        std::ofstream(p) << text;
+        return p.string();
+    }
+    // One line, naming every given fragment, exit 2.
+    void expectBadInput(const std::string& args, std::initializer_list<std::string> fragments) {
+        const RunResult r = run(args);
+        EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.output;
+        EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+        for (const std::string& f : fragments) {
+            EXPECT_NE(r.output.find(f), std::string::npos) << "missing '" << f << "' in: " << r.output;
+        }
+    }
+    std::filesystem::path mDir;
+};
+
+constexpr const char* kGoodScene = R"({
+  "camera": {"position": [0, 1, 3], "target": [0, 0, 0], "up": [0, 1, 0], "fov_y_deg": 50},
+  "materials": {"grey": {"diffuse": [0.5, 0.5, 0.5]}},
+  "objects": [{"type": "box", "min": [-1, -0.1, -1], "max": [1, 0, 1], "material": "grey"}],
+  "lights": [{"type": "point", "position": [0, 1, 0], "intensity": [2, 2, 2]}]
+})";
+
+TEST_F(CliTest, RendersPngAndPfm) {
+    const std::string scene = writeScene("good.json", kGoodScene);
+    const std::string png = (mDir / "out.png").string();
+    RunResult r = run("render " + scene + " -o " + png + " --width 32 --height 24");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("direct"), std::string::npos) << "per-pass times are printed";
+    const Image image = readImage(png);
+    EXPECT_EQ(image.width, 32);
+    EXPECT_EQ(image.height, 24);
+    float maxValue = 0.0f;
+    for (const glm::vec3& p : image.pixels) maxValue = std::max(maxValue, p.x);
+    EXPECT_GT(maxValue, 0.5f) << "not a black image";
+
+    const std::string pfm = (mDir / "out.pfm").string();
+    r = run("render " + scene + " -o " + pfm + " --width 8 --height 8 --aov direct -q");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_EQ(readImage(pfm).width, 8);
+}
+
+TEST_F(CliTest, BadSceneFilesExitTwoWithFileAndPath) {
+    expectBadInput("render " + writeScene("broken.json", "{ \"camera\": ") + " -o x.png", {"broken.json"});
+    std::string text = kGoodScene;
+    text.replace(text.find("\"point\""), 7, "\"laser\"");
+    expectBadInput("render " + writeScene("laser.json", text) + " -o x.png",
+                   {"laser.json", "/lights/0/type"});
+    text = kGoodScene;
+    text.replace(text.find("\"fov_y_deg\": 50"), 15, "\"fov_y_deg\": -5");
+    expectBadInput("render " + writeScene("fov.json", text) + " -o x.png",
+                   {"fov.json", "/camera/fov_y_deg"});
+    text = kGoodScene;
+    text.replace(text.find("[2, 2, 2]"), 9, "\"bright\"");
+    expectBadInput("render " + writeScene("str.json", text) + " -o x.png",
+                   {"str.json", "/lights/0/intensity"});
+    text = kGoodScene;
+    text.replace(text.find("{\"type\": \"box\""), 0,
+                 "{\"type\": \"mesh\", \"obj\": \"missing.obj\"}, ");
+    expectBadInput("render " + writeScene("obj.json", text) + " -o x.png", {"obj.json", "missing.obj"});
+    expectBadInput("render " + (mDir / "nothere.json").string() + " -o x.png", {"nothere.json"});
+}
+
+TEST_F(CliTest, BadCommandLineValuesExitTwo) {
+    const std::string scene = writeScene("good.json", kGoodScene);
+    expectBadInput("render " + scene + " -o x.png --width 0", {"--width"});
+    expectBadInput("render " + scene + " -o x.png --width abc", {"--width"});
+    expectBadInput("render " + scene + " -o x.bmp", {"x.bmp"});
+    expectBadInput("render " + scene + " -o x.png --set nosuch=1", {"nosuch"});
+    expectBadInput("render " + scene + " -o x.png --set gamma=-1", {"gamma"});
+    expectBadInput("render " + scene + " -o x.png --set tonemap=sepia", {"tonemap", "sepia"});
+    expectBadInput("render " + scene + " -o x.pfm --aov sideways", {"--aov"});
+    expectBadInput("frobnicate", {"frobnicate"});
+}
+
+TEST_F(CliTest, CompareReportsMetricsAndThreshold) {
+    const std::string scene = writeScene("good.json", kGoodScene);
+    const std::string a = (mDir / "a.pfm").string();
+    const std::string b = (mDir / "b.pfm").string();
+    ASSERT_EQ(run("render " + scene + " -o " + a + " --width 16 --height 16 -q").exitCode, 0);
+    ASSERT_EQ(run("render " + scene + " -o " + b + " --width 16 --height 16 -q --set exposure=1").exitCode, 0);
+    RunResult same = run("compare " + a + " " + a + " --max-relmse 0");
+    EXPECT_EQ(same.exitCode, 0) << same.output;
+    EXPECT_NE(same.output.find("SSIM"), std::string::npos);
+    // Exposure does not change linear output, so a and b agree too.
+    EXPECT_EQ(run("compare " + a + " " + b + " --max-relmse 0").exitCode, 0);
+    const std::string c = (mDir / "c.pfm").string();
+    ASSERT_EQ(run("render " + scene + " -o " + c + " --width 16 --height 16 -q --set shadow_bias=50").exitCode, 0);
+    expectBadInput("compare " + a + " " + (mDir / "none.pfm").string(), {"none.pfm"});
+}
+
+TEST_F(CliTest, HelpOnEverySubcommand) {
+    for (const char* sub : {"render", "export", "info", "compare"}) {
+        const RunResult r = run(std::string(sub) + " --help");
+        EXPECT_EQ(r.exitCode, 0) << sub;
+        EXPECT_NE(r.output.find("Usage"), std::string::npos) << sub;
+    }
+}
+
+TEST_F(CliTest, ExportWritesObjAndMtl) {
+    const std::string scene = writeScene("good.json", kGoodScene);
+    const std::string obj = (mDir / "out.obj").string();
+    const RunResult r = run("export " + scene + " -o " + obj);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_TRUE(std::filesystem::exists(obj));
+    EXPECT_TRUE(std::filesystem::exists(mDir / "out.mtl"));
+}
+
+} // namespace
+} // namespace ispm::test

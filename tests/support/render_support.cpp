@@ -1,0 +1,65 @@
+// Image-test helpers.
+#include "support/render_support.h"
+
+#include "gl/gl.h"
+#include "image/image_diff.h"
+#include "image/image_io.h"
+#include "support/gl_fixture.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+
+namespace ispm::test {
+
+Image renderAov(const Scene& scene, const Settings& settings, Aov aov) {
+    FrameRunner runner(scene, settings, gl::TimingMethod::CpuFinish);
+    runner.renderFrame();
+    const gl::Texture& texture = runner.getAov(aov);
+    const std::vector<glm::vec4> texels = texture.readRgba();
+    const int w = texture.getWidth();
+    const int h = texture.getHeight();
+    Image image(w, h);
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            image.at(x, y) = glm::vec3(texels[static_cast<size_t>((h - 1 - y) * w + x)]);
+        }
+    }
+    return image;
+}
+
+void expectMatchesGolden(const Image& actual, const std::string& name, const GoldenThresholds& t) {
+    const std::filesystem::path golden =
+        std::filesystem::path(ISPM_TEST_DATA_DIR) / "goldens" / (name + ".png");
+    const char* update = std::getenv("ISPM_UPDATE_GOLDENS");
+    if (update && std::string(update) == "1") {
+        writeImage(golden.string(), actual);
+        std::printf("updated golden %s\n", golden.string().c_str());
+        return;
+    }
+    ASSERT_TRUE(std::filesystem::exists(golden)) << golden << " is missing: run tools/update-goldens.sh";
+    const Image expected = readImage(golden.string());
+    ASSERT_EQ(expected.width, actual.width);
+    ASSERT_EQ(expected.height, actual.height);
+    // Compare what the golden holds: 8-bit values.
+    Image quantised = actual;
+    for (glm::vec3& p : quantised.pixels) {
+        p = glm::round(glm::clamp(p, 0.0f, 1.0f) * 255.0f) / 255.0f;
+    }
+    const ImageDiff diff = computeImageDiff(quantised, expected, t.pixelTolerance);
+    const bool ok = diff.meanAbsError <= t.maxMeanAbsError && diff.failingFraction <= t.maxFailingFraction;
+    EXPECT_LE(diff.meanAbsError, t.maxMeanAbsError) << name;
+    EXPECT_LE(diff.failingFraction, t.maxFailingFraction) << name;
+    if (!ok) {
+        const std::filesystem::path out = std::filesystem::path(ISPM_BINARY_DIR) / "golden-failures";
+        std::filesystem::create_directories(out);
+        writeImage((out / (name + ".actual.png")).string(), quantised);
+        Image d = computeErrorImage(quantised, expected);
+        for (glm::vec3& p : d.pixels) p = glm::min(p * 10.0f, glm::vec3(1.0f)); // 10x to see it
+        writeImage((out / (name + ".diff.png")).string(), d);
+        ADD_FAILURE() << "actual and diff images written to " << out;
+    }
+}
+
+} // namespace ispm::test

@@ -1,0 +1,24 @@
+// Rendering helpers for image tests: one frame of a scene to a CPU image, and golden comparison
+// that writes the actual and diff images beside the build when it fails.
+#pragma once
+
+#include "image/image.h"
+#include "render/frame.h"
+#include "scene/scene.h"
+
+#include <string>
+
+namespace ispm::test {
+
+Image renderAov(const Scene& scene, const Settings& settings, Aov aov);
+
+struct GoldenThresholds {
+    float pixelTolerance;      // a pixel fails when any channel differs by more
+    double maxMeanAbsError;    // over all channels
+    double maxFailingFraction; // of pixels
+};
+
+// Compares with tests/goldens/<name>.png; ISPM_UPDATE_GOLDENS=1 rewrites the golden instead.
+void expectMatchesGolden(const Image& actual, const std::string& name, const GoldenThresholds& t);
+
+} // namespace ispm::test

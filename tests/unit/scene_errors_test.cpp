@@ -1,0 +1,394 @@
+// Malformed scene files: each one must throw InputError whose single-line message names the file
+// and the JSON path of the mistake. Every case starts from a valid scene and breaks one thing.
+#include "scene_test_util.h"
+
+#include <functional>
+#include <vector>
+
+namespace ispm::test {
+namespace {
+
+using nlohmann::json;
+
+constexpr const char* kFileName = "bad_scene.json";
+
+json makeValidScene() {
+    return json::parse(R"({
+        "camera": {"position": [0, 1, -3], "target": [0, 1, 0], "fov_y_deg": 50},
+        "materials": {"white": {"diffuse": [0.8, 0.8, 0.8]}},
+        "objects": [
+            {"type": "mesh", "material": "white",
+             "triangles": [[[0, 0, 0], [1, 0, 0], [0, 1, 0]]]}
+        ],
+        "lights": [{"type": "point", "position": [0, 2, 0], "intensity": [10, 10, 10]}]
+    })");
+}
+
+struct ErrorCase {
+    std::string name;
+    std::function<std::string()> makeText;
+    std::vector<std::string> expected; // substrings of the message besides the file name
+};
+
+// The valid scene with one change to its JSON value.
+std::function<std::string()> mutate(std::function<void(json&)> change) {
+    return [change = std::move(change)] {
+        json doc = makeValidScene();
+        change(doc);
+        return doc.dump(2);
+    };
+}
+
+// The valid scene with one change, then `from` replaced by `to` in the text: for what a JSON
+// value cannot hold (1e999, duplicate keys, syntax errors).
+std::function<std::string()> mutateText(std::function<void(json&)> change, std::string from,
+                                        std::string to) {
+    return [change = std::move(change), from = std::move(from), to = std::move(to)] {
+        json doc = makeValidScene();
+        change(doc);
+        std::string text = doc.dump();
+        const size_t at = text.find(from);
+        EXPECT_NE(at, std::string::npos) << from << " not in " << text;
+        if (at != std::string::npos) text.replace(at, from.size(), to);
+        return text;
+    };
+}
+
+void noChange(json&) {}
+
+json makeBoxCity(const char* key, json value) {
+    json city = {{"type", "box_city"}};
+    city[key] = std::move(value);
+    return city;
+}
+
+std::vector<ErrorCase> getErrorCases() {
+    return {
+        {"BadJsonSyntax",
+         mutateText(noChange, "\"camera\":{", "\"camera\":{,"),
+         {"line 1, column", "valid JSON"}},
+        {"EmptyFile", [] { return std::string(); }, {"valid JSON"}},
+        {"TopLevelNotObject", [] { return std::string("[1, 2]"); }, {"a scene"}},
+        {"UnknownTopLevelKey",
+         mutate([](json& d) { d["cameras"] = 1; }),
+         {"/cameras", "'cameras'"}},
+        {"UnknownCameraKey",
+         mutate([](json& d) {
+             d["camera"]["positon"] = {0, 0, 0};
+         }),
+         {"/camera/positon", "'positon'"}},
+        {"UnknownMaterialKey",
+         mutate([](json& d) { d["materials"]["white"]["albedo"] = 1; }),
+         {"/materials/white/albedo"}},
+        {"UnknownObjectKey",
+         mutate([](json& d) { d["objects"][0]["colour"] = 1; }),
+         {"/objects/0/colour"}},
+        {"UnknownLightKey",
+         mutate([](json& d) { d["lights"][0]["radius"] = 1; }),
+         {"/lights/0/radius"}},
+        {"KeyOfAnotherLightType",
+         mutate([](json& d) {
+             d["lights"][0]["irradiance"] = {1, 1, 1};
+         }),
+         {"/lights/0/irradiance"}},
+        {"UnknownLightType",
+         mutate([](json& d) { d["lights"][0]["type"] = "area"; }),
+         {"/lights/0/type", "area"}},
+        {"UnknownObjectType",
+         mutate([](json& d) { d["objects"][0]["type"] = "sphere"; }),
+         {"/objects/0/type", "sphere"}},
+        {"StringForNumber",
+         mutate([](json& d) { d["camera"]["fov_y_deg"] = "wide"; }),
+         {"/camera/fov_y_deg", "expected a number"}},
+        {"NegativeFov",
+         mutate([](json& d) { d["camera"]["fov_y_deg"] = -10; }),
+         {"/camera/fov_y_deg", "(0, 180)"}},
+        {"FovOf180",
+         mutate([](json& d) { d["camera"]["fov_y_deg"] = 180; }),
+         {"/camera/fov_y_deg"}},
+        {"HugeExponentNumber",
+         mutateText([](json& d) { d["camera"]["fov_y_deg"] = 12345.5; }, "12345.5", "1e999"),
+         {"/camera/fov_y_deg", "finite"}},
+        {"HugeExponentInArray",
+         mutateText(
+             [](json& d) {
+                 d["camera"]["position"] = {0, 12345.5, -3};
+             },
+             "12345.5", "-1e999"),
+         {"/camera/position/1", "finite"}},
+        {"BeyondFloatRange",
+         mutate([](json& d) {
+             d["lights"][0]["intensity"] = {1e39, 1, 1};
+         }),
+         {"/lights/0/intensity/0"}},
+        {"DuplicateKey",
+         mutateText(noChange, "\"fov_y_deg\":50", "\"fov_y_deg\":50,\"fov_y_deg\":60"),
+         {"/camera/fov_y_deg", "twice"}},
+        {"MissingCamera", mutate([](json& d) { d.erase("camera"); }), {"/camera"}},
+        {"MissingCameraTarget",
+         mutate([](json& d) { d["camera"].erase("target"); }),
+         {"/camera/target", "required"}},
+        {"TargetAtPosition",
+         mutate([](json& d) {
+             d["camera"]["target"] = {0, 1, -3};
+         }),
+         {"/camera/target"}},
+        {"UpAlongView",
+         mutate([](json& d) {
+             d["camera"]["up"] = {0, 0, 2};
+         }),
+         {"/camera/up"}},
+        {"LookingDownWithDefaultUp",
+         mutate([](json& d) {
+             d["camera"]["target"] = {0, -5, -3};
+         }),
+         {"/camera/up", "default"}},
+        {"FarBeforeNear",
+         mutate([](json& d) {
+             d["camera"]["near"] = 1.0;
+             d["camera"]["far"] = 0.5;
+         }),
+         {"/camera/far"}},
+        {"MissingObjects", mutate([](json& d) { d.erase("objects"); }), {"/objects"}},
+        {"NoObjects",
+         mutate([](json& d) { d["objects"] = json::array(); }),
+         {"/objects", "at least one object"}},
+        {"EmptyTriangles",
+         mutate([](json& d) { d["objects"][0]["triangles"] = json::array(); }),
+         {"/objects/0/triangles", "at least one triangle"}},
+        {"DegenerateTriangle",
+         mutate([](json& d) {
+             d["objects"][0]["triangles"].push_back({{0, 0, 0}, {1, 1, 1}, {2, 2, 2}});
+         }),
+         {"/objects/0/triangles/1", "non-zero area"}},
+        {"TriangleWithTwoPoints",
+         mutate([](json& d) { d["objects"][0]["triangles"][0].erase(2); }),
+         {"/objects/0/triangles/0", "3 points"}},
+        {"TrianglesAndQuads",
+         mutate([](json& d) {
+             d["objects"][0]["quads"] = {{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}};
+         }),
+         {"/objects/0", "exactly one"}},
+        {"MissingObj",
+         mutate([](json& d) {
+             d["objects"][0].erase("triangles");
+             d["objects"][0]["obj"] = "missing_model.obj";
+         }),
+         {"/objects/0/obj", "missing_model.obj"}},
+        {"UnknownMaterial",
+         mutate([](json& d) { d["objects"][0]["material"] = "gold"; }),
+         {"/objects/0/material", "'gold'"}},
+        {"MissingMaterial",
+         mutate([](json& d) { d["objects"][0].erase("material"); }),
+         {"/objects/0/material"}},
+        {"MaterialNumber",
+         mutate([](json& d) { d["objects"][0]["material"] = 3; }),
+         {"/objects/0/material"}},
+        {"ReflectanceAboveOne",
+         mutate([](json& d) {
+             d["materials"]["white"]["diffuse"] = {1.2, 0.5, 0.5};
+         }),
+         {"/materials/white/diffuse/0", "[0, 1]"}},
+        {"EnergyNotConserved",
+         mutate([](json& d) {
+             d["materials"]["white"]["specular"] = {0.5, 0.1, 0.1};
+         }),
+         {"/materials/white", "energy"}},
+        {"InlineEnergyNotConserved",
+         mutate([](json& d) {
+             d["objects"][0]["material"] = {{"diffuse", {0.5, 0.5, 0.5}},
+                                            {"transmissive", {0.6, 0.1, 0.1}}};
+         }),
+         {"/objects/0/material", "energy"}},
+        {"IorBelowOne",
+         mutate([](json& d) { d["materials"]["white"]["ior"] = 0.5; }),
+         {"/materials/white/ior", ">= 1"}},
+        {"NegativePhong",
+         mutate([](json& d) { d["materials"]["white"]["phong_exponent"] = -1; }),
+         {"/materials/white/phong_exponent"}},
+        {"NegativeEmission",
+         mutate([](json& d) {
+             d["materials"]["white"]["emission"] = {1, -1, 1};
+         }),
+         {"/materials/white/emission/1"}},
+        {"MatrixAndTranslate",
+         mutate([](json& d) {
+             d["objects"][0]["matrix"] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
+             d["objects"][0]["translate"] = {1, 2, 3};
+         }),
+         {"/objects/0/matrix", "not both"}},
+        {"ProjectiveMatrix",
+         mutate([](json& d) {
+             d["objects"][0]["matrix"] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 1, 0}};
+         }),
+         {"/objects/0/matrix", "affine"}},
+        {"SingularMatrix",
+         mutate([](json& d) {
+             d["objects"][0]["matrix"] = {{1, 0, 0, 0}, {0, 0, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
+         }),
+         {"/objects/0/matrix", "invertible"}},
+        {"MatrixWrongShape",
+         mutate([](json& d) {
+             d["objects"][0]["matrix"] = {1, 2, 3};
+         }),
+         {"/objects/0/matrix", "4x4"}},
+        {"ZeroScale",
+         mutate([](json& d) { d["objects"][0]["scale"] = 0; }),
+         {"/objects/0/scale", "> 0"}},
+        {"BoxMaxBelowMin",
+         mutate([](json& d) {
+             d["objects"][0] = {
+                 {"type", "box"}, {"material", "white"}, {"min", {0, 0, 0}}, {"max", {1, 0, 1}}};
+         }),
+         {"/objects/0/max"}},
+        {"IntensityTwoNumbers",
+         mutate([](json& d) {
+             d["lights"][0]["intensity"] = {1, 2};
+         }),
+         {"/lights/0/intensity", "3 numbers"}},
+        {"NegativeIntensity",
+         mutate([](json& d) {
+             d["lights"][0]["intensity"] = {1, -2, 1};
+         }),
+         {"/lights/0/intensity/1", ">= 0"}},
+        {"SpotTooWide",
+         mutate([](json& d) {
+             d["lights"][0] = {{"type", "spot"},          {"position", {0, 2, 0}},
+                               {"direction", {0, -1, 0}}, {"intensity", {1, 1, 1}},
+                               {"inner_deg", 10},         {"outer_deg", 90}};
+         }),
+         {"/lights/0/outer_deg", "89.9"}},
+        {"SpotInnerAboveOuter",
+         mutate([](json& d) {
+             d["lights"][0] = {{"type", "spot"},          {"position", {0, 2, 0}},
+                               {"direction", {0, -1, 0}}, {"intensity", {1, 1, 1}},
+                               {"inner_deg", 40},         {"outer_deg", 30}};
+         }),
+         {"/lights/0/inner_deg"}},
+        {"SpotZeroDirection",
+         mutate([](json& d) {
+             d["lights"][0] = {{"type", "spot"},         {"position", {0, 2, 0}},
+                               {"direction", {0, 0, 0}}, {"intensity", {1, 1, 1}},
+                               {"inner_deg", 10},        {"outer_deg", 30}};
+         }),
+         {"/lights/0/direction", "non-zero"}},
+        {"SunMissingIrradiance",
+         mutate([](json& d) {
+             d["lights"][0] = {{"type", "sun"}, {"direction", {0, -1, 0}}};
+         }),
+         {"/lights/0/irradiance"}},
+        {"NegativePhotonShare",
+         mutate([](json& d) { d["lights"][0]["photon_share"] = -1; }),
+         {"/lights/0/photon_share"}},
+        {"UnknownSetting",
+         mutate([](json& d) {
+             d["render"] = {{"bogus", 1}};
+         }),
+         {"/render/bogus", "bogus"}},
+        {"SettingOutOfRange",
+         mutate([](json& d) {
+             d["render"] = {{"width", 0}};
+         }),
+         {"/render/width"}},
+        {"SettingBadChoice",
+         mutate([](json& d) {
+             d["render"] = {{"tonemap", "sepia"}};
+         }),
+         {"/render/tonemap", "sepia"}},
+        {"SettingBoolean",
+         mutate([](json& d) {
+             d["render"] = {{"gamma", true}};
+         }),
+         {"/render/gamma"}},
+        {"CityHeightRangeReversed",
+         mutate([](json& d) {
+             d["objects"][0] = makeBoxCity("building_height", {30, 10});
+         }),
+         {"/objects/0/building_height", "min <= max"}},
+        {"CityInsetTooLarge",
+         mutate([](json& d) {
+             d["objects"][0] = makeBoxCity("building_inset", {1, 20});
+         }),
+         {"/objects/0/building_inset", "lot size"}},
+        {"CityTooManyBuildings",
+         mutate([](json& d) {
+             d["objects"][0] = makeBoxCity("blocks", {200, 200});
+         }),
+         {"/objects/0/blocks", "10000"}},
+        {"CityTooManyAttachments",
+         mutate([](json& d) {
+             d["objects"][0] = makeBoxCity("attachments", {0, 17});
+         }),
+         {"/objects/0/attachments/1"}},
+        {"CityAlleysFillBlock",
+         mutate([](json& d) { d["objects"][0] = makeBoxCity("alley_width", 50); }),
+         {"/objects/0/alley_width"}},
+        {"CityNegativeSeed",
+         mutate([](json& d) { d["objects"][0] = makeBoxCity("seed", -1); }),
+         {"/objects/0/seed"}},
+        {"CityUnknownKey",
+         mutate([](json& d) { d["objects"][0] = makeBoxCity("towers", 3); }),
+         {"/objects/0/towers"}},
+        {"CornellWithMaterial",
+         mutate([](json& d) {
+             d["objects"][0] = {{"type", "cornell_box"}, {"material", "white"}};
+         }),
+         {"/objects/0/material"}},
+    };
+}
+
+class SceneErrorTest : public ::testing::TestWithParam<ErrorCase> {};
+
+TEST_P(SceneErrorTest, ThrowsInputErrorNamingFileAndPath) {
+    const ErrorCase& c = GetParam();
+    ScratchDir dir;
+    const std::string message = getLoadError(dir, c.makeText(), kFileName);
+    ASSERT_FALSE(message.empty()) << "no InputError";
+    EXPECT_TRUE(contains(message, kFileName)) << message;
+    for (const std::string& part : c.expected) {
+        EXPECT_TRUE(contains(message, part)) << "'" << part << "' not in: " << message;
+    }
+    EXPECT_FALSE(contains(message, "\n")) << message;
+}
+
+std::string getCaseName(const ::testing::TestParamInfo<ErrorCase>& caseInfo) {
+    return caseInfo.param.name;
+}
+
+INSTANTIATE_TEST_SUITE_P(Malformed, SceneErrorTest, ::testing::ValuesIn(getErrorCases()),
+                         getCaseName);
+
+TEST(SceneErrors, ValidBaseSceneLoads) {
+    ScratchDir dir;
+    EXPECT_EQ(getLoadError(dir, makeValidScene().dump()), "");
+}
+
+TEST(SceneErrors, MissingSceneFileIsInputError) {
+    ScratchDir dir;
+    const std::string path = dir.getPath("nowhere.json");
+    try {
+        loadScene(path);
+        FAIL() << "no InputError";
+    } catch (const InputError& e) {
+        EXPECT_TRUE(contains(e.what(), "nowhere.json")) << e.what();
+    }
+}
+
+TEST(SceneErrors, MessageHasTheDocumentedForm) {
+    // "<file>: <JSON path>: expected <what>", as the format document promises.
+    ScratchDir dir;
+    json doc = makeValidScene();
+    doc["lights"][0]["intensity"] = "bright";
+    const std::string path = dir.write("form.json", doc.dump());
+    try {
+        loadScene(path);
+        FAIL() << "no InputError";
+    } catch (const InputError& e) {
+        EXPECT_EQ(
+            std::string(e.what()).rfind(path + ": /lights/0/intensity: expected 3 numbers", 0), 0u)
+            << e.what();
+    }
+}
+
+} // namespace
+} // namespace ispm::test
