@@ -30,21 +30,6 @@ Settings makeCommandLineSettings(const std::vector<std::string>& sets, std::opti
     return settings;
 }
 
-Image readAovImage(const FrameRunner& runner, Aov aov) {
-    const gl::Texture& texture = runner.getAov(aov);
-    const std::vector<glm::vec4> texels = texture.readRgba();
-    const int w = texture.getWidth();
-    const int h = texture.getHeight();
-    Image image(w, h, glm::vec3(0.0f));
-    for (int y = 0; y < h; ++y) {
-        for (int x = 0; x < w; ++x) {
-            // GL rows start at the bottom; images start at the top.
-            image.at(x, y) = glm::vec3(texels[static_cast<size_t>((h - 1 - y) * w + x)]);
-        }
-    }
-    return image;
-}
-
 void printTimings(const FrameRunner& runner, const gl::ContextInfo& info) {
     std::printf("renderer: %s (%s); pass times by %s\n", info.renderer.c_str(),
                 gl::getContextPathName(info.path), gl::getTimingMethodName(runner.getTimingMethod()));

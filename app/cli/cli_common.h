@@ -2,7 +2,6 @@
 #pragma once
 
 #include "gl/context.h"
-#include "image/image.h"
 #include "render/frame.h"
 #include "scene/scene.h"
 
@@ -21,9 +20,6 @@ OutputKind classifyOutput(const std::string& path, const std::string& where);
 // result over the scene's `render` block (the command line wins).
 Settings makeCommandLineSettings(const std::vector<std::string>& sets, std::optional<int> width,
                                  std::optional<int> height);
-
-// Reads an AOV texture back into an image with row 0 at the top.
-Image readAovImage(const FrameRunner& runner, Aov aov);
 
 void printTimings(const FrameRunner& runner, const gl::ContextInfo& info);
 

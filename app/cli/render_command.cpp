@@ -7,6 +7,7 @@
 #include "gl/debug.h"
 #include "image/image_io.h"
 #include "render/frame.h"
+#include "render/readback.h"
 #include "scene/input_error.h"
 #include "scene/scene_loader.h"
 
@@ -53,7 +54,7 @@ int runRender(const RenderOptions& options) {
     // second, which is what every later frame costs.
     runner.renderFrame();
     runner.renderFrame();
-    const Image image = readAovImage(runner, kind == OutputKind::Png ? Aov::Display : aov);
+    const Image image = readTextureImage(runner.getAov(kind == OutputKind::Png ? Aov::Display : aov));
     writeImage(options.outputPath, image);
     const gl::DebugCounts debug = gl::getDebugCounts();
     if (!options.quiet) {

@@ -4,6 +4,7 @@
 #include "gl/gl.h"
 #include "image/image_diff.h"
 #include "image/image_io.h"
+#include "render/readback.h"
 #include "support/gl_fixture.h"
 
 #include <gtest/gtest.h>
@@ -16,17 +17,7 @@ namespace ispm::test {
 Image renderAov(const Scene& scene, const Settings& settings, Aov aov) {
     FrameRunner runner(scene, settings, gl::TimingMethod::CpuFinish);
     runner.renderFrame();
-    const gl::Texture& texture = runner.getAov(aov);
-    const std::vector<glm::vec4> texels = texture.readRgba();
-    const int w = texture.getWidth();
-    const int h = texture.getHeight();
-    Image image(w, h);
-    for (int y = 0; y < h; ++y) {
-        for (int x = 0; x < w; ++x) {
-            image.at(x, y) = glm::vec3(texels[static_cast<size_t>((h - 1 - y) * w + x)]);
-        }
-    }
-    return image;
+    return readTextureImage(runner.getAov(aov));
 }
 
 void expectMatchesGolden(const Image& actual, const std::string& name, const GoldenThresholds& t) {
