@@ -2,6 +2,7 @@
 // exits 1, anything unexpected prints its context and exits 1.
 #include "cli/cli.h"
 
+#include "cli/bench_command.h"
 #include "cli/render_command.h"
 #include "core/strings.h"
 #include "gl/context.h"
@@ -87,6 +88,8 @@ int runCli(int argc, char** argv) {
 
     RenderOptions render;
     addRenderCommand(app, render);
+    BenchOptions bench;
+    addBenchCommand(app, bench);
 
     std::string exportScene;
     std::string exportOut;
@@ -117,8 +120,8 @@ int runCli(int argc, char** argv) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
         if (argc > 1 && app.get_subcommands().empty() && argv[1][0] != '-') {
-            std::fprintf(stderr, "ispm: unknown subcommand '%s' (expected render, export, info or "
-                                 "compare; see ispm --help)\n", argv[1]);
+            std::fprintf(stderr, "ispm: unknown subcommand '%s' (expected render, bench, export, info "
+                                 "or compare; see ispm --help)\n", argv[1]);
         } else {
             std::fprintf(stderr, "ispm: %s\n", e.what());
         }
@@ -127,6 +130,7 @@ int runCli(int argc, char** argv) {
 
     try {
         if (app.got_subcommand("render")) return runRender(render);
+        if (app.got_subcommand("bench")) return runBench(bench);
         if (app.got_subcommand(exportCmd)) {
             const Scene scene = loadScene(exportScene);
             exportObj(scene, exportOut);

@@ -39,6 +39,11 @@ void printTimings(const FrameRunner& runner, const gl::ContextInfo& info) {
         total += t.ms;
     }
     std::printf("  %-12s %9.2f ms\n", "frame", total);
+    const PhotonCounts c = runner.readPhotonCounts();
+    if (c.emitted > 0) {
+        std::printf("photons: %u emitted, %u after the first bounce, %u stored, %u overflow\n",
+                    c.emitted, c.bounced, c.stored, c.overflow);
+    }
 }
 
 } // namespace ispm

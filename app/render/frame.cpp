@@ -33,17 +33,17 @@ FrameRunner::FrameRunner(const Scene& scene, const Settings& settings, gl::Timin
       mHeight(settings.getInt("height")), mTimer(timing),
       mGpuScene(scene, settings.getInt("shadow_map_size")),
       mFrameConstants("frame constants", sizeof(gpu::FrameConstants)) {
-    // Indirect light arrives with the photon passes; until then the compose pass reads black.
-    mBlack = gl::Texture::create2D("indirect", gl::Format::RGBA32F, mWidth, mHeight);
-    mBlack.clear(glm::vec4(0.0f));
     mGBuffer = std::make_unique<GBufferPass>();
     mLightViews = std::make_unique<LightViewPass>();
+    mEmit = std::make_unique<PhotonEmitPass>(mLightViews->getGBuffer(), mPhotonBuffers);
+    mTrace = std::make_unique<PhotonTracePass>(mPhotonBuffers);
+    mSplat = std::make_unique<SplatPass>(mGBuffer->getGBuffer(), mPhotonBuffers);
     mDirect = std::make_unique<DirectPass>(mGBuffer->getGBuffer(), mLightViews->getGBuffer());
     mCompose = std::make_unique<ComposePass>(mGBuffer->getGBuffer(), mDirect->getOutput(),
-                                             mBlack);
+                                             mSplat->getOutput());
     mTonemap = std::make_unique<TonemapPass>(mCompose->getOutput());
-    for (Pass* pass : std::initializer_list<Pass*>{mGBuffer.get(), mLightViews.get(), mDirect.get(),
-                                                   mCompose.get(), mTonemap.get()}) {
+    for (Pass* pass : std::initializer_list<Pass*>{mGBuffer.get(), mLightViews.get(), mSplat.get(),
+                                                   mDirect.get(), mCompose.get(), mTonemap.get()}) {
         pass->resize(mWidth, mHeight);
     }
 }
@@ -84,21 +84,38 @@ void FrameRunner::runPass(Pass& pass, const FrameInputs& inputs) {
 
 void FrameRunner::renderFrame() {
     updateFrameConstants();
-    const FrameInputs inputs{mGpuScene, mSettings, mFrameConstants, mClipFromWorld,
+    const FrameInputs inputs{mScene, mGpuScene, mSettings, mFrameConstants, mClipFromWorld,
                              mScene.camera.position, mWidth, mHeight};
     runPass(*mGBuffer, inputs);
     runPass(*mLightViews, inputs);
+    if (hasIndirect()) runPass(*mEmit, inputs);
     runPass(*mDirect, inputs);
+    if (hasIndirect()) {
+        runPass(*mTrace, inputs);
+        runPass(*mSplat, inputs);
+    } else {
+        // bounces = 0 or no photons: the image is direct light only.
+        mSplat->clear();
+    }
     runPass(*mCompose, inputs);
     runPass(*mTonemap, inputs);
     mTimings.clear();
     for (const gl::PassTimer::Sample& s : mTimer.collect()) mTimings.push_back({s.name, s.ms});
 }
 
+bool FrameRunner::hasIndirect() const {
+    return mSettings.getInt("bounces") > 0 && mSettings.getInt("photons") > 0;
+}
+
+PhotonCounts FrameRunner::readPhotonCounts() const {
+    if (!hasIndirect()) return {};
+    return mPhotonBuffers.readCounts(mEmit->getEmittedCount());
+}
+
 const gl::Texture& FrameRunner::getAov(Aov aov) const {
     switch (aov) {
     case Aov::Direct: return mDirect->getOutput();
-    case Aov::Indirect: return mBlack;
+    case Aov::Indirect: return mSplat->getOutput();
     case Aov::Total: return mCompose->getOutput();
     case Aov::Display: return mTonemap->getOutput();
     }
@@ -108,9 +125,9 @@ const gl::Texture& FrameRunner::getAov(Aov aov) const {
 size_t FrameRunner::getGpuBytes() const {
     constexpr size_t kBytesRgba32F = 16;
     constexpr size_t kBytesRgba8 = 4;
-    constexpr size_t kFullResolutionRgba32F = 3; // direct, total, black indirect
+    constexpr size_t kFullResolutionRgba32F = 3; // direct, indirect, total
     const size_t pixels = static_cast<size_t>(mWidth) * static_cast<size_t>(mHeight);
-    return mGpuScene.getGpuBytes() + mGBuffer->getGBuffer().getGpuBytes() +
+    return mGpuScene.getGpuBytes() + mPhotonBuffers.getGpuBytes() + mGBuffer->getGBuffer().getGpuBytes() +
            mLightViews->getGBuffer().getGpuBytes() +
            pixels * (kFullResolutionRgba32F * kBytesRgba32F + kBytesRgba8);
 }

@@ -5,6 +5,9 @@
 #include "gl/timer.h"
 #include "render/gbuffer_pass.h"
 #include "render/gpu_scene.h"
+#include "render/photon_emit_pass.h"
+#include "render/photon_trace_pass.h"
+#include "render/splat_pass.h"
 #include "render/shading_passes.h"
 #include "scene/scene.h"
 
@@ -35,6 +38,9 @@ public:
 
     // Linear radiance (Direct, Indirect, Total) or display values (Display), row 0 at the bottom.
     const gl::Texture& getAov(Aov aov) const;
+    // Photon counts of the last frame, read back from the GPU (for reports; waits for the GPU).
+    PhotonCounts readPhotonCounts() const;
+    const PhotonBuffers& getPhotonBuffers() const { return mPhotonBuffers; }
     const GBuffer& getViewerGBuffer() const { return mGBuffer->getGBuffer(); }
     const GBuffer& getLightGBuffer() const { return mLightViews->getGBuffer(); }
     float readLuminanceMax() const { return mTonemap->readLuminanceMax(); }
@@ -44,6 +50,7 @@ public:
 
 private:
     void updateFrameConstants();
+    bool hasIndirect() const;
     void runPass(Pass& pass, const FrameInputs& inputs);
 
     const Scene& mScene;
@@ -57,10 +64,13 @@ private:
     glm::mat4 mClipFromWorld{1.0f};
     std::unique_ptr<GBufferPass> mGBuffer;
     std::unique_ptr<LightViewPass> mLightViews;
+    PhotonBuffers mPhotonBuffers;
+    std::unique_ptr<PhotonEmitPass> mEmit;
+    std::unique_ptr<PhotonTracePass> mTrace;
+    std::unique_ptr<SplatPass> mSplat;
     std::unique_ptr<DirectPass> mDirect;
     std::unique_ptr<ComposePass> mCompose;
     std::unique_ptr<TonemapPass> mTonemap;
-    gl::Texture mBlack;
 };
 
 // Camera clip planes when the scene does not set them: enclose the scene bounds.

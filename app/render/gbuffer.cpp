@@ -20,7 +20,8 @@ constexpr GBufferChannel kChannels[] = {
     {"position", "GBUFFER_POSITION", gl::Format::RGBA32F,
      "world position in metres; w = 1 on a surface, 0 where nothing was hit"},
     {"normal", "GBUFFER_NORMAL", gl::Format::RGBA16F,
-     "unit world normal turned toward the camera"},
+     "unit world normal turned toward the camera; w = 1 if the camera sees the front face "
+     "(counter-clockwise winding), -1 if the back"},
     {"diffuse", "GBUFFER_DIFFUSE", gl::Format::RGBA16F, "diffuse reflectance rgb"},
     {"specular", "GBUFFER_SPECULAR", gl::Format::RGBA16F,
      "specular reflectance rgb; w = Phong exponent"},

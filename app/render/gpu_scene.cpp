@@ -1,24 +1,23 @@
 // Flattening of the scene model into GPU buffers.
 #include "render/gpu_scene.h"
 
-#include <glm/gtc/matrix_inverse.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <span>
 
 namespace ispm {
 namespace {
 
-std::vector<gpu::GpuInstance> buildInstances(const Scene& scene,
-                                             const std::vector<uint32_t>& firstTriangle) {
+std::vector<gpu::GpuInstance> buildInstances(const Scene& scene, const BvhScene& bvh) {
     std::vector<gpu::GpuInstance> instances;
     for (const Instance& inst : scene.instances) {
         gpu::GpuInstance g{};
         g.worldFromObject = inst.worldFromObject;
-        g.normalFromObject = glm::mat4(glm::inverseTranspose(glm::mat3(inst.worldFromObject)));
-        g.range = glm::uvec4(firstTriangle[inst.meshIndex],
+        g.objectFromWorld = glm::inverse(inst.worldFromObject);
+        g.range = glm::uvec4(bvh.meshFirstTriangles[inst.meshIndex],
                              static_cast<uint32_t>(scene.meshes[inst.meshIndex].triangles.size()),
-                             0u, 0u);
+                             bvh.meshBlasRoots[inst.meshIndex], 0u);
         instances.push_back(g);
     }
     return instances;
@@ -29,10 +28,8 @@ std::vector<gpu::GpuInstance> buildInstances(const Scene& scene,
 GpuScene::GpuScene(const Scene& scene, int lightResolution) : mLightResolution(lightResolution) {
     std::vector<glm::vec4> positions;
     std::vector<glm::uvec4> triangles;
-    std::vector<uint32_t> firstTriangle;
     for (const Mesh& mesh : scene.meshes) {
         const auto base = static_cast<uint32_t>(positions.size());
-        firstTriangle.push_back(static_cast<uint32_t>(triangles.size()));
         for (const glm::vec3& p : mesh.positions) positions.emplace_back(p, 1.0f);
         for (size_t t = 0; t < mesh.triangles.size(); ++t) {
             const glm::uvec3 tri = mesh.triangles[t] + base;
@@ -47,18 +44,37 @@ GpuScene::GpuScene(const Scene& scene, int lightResolution) : mLightResolution(l
     mPositions = gl::Buffer::fromSpan<glm::vec4>("scene positions", positions);
     mTriangles = gl::Buffer::fromSpan<glm::uvec4>("scene triangles", triangles);
     mMaterials = gl::Buffer::fromSpan<gpu::GpuMaterial>("scene materials", materials);
-    mInstances = buildInstances(scene, firstTriangle);
+    mBvh = buildSceneBvh(scene);
+    mBlasNodes = gl::Buffer::fromSpan<gpu::GpuBvhNode>("bvh bottom-level nodes", mBvh.blasNodes);
+    mBlasOrder = gl::Buffer::fromSpan<uint32_t>("bvh triangle order", mBvh.blasTriangleOrder);
+    mInstances = buildInstances(scene, mBvh);
     mInstanceBuffer = gl::Buffer::fromSpan<gpu::GpuInstance>("scene instances", mInstances);
+    uploadTopLevel();
     uploadLights(scene);
 }
 
-void GpuScene::updateDynamic(const Scene& scene) {
-    // The first triangle of each mesh, recovered from the instances that use it.
-    std::vector<uint32_t> meshFirst(scene.meshes.size(), 0);
-    for (size_t i = 0; i < scene.instances.size(); ++i) {
-        meshFirst[scene.instances[i].meshIndex] = mInstances[i].range.x;
+void GpuScene::uploadTopLevel() {
+    if (mTlasNodes.getSize() == mBvh.tlasNodes.size() * sizeof(gpu::GpuBvhNode) &&
+        mTlasNodes.getId() != 0) {
+        mTlasNodes.upload<gpu::GpuBvhNode>(mBvh.tlasNodes);
+        mTlasOrder.upload<uint32_t>(mBvh.tlasInstanceOrder);
+    } else {
+        mTlasNodes = gl::Buffer::fromSpan<gpu::GpuBvhNode>("bvh top-level nodes", mBvh.tlasNodes);
+        mTlasOrder = gl::Buffer::fromSpan<uint32_t>("bvh instance order", mBvh.tlasInstanceOrder);
     }
-    mInstances = buildInstances(scene, meshFirst);
+}
+
+float GpuScene::getRayEpsilon() const {
+    constexpr float kRelativeEpsilon = 1e-5f; // ~100x float precision at the scene's extent
+    constexpr float kMinEpsilonM = 1e-6f;
+    return std::max(kMinEpsilonM, kRelativeEpsilon * glm::length(mBounds.getExtent()));
+}
+
+void GpuScene::updateDynamic(const Scene& scene) {
+    // Bottom levels stay; the top level follows the instances' new transforms.
+    rebuildTopLevel(mBvh, scene);
+    uploadTopLevel();
+    mInstances = buildInstances(scene, mBvh);
     mInstanceBuffer.upload<gpu::GpuInstance>(mInstances);
     uploadLights(scene);
 }
@@ -108,11 +124,16 @@ void GpuScene::bind() const {
     mMaterials.bindBase(BufferTarget::Storage, gpu::kBindingMaterials);
     mLights.bindBase(BufferTarget::Storage, gpu::kBindingLights);
     mLightViews.bindBase(BufferTarget::Storage, gpu::kBindingLightViews);
+    mBlasNodes.bindBase(BufferTarget::Storage, gpu::kBindingBlasNodes);
+    mBlasOrder.bindBase(BufferTarget::Storage, gpu::kBindingBlasTriangleOrder);
+    mTlasNodes.bindBase(BufferTarget::Storage, gpu::kBindingTlasNodes);
+    mTlasOrder.bindBase(BufferTarget::Storage, gpu::kBindingTlasInstanceOrder);
 }
 
 size_t GpuScene::getGpuBytes() const {
     return mPositions.getSize() + mTriangles.getSize() + mInstanceBuffer.getSize() +
-           mMaterials.getSize() + mLights.getSize() + mLightViews.getSize();
+           mMaterials.getSize() + mLights.getSize() + mLightViews.getSize() + mBlasNodes.getSize() +
+           mBlasOrder.getSize() + mTlasNodes.getSize() + mTlasOrder.getSize();
 }
 
 } // namespace ispm

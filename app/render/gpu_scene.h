@@ -3,6 +3,7 @@
 // every pass (rasterisers pull vertices from it, the photon tracer will traverse it).
 #pragma once
 
+#include "bvh/bvh_scene.h"
 #include "gl/objects.h"
 #include "render/light_cameras.h"
 #include "scene/scene.h"
@@ -20,7 +21,7 @@ public:
     // Re-uploads instance transforms and lights (animation, viewer edits); same topology.
     void updateDynamic(const Scene& scene);
 
-    void bind() const; // binds every buffer to its kBinding* point
+    void bind() const; // binds every buffer (scene and BVH) to its kBinding* point
 
     uint32_t getInstanceCount() const { return static_cast<uint32_t>(mInstances.size()); }
     const gpu::GpuInstance& getInstance(uint32_t i) const { return mInstances[i]; }
@@ -29,9 +30,14 @@ public:
     int getLightResolution() const { return mLightResolution; }
     const Aabb& getBounds() const { return mBounds; }
     size_t getGpuBytes() const;
+    const BvhScene& getBvh() const { return mBvh; }
+    // A distance rays step off the surface they leave: relative to the scene's size, so float
+    // round-off of hit positions never makes a ray hit its own surface again.
+    float getRayEpsilon() const;
 
 private:
     void uploadLights(const Scene& scene);
+    void uploadTopLevel();
 
     std::vector<gpu::GpuInstance> mInstances;
     std::vector<LightCamera> mLightCameras;
@@ -44,6 +50,11 @@ private:
     gl::Buffer mMaterials;
     gl::Buffer mLights;
     gl::Buffer mLightViews;
+    BvhScene mBvh;
+    gl::Buffer mBlasNodes;
+    gl::Buffer mBlasOrder;
+    gl::Buffer mTlasNodes;
+    gl::Buffer mTlasOrder;
 };
 
 } // namespace ispm

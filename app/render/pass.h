@@ -10,10 +10,12 @@
 namespace ispm {
 
 class GpuScene;
+struct Scene;
 class Settings;
 
 // What a frame hands every pass.
 struct FrameInputs {
+    const Scene& model; // the scene model (lights, materials) the GPU scene was made from
     const GpuScene& scene;
     const Settings& settings;
     const gl::Buffer& frameConstants; // gpu::FrameConstants, bound at kBindingFrameConstants

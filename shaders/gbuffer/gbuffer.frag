@@ -17,10 +17,11 @@ layout(location = GBUFFER_EMISSION) out vec4 outEmission;
 void main() {
     vec3 toEye = uEye.w > 0.5 ? uEye.xyz - vPositionW : uEye.xyz;
     // Surfaces are two-sided: the normal faces whoever looks at it.
-    vec3 n = dot(vNormalW, toEye) < 0.0 ? -vNormalW : vNormalW;
+    bool frontFace = dot(vNormalW, toEye) >= 0.0;
+    vec3 n = frontFace ? vNormalW : -vNormalW;
     GpuMaterial m = materials[vMaterial];
     outPosition = vec4(vPositionW, 1.0);
-    outNormal = vec4(n, 0.0);
+    outNormal = vec4(n, frontFace ? 1.0 : -1.0);
     outDiffuse = vec4(m.diffuse.rgb, 0.0);
     outSpecular = m.specular;
     outTransmissive = m.transmissive;

@@ -19,7 +19,7 @@ void main() {
     vec3 p = corner == 0u ? p0 : (corner == 1u ? p1 : p2);
     vec4 positionW = inst.worldFromObject * vec4(p, 1.0);
     vPositionW = positionW.xyz;
-    vNormalW = normalize(mat3(inst.normalFromObject) * cross(p1 - p0, p2 - p0));
+    vNormalW = normalize(transpose(mat3(inst.objectFromWorld)) * cross(p1 - p0, p2 - p0));
     vMaterial = tri.w;
     gl_Position = uClipFromWorld * positionW;
 }

@@ -49,7 +49,7 @@ uint selectLightView(GpuLight light, vec3 positionW) {
     return first + (d.z >= 0.0 ? 4u : 5u);
 }
 
-layout(binding = kUnitLightGBufferFirst + GBUFFER_POSITION) uniform sampler2DArray uLightPosition;
+#include "light_gbuffer.glsl"
 
 // 1 if nothing in the light's G-buffer lies between the light and the point, else 0. The point
 // is pushed off its surface along the normal and compared with a depth bias, both measured in

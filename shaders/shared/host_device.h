@@ -11,7 +11,25 @@
 #define ISPM_NAMESPACE_END }
 #define ISPM_CONST inline constexpr
 #define ISPM_STATIC_ASSERT_SIZE(T, bytes) static_assert(sizeof(T) == (bytes), #T " layout")
+// Functions written once for both languages: parameters passed by reference in C++.
+#define ISPM_INLINE inline
+#define ISPM_INOUT(T) T&
+#define ISPM_OUT(T) T&
 ISPM_NAMESPACE_BEGIN
+// The GLSL built-ins shared functions use, from glm.
+using glm::abs;
+using glm::clamp;
+using glm::cos;
+using glm::cross;
+using glm::dot;
+using glm::max;
+using glm::min;
+using glm::mix;
+using glm::normalize;
+using glm::pow;
+using glm::reflect;
+using glm::sin;
+using glm::sqrt;
 using vec2 = glm::vec2;
 using vec3 = glm::vec3;
 using vec4 = glm::vec4;
@@ -25,6 +43,9 @@ ISPM_NAMESPACE_END
 #define ISPM_NAMESPACE_END
 #define ISPM_CONST const
 #define ISPM_STATIC_ASSERT_SIZE(T, bytes)
+#define ISPM_INLINE
+#define ISPM_INOUT(T) inout T
+#define ISPM_OUT(T) out T
 #endif
 
 #endif

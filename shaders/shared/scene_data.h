@@ -17,10 +17,11 @@ struct GpuMaterial {
 ISPM_STATIC_ASSERT_SIZE(GpuMaterial, 64);
 
 // One placed mesh: its triangles are triangles[firstTriangle .. firstTriangle + triangleCount).
+// Normals transform by transpose(mat3(objectFromWorld)).
 struct GpuInstance {
     mat4 worldFromObject;
-    mat4 normalFromObject; // inverse transpose of worldFromObject (upper 3x3 used)
-    uvec4 range;           // x = firstTriangle, y = triangleCount
+    mat4 objectFromWorld;
+    uvec4 range; // x = firstTriangle, y = triangleCount, z = bottom-level BVH root node
 };
 ISPM_STATIC_ASSERT_SIZE(GpuInstance, 144);
 
@@ -54,6 +55,7 @@ ISPM_CONST int kBindingMaterials = 3;   // GpuMaterial
 ISPM_CONST int kBindingLights = 4;      // GpuLight
 ISPM_CONST int kBindingLightViews = 5;  // GpuLightView
 ISPM_CONST int kBindingExposure = 6;    // tone-map statistics
+// 7..10: the BVH (shared/bvh_data.h); 11..: the photon buffers (shared/photon_data.h)
 
 // Binding points (uniform buffers).
 ISPM_CONST int kBindingFrameConstants = 0;

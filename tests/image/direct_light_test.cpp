@@ -118,6 +118,7 @@ TEST_F(DirectLightTest, CornellBoxMatchesGolden) {
     Settings settings = scene.settings;
     settings.set("width", 128, "test");
     settings.set("height", 128, "test");
+    settings.set("bounces", 0, "test"); // direct light only
     const Image display = renderAov(scene, settings, Aov::Display);
     // Tone-mapped 8-bit values. Another GL implementation rasterises edges and rounds shadow
     // comparisons slightly differently: allow 2/255 on average and 1% of pixels off by more

@@ -1,0 +1,331 @@
+// Bench command: warm up, time N frames pass by pass, and report per-pass medians (with min and
+// max), the median frame total, peak memory and the effective settings. Speed is measured here,
+// not in timed tests.
+#include "cli/bench_command.h"
+
+#include "cli/cli_common.h"
+#include "core/strings.h"
+#include "gl/context.h"
+#include "gl/debug.h"
+#include "render/frame.h"
+#include "scene/input_error.h"
+#include "scene/scene_loader.h"
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <utility>
+
+namespace ispm {
+namespace {
+
+constexpr int kMinTimedFrames = 1; // a median needs at least one sample
+constexpr int kMinWarmupFrames = 0;
+constexpr double kBytesPerMib = 1024.0 * 1024.0;
+constexpr double kKibPerMib = 1024.0;
+
+struct PresetSetting {
+    const char* name;
+    double value;
+};
+
+// The thesis benchmark: McLaughlin's box city at 1280x1024 with 50k photons and three bounces.
+constexpr const char* kThesisPresetName = "thesis";
+constexpr const char* kThesisScene = "scenes/box_city.json"; // under ISPM_ASSET_DIR
+constexpr PresetSetting kThesisSettings[] = {
+    {"width", 1280}, {"height", 1024}, {"photons", 50000}, {"bounces", 3}};
+
+// Preset settings that name no entry in the settings table (yet) are skipped and reported, so the
+// preset keeps its meaning as the photon pipeline's settings arrive.
+struct PresetResult {
+    Settings settings;
+    std::vector<std::string> applied; // "name=value"
+    std::vector<std::string> skipped; // names
+};
+
+PresetResult applyThesisPreset() {
+    PresetResult result;
+    for (const PresetSetting& s : kThesisSettings) {
+        if (findSetting(s.name)) {
+            result.settings.set(s.name, s.value, strCat("--preset ", kThesisPresetName));
+            result.applied.push_back(strCat(s.name, "=", s.value));
+        } else {
+            result.skipped.push_back(s.name);
+        }
+    }
+    return result;
+}
+
+// Photon counts of the last timed frame; none when the frame has no indirect light (bounces = 0
+// or photons = 0), rather than zeros that would read as measured.
+std::optional<PhotonCounts> readReportedPhotonCounts(const FrameRunner& runner) {
+    const PhotonCounts counts = runner.readPhotonCounts();
+    if (counts.emitted == 0) return std::nullopt;
+    return counts;
+}
+
+struct PassStats {
+    std::string name;
+    double medianMs = 0.0;
+    double minMs = 0.0;
+    double maxMs = 0.0;
+};
+
+PassStats computeStats(std::string name, std::vector<double> samplesMs) {
+    std::sort(samplesMs.begin(), samplesMs.end());
+    const size_t n = samplesMs.size();
+    const double median =
+        n % 2 == 1 ? samplesMs[n / 2] : 0.5 * (samplesMs[n / 2 - 1] + samplesMs[n / 2]);
+    return {std::move(name), median, samplesMs.front(), samplesMs.back()};
+}
+
+// Peak resident set size (VmHWM) in MiB; empty where /proc is not there to ask.
+std::optional<double> readPeakRssMib() {
+    std::ifstream status("/proc/self/status");
+    std::string line;
+    while (std::getline(status, line)) {
+        if (line.rfind("VmHWM:", 0) != 0) continue;
+        std::istringstream fields(line.substr(line.find(':') + 1));
+        double kib = 0.0;
+        if (fields >> kib) return kib / kKibPerMib;
+    }
+    return std::nullopt;
+}
+
+struct BenchReport {
+    std::string scenePath;
+    int width = 0;
+    int height = 0;
+    int frames = 0;
+    int warmup = 0;
+    std::string renderer;
+    std::string contextPath;
+    std::string timingMethod;
+    std::vector<PassStats> passes; // frame order
+    PassStats total;               // sum of the passes, per frame
+    std::optional<double> peakRssMib;
+    size_t glBytes = 0;
+    std::optional<PhotonCounts> photons;
+    nlohmann::json settings; // effective overrides: enums by name, integers as integers
+    std::string presetName;
+    PresetResult preset;
+};
+
+nlohmann::json describeOverrides(const Settings& settings) {
+    nlohmann::json out = nlohmann::json::object();
+    for (const auto& [name, value] : settings.getOverrides()) {
+        const SettingDesc* desc = findSetting(name);
+        if (desc && desc->type == SettingType::Enum) {
+            out[name] = std::string(settings.getEnum(name));
+        } else if (desc && desc->type == SettingType::Int) {
+            out[name] = static_cast<int64_t>(value);
+        } else {
+            out[name] = value;
+        }
+    }
+    return out;
+}
+
+void printJson(const BenchReport& r) {
+    nlohmann::json out;
+    out["scene"] = r.scenePath;
+    out["width"] = r.width;
+    out["height"] = r.height;
+    out["frames"] = r.frames;
+    out["warmup"] = r.warmup;
+    out["renderer"] = r.renderer;
+    out["timing_method"] = r.timingMethod;
+    out["passes"] = nlohmann::json::array();
+    for (const PassStats& p : r.passes) {
+        out["passes"].push_back({{"name", p.name},
+                                 {"median_ms", p.medianMs},
+                                 {"min_ms", p.minMs},
+                                 {"max_ms", p.maxMs}});
+    }
+    out["total_median_ms"] = r.total.medianMs;
+    out["peak_rss_mib"] = r.peakRssMib ? nlohmann::json(*r.peakRssMib) : nlohmann::json(nullptr);
+    out["gl_bytes"] = r.glBytes;
+    if (r.photons) {
+        out["photons"] = {{"emitted", r.photons->emitted},
+                          {"bounced", r.photons->bounced},
+                          {"stored", r.photons->stored},
+                          {"overflow", r.photons->overflow}};
+    }
+    out["settings"] = r.settings;
+    if (!r.presetName.empty()) {
+        out["preset"] = {
+            {"name", r.presetName}, {"applied", r.preset.applied}, {"skipped", r.preset.skipped}};
+    }
+    std::printf("%s\n", out.dump(2).c_str());
+}
+
+std::string joinWords(const std::vector<std::string>& words) {
+    std::string out;
+    for (const std::string& w : words)
+        out += (out.empty() ? "" : " ") + w;
+    return out;
+}
+
+void printText(const BenchReport& r) {
+    std::printf("bench %s: %dx%d, %d timed frames after %d warm-up\n", r.scenePath.c_str(), r.width,
+                r.height, r.frames, r.warmup);
+    std::printf("renderer: %s (%s); pass times by %s\n", r.renderer.c_str(), r.contextPath.c_str(),
+                r.timingMethod.c_str());
+    if (!r.presetName.empty()) {
+        std::printf("preset %s: applied %s", r.presetName.c_str(),
+                    r.preset.applied.empty() ? "nothing" : joinWords(r.preset.applied).c_str());
+        if (!r.preset.skipped.empty()) {
+            std::printf("; skipped (not in the settings table): %s",
+                        joinWords(r.preset.skipped).c_str());
+        }
+        std::printf("\n");
+    }
+    std::string settings;
+    for (const auto& [name, value] : r.settings.items()) {
+        settings += strCat(settings.empty() ? "" : " ", name, "=",
+                           value.is_string() ? value.get<std::string>() : value.dump());
+    }
+    std::printf("settings: %s\n", settings.empty() ? "(defaults)" : settings.c_str());
+    std::printf("  %-12s %10s %10s %10s\n", "pass", "median ms", "min ms", "max ms");
+    for (const PassStats& p : r.passes) {
+        std::printf("  %-12s %10.2f %10.2f %10.2f\n", p.name.c_str(), p.medianMs, p.minMs, p.maxMs);
+    }
+    std::printf("  %-12s %10.2f %10.2f %10.2f\n", "total", r.total.medianMs, r.total.minMs,
+                r.total.maxMs);
+    if (r.photons) {
+        std::printf("photons: emitted %u, after the first bounce %u, stored %u, overflow %u\n",
+                    r.photons->emitted, r.photons->bounced, r.photons->stored, r.photons->overflow);
+    }
+    const std::string rss = r.peakRssMib ? strCat(static_cast<int64_t>(*r.peakRssMib + 0.5), " MiB")
+                                         : std::string("unknown");
+    std::printf("memory: peak RSS %s, GL allocations %.1f MiB (%zu bytes)\n", rss.c_str(),
+                static_cast<double>(r.glBytes) / kBytesPerMib, r.glBytes);
+}
+
+// Every input is checked before any GL work: bad values exit 2 without creating a context.
+void checkOptions(const BenchOptions& options) {
+    if (options.frames < kMinTimedFrames) {
+        throw InputError(
+            strCat("--frames: expected an integer >= ", kMinTimedFrames, ", got ", options.frames));
+    }
+    if (options.warmup < kMinWarmupFrames) {
+        throw InputError(strCat("--warmup: expected an integer >= ", kMinWarmupFrames, ", got ",
+                                options.warmup));
+    }
+    if (!options.preset.empty() && options.preset != kThesisPresetName) {
+        throw InputError(
+            strCat("--preset: expected '", kThesisPresetName, "', got '", options.preset, "'"));
+    }
+    if (options.scenePath.empty() && options.preset.empty()) {
+        throw InputError("bench: expected a scene file (SCENE may be left out only with --preset)");
+    }
+}
+
+} // namespace
+
+void addBenchCommand(CLI::App& app, BenchOptions& options) {
+    CLI::App* cmd = app.add_subcommand("bench", "Time every pass over many frames of a scene");
+    cmd->add_option("scene", options.scenePath,
+                    "scene file (JSON); optional with --preset, which then supplies it");
+    cmd->add_option("--frames", options.frames, "timed frames, >= 1 (default 10)");
+    cmd->add_option("--warmup", options.warmup,
+                    "untimed frames first, >= 0 (default 2: first use of a program is slow)");
+    cmd->add_option("--width", options.width, "image width in pixels (setting `width`)");
+    cmd->add_option("--height", options.height, "image height in pixels (setting `height`)");
+    cmd->add_option("--set", options.sets, "override a setting: name=value (repeatable)");
+    cmd->add_flag("--json", options.json, "print one JSON object on stdout and nothing else");
+    cmd->add_option("--preset", options.preset,
+                    "benchmark configuration: thesis (box city, 1280x1024, photons=50000, "
+                    "bounces=3)");
+    cmd->footer(
+        "Renders the warm-up frames, then the timed frames, and prints per pass (in frame order) "
+        "the median, min and max milliseconds and the median frame total (sum of the passes), the "
+        "timing method, the renderer, the image size, the peak RSS of the process and the bytes "
+        "of GL allocations.\n"
+        "Settings are layered: the scene's `render` block, then the preset, then --set, then "
+        "--width/--height. --preset thesis uses assets/scenes/box_city.json unless SCENE is given; "
+        "preset settings the settings table does not know yet are skipped and listed.\n"
+        "--json fields: scene, width, height, frames, warmup, renderer, timing_method, passes "
+        "[{name, median_ms, min_ms, max_ms}], total_median_ms, peak_rss_mib, gl_bytes, settings, "
+        "and preset {name, applied, skipped} with --preset.");
+}
+
+int runBench(const BenchOptions& options) {
+    checkOptions(options);
+    BenchReport report;
+    report.presetName = options.preset;
+    report.scenePath = options.scenePath;
+    if (report.scenePath.empty()) {
+        report.scenePath = (std::filesystem::path(ISPM_ASSET_DIR) / kThesisScene).string();
+    }
+    if (!options.preset.empty()) report.preset = applyThesisPreset();
+    const Settings commandLine =
+        makeCommandLineSettings(options.sets, options.width, options.height);
+    const Scene scene = loadScene(report.scenePath);
+    Settings settings = scene.settings;
+    settings.merge(report.preset.settings);
+    settings.merge(commandLine);
+    report.settings = describeOverrides(settings);
+
+    auto context = gl::createHeadlessContext();
+    const gl::ContextInfo& info = context->getInfo();
+    const gl::TimingMethod timing =
+        info.isSoftware ? gl::TimingMethod::CpuFinish : gl::TimingMethod::TimerQuery;
+    FrameRunner runner(scene, settings, timing);
+    for (int i = 0; i < options.warmup; ++i)
+        runner.renderFrame();
+
+    // Passes keep the order of their first appearance, so passes added later need no change here.
+    std::vector<std::string> passOrder;
+    std::map<std::string, std::vector<double>> samplesMs;
+    std::vector<double> totalsMs;
+    for (int i = 0; i < options.frames; ++i) {
+        runner.renderFrame();
+        double frameMs = 0.0;
+        for (const PassTiming& t : runner.getLastTimings()) {
+            auto [it, inserted] = samplesMs.try_emplace(t.name);
+            if (inserted) passOrder.push_back(t.name);
+            it->second.push_back(t.ms);
+            frameMs += t.ms;
+        }
+        totalsMs.push_back(frameMs);
+    }
+
+    report.width = runner.getWidth();
+    report.height = runner.getHeight();
+    report.frames = options.frames;
+    report.warmup = options.warmup;
+    report.renderer = info.renderer;
+    report.contextPath = gl::getContextPathName(info.path);
+    report.timingMethod = gl::getTimingMethodName(runner.getTimingMethod());
+    for (const std::string& name : passOrder) {
+        report.passes.push_back(computeStats(name, samplesMs[name]));
+    }
+    report.total = computeStats("total", totalsMs);
+    report.peakRssMib = readPeakRssMib();
+    report.glBytes = runner.getGpuBytes();
+    report.photons = readReportedPhotonCounts(runner);
+
+    if (options.json) {
+        printJson(report);
+    } else {
+        printText(report);
+    }
+    const gl::DebugCounts debug = gl::getDebugCounts();
+    if (debug.errors > 0) {
+        std::fprintf(stderr, "ispm: %llu OpenGL errors were reported while benchmarking\n",
+                     static_cast<unsigned long long>(debug.errors));
+        return 1;
+    }
+    return 0;
+}
+
+} // namespace ispm

@@ -1,0 +1,47 @@
+// The photon buffers the emit, trace and splat passes share: bounce buffer (transform feedback
+// target), result buffer, and the counters/indirect-argument block (shared/photon_data.h).
+#pragma once
+
+#include "gl/objects.h"
+
+#include <shared/photon_data.h>
+
+#include <cstdint>
+
+namespace ispm {
+
+struct PhotonCounts {
+    uint32_t emitted = 0;  // grid photons drawn (before the first bounce)
+    uint32_t bounced = 0;  // survivors of the first bounce, in the bounce buffer
+    uint32_t stored = 0;   // result photons kept
+    uint32_t overflow = 0; // result photons dropped for want of capacity
+};
+
+class PhotonBuffers {
+public:
+    // Grows (never shrinks) to hold `bounceCapacity` bounce photons and `resultCapacity` results.
+    void reserve(uint32_t bounceCapacity, uint32_t resultCapacity);
+    void bind() const; // storage bindings kBinding{Bounce,Result}Photons, kBindingPhotonCounters
+
+    const gl::Buffer& getBounce() const { return mBounce; }
+    const gl::Buffer& getResult() const { return mResult; }
+    const gl::Buffer& getCounters() const { return mCounters; }
+    const gl::Buffer& getSplatDraws() const { return mSplatDraws; }
+    uint32_t getBounceCapacity() const { return mBounceCapacity; }
+    uint32_t getResultCapacity() const { return mResultCapacity; }
+    // Reads the counters back: for reports and tests, never inside a frame.
+    PhotonCounts readCounts(uint32_t emitted) const;
+    size_t getGpuBytes() const {
+        return mBounce.getSize() + mResult.getSize() + mCounters.getSize() + mSplatDraws.getSize();
+    }
+
+private:
+    gl::Buffer mBounce;
+    gl::Buffer mResult;
+    gl::Buffer mCounters{"photon counters", sizeof(gpu::PhotonCounters)};
+    gl::Buffer mSplatDraws{"splat draw commands", gpu::kMaxSplatPasses * sizeof(glm::uvec4)};
+    uint32_t mBounceCapacity = 0;
+    uint32_t mResultCapacity = 0;
+};
+
+} // namespace ispm

@@ -1,0 +1,77 @@
+// Emission: one transform-feedback capture over every light view's grid.
+#include "render/photon_emit_pass.h"
+
+#include "gl/gl.h"
+#include "gl/state.h"
+#include "render/gpu_scene.h"
+#include "render/shader_root.h"
+#include "scene/settings.h"
+
+#include <shared/scene_data.h>
+
+#include <cstddef>
+
+namespace ispm {
+namespace {
+
+// Uniform locations of shaders/photon/photon_emit.geom.
+constexpr GLint kLocationView = 0;
+constexpr GLint kLocationGridSize = 1;
+constexpr GLint kLocationFirstPhoton = 2;
+constexpr GLint kLocationSeedMode = 3;
+constexpr GLint kLocationResolution = 4;
+
+} // namespace
+
+PhotonEmitPass::PhotonEmitPass(const GBuffer& lightGBuffer, PhotonBuffers& buffers)
+    : mLightGBuffer(lightGBuffer), mBuffers(buffers),
+      mProgram(gl::Program::build(
+          getShaderRoot(),
+          {.label = "photon emit",
+           .stages = {{gl::ShaderStage::Vertex, "photon/photon_emit.vert"},
+                      {gl::ShaderStage::Geometry, "photon/photon_emit.geom"}},
+           .defines = getGBufferDefines(),
+           .feedbackVaryings = {"outPositionDistance", "outDirectionDensity", "outPower"}})),
+      mVertexArray("photon emit vao"), mFramebuffer("photon emit (no attachments)"),
+      mFeedback("photon emit feedback"),
+      mWritten("bounce photons written", gl::QueryTarget::PrimitivesWritten) {
+    // Transform feedback with rasterizer discard still needs a complete framebuffer.
+    mFramebuffer.setDefaultSize(1, 1);
+}
+
+void PhotonEmitPass::execute(const FrameInputs& inputs) {
+    const GpuScene& scene = inputs.scene;
+    mGrids = computeEmissionGrids(inputs.model, scene.getLightCameras(), scene.getLightResolution(),
+                                  static_cast<uint32_t>(inputs.settings.getInt("photons")));
+    const uint32_t photons = countPhotons(mGrids);
+    const auto bounces = static_cast<uint32_t>(inputs.settings.getInt("bounces"));
+    mBuffers.reserve(std::max(photons, 1u), std::max(photons * bounces, 1u));
+
+    mFramebuffer.bind();
+    mVertexArray.bind();
+    mProgram.use();
+    gl::applyState({.rasterizerDiscard = true});
+    scene.bind();
+    inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
+    mLightGBuffer.bindTextures(gpu::kUnitLightGBufferFirst);
+    const glm::uvec2 seedMode(static_cast<uint32_t>(inputs.settings.getInt("seed")),
+                              static_cast<uint32_t>(inputs.settings.get("rng")));
+    glUniform2ui(kLocationSeedMode, seedMode.x, seedMode.y);
+    glUniform1i(kLocationResolution, scene.getLightResolution());
+    mFeedback.attachBuffer(0, mBuffers.getBounce(), 0, mBuffers.getBounce().getSize());
+    mWritten.begin();
+    mFeedback.begin(gl::Primitive::Points);
+    for (const EmissionGrid& g : mGrids) {
+        glUniform1ui(kLocationView, g.viewIndex);
+        glUniform2ui(kLocationGridSize, g.width, g.height);
+        glUniform1ui(kLocationFirstPhoton, g.firstPhoton);
+        gl::drawArrays(gl::Primitive::Points, 0, static_cast<int>(g.getCount()));
+    }
+    mFeedback.end();
+    mWritten.end();
+    gl::applyState({});
+    // The count stays on the GPU: the query result lands in the counters block.
+    mWritten.writeResultTo(mBuffers.getCounters(), offsetof(gpu::PhotonCounters, bounce));
+}
+
+} // namespace ispm

@@ -1,0 +1,33 @@
+// PhotonEmitPass: for each light view a regular vertex grid goes through a geometry shader that
+// reads the light's G-buffer, makes the first bounce and writes survivors into the bounce buffer
+// by transform feedback. The number written goes from a query into the counters buffer on the GPU.
+#pragma once
+
+#include "render/gbuffer.h"
+#include "render/pass.h"
+#include "render/photon_budget.h"
+#include "render/photon_buffers.h"
+
+namespace ispm {
+
+class PhotonEmitPass final : public Pass {
+public:
+    PhotonEmitPass(const GBuffer& lightGBuffer, PhotonBuffers& buffers);
+    const char* getName() const override { return "emit"; }
+    void execute(const FrameInputs& inputs) override;
+    // The grids of the last frame (emitted = their photon total).
+    const std::vector<EmissionGrid>& getGrids() const { return mGrids; }
+    uint32_t getEmittedCount() const { return countPhotons(mGrids); }
+
+private:
+    const GBuffer& mLightGBuffer;
+    PhotonBuffers& mBuffers;
+    gl::Program mProgram;
+    gl::VertexArray mVertexArray;
+    gl::Framebuffer mFramebuffer;
+    gl::TransformFeedback mFeedback;
+    gl::Query mWritten;
+    std::vector<EmissionGrid> mGrids;
+};
+
+} // namespace ispm

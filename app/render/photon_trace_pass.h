@@ -1,0 +1,24 @@
+// PhotonTracePass (compute): the bounce photons traced through the BVH for up to `bounces` more
+// hits, appending result photons. Dispatch size, counters and the splat pass's draw arguments are
+// all derived on the GPU from the emitted count.
+#pragma once
+
+#include "gl/program.h"
+#include "render/pass.h"
+#include "render/photon_buffers.h"
+
+namespace ispm {
+
+class PhotonTracePass final : public Pass {
+public:
+    explicit PhotonTracePass(PhotonBuffers& buffers);
+    const char* getName() const override { return "trace"; }
+    void execute(const FrameInputs& inputs) override;
+
+private:
+    PhotonBuffers& mBuffers;
+    gl::Program mPrepare;
+    gl::Program mTrace;
+};
+
+} // namespace ispm

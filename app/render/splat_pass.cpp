@@ -1,0 +1,102 @@
+// Splatting and the derived radius defaults.
+#include "render/splat_pass.h"
+
+#include "gl/gl.h"
+#include "gl/state.h"
+#include "render/shader_root.h"
+
+#include <shared/photon_data.h>
+#include <shared/scene_data.h>
+
+#include <glm/gtc/constants.hpp>
+
+#include <cmath>
+
+namespace ispm {
+namespace {
+
+// Uniform locations of shaders/splat/*.
+constexpr GLint kLocationPass = 0;
+constexpr GLint kLocationRadius = 1;
+constexpr GLint kLocationShape = 2;
+
+// How many discs cover a point on average with the derived base radius: enough overlap that
+// one photon's noise is averaged with its neighbours', few enough to keep detail.
+constexpr double kSplatOverlap = 32.0;
+constexpr float kMinRadiusFactor = 0.5f;
+constexpr float kMaxRadiusFactor = 2.0f;
+
+} // namespace
+
+double computeSurfaceArea(const Scene& scene) {
+    double area = 0.0;
+    for (const Instance& inst : scene.instances) {
+        const Mesh& mesh = scene.meshes[inst.meshIndex];
+        for (const glm::uvec3& t : mesh.triangles) {
+            const glm::vec3 p0 = glm::vec3(inst.worldFromObject * glm::vec4(mesh.positions[t.x], 1.0f));
+            const glm::vec3 p1 = glm::vec3(inst.worldFromObject * glm::vec4(mesh.positions[t.y], 1.0f));
+            const glm::vec3 p2 = glm::vec3(inst.worldFromObject * glm::vec4(mesh.positions[t.z], 1.0f));
+            area += 0.5 * double(glm::length(glm::cross(p1 - p0, p2 - p0)));
+        }
+    }
+    return area;
+}
+
+SplatRadii computeSplatRadii(const Scene& scene, const Settings& settings) {
+    const double photons = std::max(1, settings.getInt("photons"));
+    const auto r0 = float(std::sqrt(kSplatOverlap * computeSurfaceArea(scene) /
+                                    (glm::pi<double>() * photons)));
+    SplatRadii r;
+    r.radiusMinM = settings.isSet("radius_min") ? settings.getFloat("radius_min") : kMinRadiusFactor * r0;
+    r.radiusMaxM = settings.isSet("radius_max") ? settings.getFloat("radius_max") : kMaxRadiusFactor * r0;
+    r.distMinM = settings.isSet("dist_min") ? settings.getFloat("dist_min") : 0.0f;
+    r.distMaxM = settings.isSet("dist_max") ? settings.getFloat("dist_max")
+                                            : glm::length(scene.computeWorldBounds().getExtent());
+    const float scale = settings.getFloat("radius_scale");
+    r.radiusMinM *= scale;
+    r.radiusMaxM *= scale;
+    return r;
+}
+
+SplatPass::SplatPass(const GBuffer& viewer, const PhotonBuffers& buffers)
+    : mViewer(viewer), mBuffers(buffers),
+      mProgram(gl::Program::build(getShaderRoot(),
+                                  {.label = "splat",
+                                   .stages = {{gl::ShaderStage::Vertex, "splat/splat.vert"},
+                                              {gl::ShaderStage::Fragment, "splat/splat.frag"}},
+                                   .defines = getGBufferDefines()})),
+      mVertexArray("splat vao") {}
+
+void SplatPass::resize(int width, int height) {
+    if (mIndirect.getWidth() == width && mIndirect.getHeight() == height) return;
+    mIndirect = gl::Texture::create2D("indirect", gl::Format::RGBA32F, width, height);
+    mFramebuffer = gl::Framebuffer("indirect target");
+    mFramebuffer.attachColor(0, mIndirect);
+    mFramebuffer.setDrawBufferCount(1);
+    mFramebuffer.checkComplete();
+}
+
+void SplatPass::execute(const FrameInputs& inputs) {
+    mFramebuffer.clearColor(0, glm::vec4(0.0f));
+    mFramebuffer.bind();
+    // Additive float accumulation; front faces culled so each box covers a pixel once.
+    gl::applyState({.blend = gl::Blend::Additive, .cull = gl::Cull::Front});
+    mProgram.use();
+    mVertexArray.bind();
+    mBuffers.bind();
+    inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
+    mViewer.bindTextures(gpu::kUnitGBufferFirst);
+    const SplatRadii r = computeSplatRadii(inputs.model, inputs.settings);
+    glUniform4f(kLocationRadius, r.radiusMinM, r.radiusMaxM, r.distMinM, r.distMaxM);
+    glUniform4f(kLocationShape, static_cast<float>(inputs.settings.get("radius_mode")), 0.0f,
+                inputs.settings.getFloat("squash"), 0.0f);
+    const auto passes = static_cast<GLuint>(inputs.settings.getInt("splat_passes"));
+    for (GLuint p = 0; p < passes; ++p) {
+        glUniform2ui(kLocationPass, p, passes);
+        gl::drawArraysIndirect(gl::Primitive::Triangles, mBuffers.getSplatDraws(),
+                               p * sizeof(glm::uvec4));
+    }
+    gl::applyState({});
+}
+
+} // namespace ispm

@@ -1,0 +1,46 @@
+// SplatPass: every result photon is drawn as an instanced box squashed along its normal; the
+// fragment stage adds BRDF x power x kernel to the indirect-light buffer (additive RGBA32F).
+// The draw count comes from the GPU (glDrawArraysIndirect), split into `splat_passes` calls.
+#pragma once
+
+#include "render/gbuffer.h"
+#include "render/pass.h"
+#include "render/photon_buffers.h"
+#include "scene/scene.h"
+
+namespace ispm {
+
+struct SplatRadii {
+    float radiusMinM = 0.0f;
+    float radiusMaxM = 0.0f;
+    float distMinM = 0.0f;
+    float distMaxM = 0.0f;
+};
+
+// Settings where given, else derived: a base radius r0 such that `photons` discs of radius r0
+// cover the scene's surface areakSplatOverlap times; radius_min = r0 / 2 at dist_min = 0,
+// radius_max = 2 r0 at dist_max = the scene's diagonal. radius_scale multiplies both radii.
+SplatRadii computeSplatRadii(const Scene& scene, const Settings& settings);
+
+// Total area of every instance's triangles in world space (m^2).
+double computeSurfaceArea(const Scene& scene);
+
+class SplatPass final : public Pass {
+public:
+    SplatPass(const GBuffer& viewer, const PhotonBuffers& buffers);
+    const char* getName() const override { return "splat"; }
+    void resize(int width, int height) override;
+    void execute(const FrameInputs& inputs) override;
+    const gl::Texture& getOutput() const { return mIndirect; }
+    void clear() const { mFramebuffer.clearColor(0, glm::vec4(0.0f)); }
+
+private:
+    const GBuffer& mViewer;
+    const PhotonBuffers& mBuffers;
+    gl::Program mProgram;
+    gl::VertexArray mVertexArray;
+    gl::Texture mIndirect;
+    gl::Framebuffer mFramebuffer;
+};
+
+} // namespace ispm

@@ -1,0 +1,131 @@
+// Ray traversal of the two-level BVH (shared/bvh_data.h): a stack over the top level's instance
+// boxes, and for each instance leaf a stack over its mesh's bottom level, in object space. The
+// object-space direction is not renormalised, so hit distances stay world-space distances.
+// Needs scene_buffers.glsl included before.
+#include "../shared/bvh_data.h"
+
+layout(std430, binding = kBindingBlasNodes) readonly buffer BlasNodes { GpuBvhNode blasNodes[]; };
+layout(std430, binding = kBindingBlasTriangleOrder) readonly buffer BlasOrder { uint blasTriangleOrder[]; };
+layout(std430, binding = kBindingTlasNodes) readonly buffer TlasNodes { GpuBvhNode tlasNodes[]; };
+layout(std430, binding = kBindingTlasInstanceOrder) readonly buffer TlasOrder { uint tlasInstanceOrder[]; };
+
+struct RayHit {
+    float t;
+    uint triangle; // global index (scene_buffers triangles[])
+    uint instance;
+    vec2 barycentric;
+};
+
+// Slab test; returns the entry distance or a huge value on a miss.
+float intersectBox(vec3 origin, vec3 invDir, vec3 lo, vec3 hi, float tMax) {
+    vec3 t0 = (lo - origin) * invDir;
+    vec3 t1 = (hi - origin) * invDir;
+    vec3 tNear = min(t0, t1);
+    vec3 tFar = max(t0, t1);
+    float enter = max(max(tNear.x, tNear.y), max(tNear.z, 0.0));
+    float leave = min(min(tFar.x, tFar.y), min(tFar.z, tMax));
+    return enter <= leave ? enter : 3.0e38;
+}
+
+// Two-sided Moller-Trumbore; updates hit when closer than hit.t.
+bool intersectTriangle(vec3 origin, vec3 dir, vec3 p0, vec3 p1, vec3 p2, inout float t,
+                       out vec2 barycentric) {
+    vec3 e1 = p1 - p0;
+    vec3 e2 = p2 - p0;
+    vec3 p = cross(dir, e2);
+    float det = dot(e1, p);
+    if (det == 0.0) return false;
+    float invDet = 1.0 / det;
+    vec3 s = origin - p0;
+    float u = dot(s, p) * invDet;
+    if (u < 0.0 || u > 1.0) return false;
+    vec3 q = cross(s, e1);
+    float v = dot(dir, q) * invDet;
+    if (v < 0.0 || u + v > 1.0) return false;
+    float tHit = dot(e2, q) * invDet;
+    if (tHit <= 0.0 || tHit >= t) return false;
+    t = tHit;
+    barycentric = vec2(u, v);
+    return true;
+}
+
+vec3 safeInverse(vec3 d) {
+    const float kTiny = 1e-30; // keeps 1/0 finite with the right sign for the slab test
+    return 1.0 / vec3(abs(d.x) > kTiny ? d.x : (d.x >= 0.0 ? kTiny : -kTiny),
+                      abs(d.y) > kTiny ? d.y : (d.y >= 0.0 ? kTiny : -kTiny),
+                      abs(d.z) > kTiny ? d.z : (d.z >= 0.0 ? kTiny : -kTiny));
+}
+
+bool intersectInstance(uint instanceIndex, vec3 originW, vec3 dirW, inout RayHit hit) {
+    GpuInstance inst = instances[instanceIndex];
+    vec3 origin = (inst.objectFromWorld * vec4(originW, 1.0)).xyz;
+    vec3 dir = mat3(inst.objectFromWorld) * dirW;
+    vec3 invDir = safeInverse(dir);
+    bool found = false;
+    uint stack[kBvhStackSize];
+    int top = 0;
+    stack[top++] = inst.range.z;
+    while (top > 0) {
+        GpuBvhNode node = blasNodes[stack[--top]];
+        if (intersectBox(origin, invDir, node.lo.xyz, node.hi.xyz, hit.t) > 1.0e38) continue;
+        uint a = floatBitsToUint(node.lo.w);
+        uint b = floatBitsToUint(node.hi.w);
+        if ((b & kBvhLeafFlag) != 0u) {
+            uint count = b & kBvhCountMask;
+            for (uint i = a; i < a + count; ++i) {
+                uint tri = blasTriangleOrder[i];
+                uvec4 t = triangles[tri];
+                vec2 bc;
+                if (intersectTriangle(origin, dir, positions[t.x].xyz, positions[t.y].xyz,
+                                      positions[t.z].xyz, hit.t, bc)) {
+                    hit.triangle = tri;
+                    hit.instance = instanceIndex;
+                    hit.barycentric = bc;
+                    found = true;
+                }
+            }
+        } else if (top + 2 <= kBvhStackSize) {
+            stack[top++] = a;
+            stack[top++] = b;
+        }
+    }
+    return found;
+}
+
+// Closest hit along origin + t dir, t in (0, tMax).
+bool traceRay(vec3 origin, vec3 dir, float tMax, out RayHit hit) {
+    hit.t = tMax;
+    hit.triangle = 0u;
+    hit.instance = 0u;
+    hit.barycentric = vec2(0.0);
+    if (tlasNodes.length() == 0) return false;
+    vec3 invDir = safeInverse(dir);
+    bool found = false;
+    uint stack[kBvhStackSize];
+    int top = 0;
+    stack[top++] = 0u;
+    while (top > 0) {
+        GpuBvhNode node = tlasNodes[stack[--top]];
+        if (intersectBox(origin, invDir, node.lo.xyz, node.hi.xyz, hit.t) > 1.0e38) continue;
+        uint a = floatBitsToUint(node.lo.w);
+        uint b = floatBitsToUint(node.hi.w);
+        if ((b & kBvhLeafFlag) != 0u) {
+            uint count = b & kBvhCountMask;
+            for (uint i = a; i < a + count; ++i) {
+                found = intersectInstance(tlasInstanceOrder[i], origin, dir, hit) || found;
+            }
+        } else if (top + 2 <= kBvhStackSize) {
+            stack[top++] = a;
+            stack[top++] = b;
+        }
+    }
+    return found;
+}
+
+// World-space unit geometric normal of a hit (the triangle's winding decides its side).
+vec3 computeHitNormal(RayHit hit) {
+    uvec4 t = triangles[hit.triangle];
+    vec3 p0 = positions[t.x].xyz;
+    vec3 n = cross(positions[t.y].xyz - p0, positions[t.z].xyz - p0);
+    return normalize(transpose(mat3(instances[hit.instance].objectFromWorld)) * n);
+}

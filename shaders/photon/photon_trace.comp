@@ -1,0 +1,70 @@
+// Photon tracing: each bounce-buffer photon is traced through the BVH for up to `bounces` more
+// hits. Every hit on a surface with a diffuse or glossy part appends a result photon (the light
+// that arrives there after k reflections, k = 1..bounces); between hits the photon scatters by
+// the same Russian roulette as the first bounce.
+#include "lib/scene_buffers.glsl"
+#include "lib/bvh.glsl"
+#include "shared/photon_data.h"
+#include "shared/photon_scatter.h"
+
+layout(local_size_x = kTraceGroupSize) in;
+
+layout(std430, binding = kBindingBouncePhotons) readonly buffer BounceBuffer { BouncePhoton bouncePhotons[]; };
+layout(std430, binding = kBindingResultPhotons) writeonly buffer ResultBuffer { ResultPhoton resultPhotons[]; };
+layout(std430, binding = kBindingPhotonCounters) buffer CounterBuffer { PhotonCounters counters; };
+
+layout(location = 0) uniform uvec4 uParams;   // x = bounces, y = frame seed, z = rng mode
+layout(location = 1) uniform float uEpsilonM; // ray offset off the surface it leaves
+
+// Photons are stored where a splat can show them: diffuse or glossy surfaces; a near-mirror lobe
+// is left to further bounces (its reflection would need an image of the mirror, not a splat).
+const float kGlossyExponentMax = 1000.0;
+
+bool isStoredSurface(GpuMaterial m) {
+    return any(greaterThan(m.diffuse.rgb, vec3(0.0))) ||
+           (any(greaterThan(m.specular.rgb, vec3(0.0))) && m.specular.w < kGlossyExponentMax);
+}
+
+void storePhoton(vec3 position, float travelled, vec3 normal, float density, vec3 dir,
+                 uint reflections, vec3 power) {
+    uint slot = atomicAdd(counters.result.x, 1u);
+    if (slot >= counters.result.y) {
+        atomicAdd(counters.result.z, 1u); // counted, never written out of bounds
+        return;
+    }
+    resultPhotons[slot].positionDistance = vec4(position, travelled);
+    resultPhotons[slot].normalDensity = vec4(normal, density);
+    resultPhotons[slot].incoming = vec4(dir, float(reflections));
+    resultPhotons[slot].power = vec4(power, 0.0);
+}
+
+void main() {
+    uint index = gl_GlobalInvocationID.x;
+    if (index >= counters.bounce.x) return;
+    BouncePhoton photon = bouncePhotons[index];
+    vec3 position = photon.positionDistance.xyz;
+    float travelled = photon.positionDistance.w;
+    vec3 dir = photon.directionDensity.xyz;
+    float density = photon.directionDensity.w;
+    vec3 power = photon.power.rgb;
+    uint id = floatBitsToUint(photon.power.w);
+    uint bounces = uParams.x;
+    for (uint reflections = 1u; reflections <= bounces; ++reflections) {
+        vec3 origin = position + dir * uEpsilonM;
+        RayHit hit;
+        if (!traceRay(origin, dir, 3.0e38, hit)) break;
+        position = origin + dir * hit.t;
+        travelled += hit.t + uEpsilonM;
+        vec3 geometric = computeHitNormal(hit);
+        bool frontFace = dot(geometric, dir) < 0.0;
+        vec3 n = frontFace ? geometric : -geometric;
+        GpuMaterial m = materials[triangles[hit.triangle].w];
+        if (isStoredSurface(m)) storePhoton(position, travelled, n, density, dir, reflections, power);
+        if (reflections == bounces) break;
+        uint rng = seedRandom(id, reflections, uParams.y);
+        uint event = scatterPhoton(dir, power, n, m.diffuse.rgb, m.specular, m.transmissive,
+                                   frontFace, rng, uParams.z);
+        if (event == kScatterAbsorbed) break;
+        density = updatePathDensity(density, event, m.specular.w);
+    }
+}

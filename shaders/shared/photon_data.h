@@ -1,0 +1,51 @@
+// Photons as the GPU stores them, shared by C++ and GLSL: the bounce buffer (written by the emit
+// pass through transform feedback), the result buffer (appended by the trace pass), the counters
+// and the indirect arguments the passes hand each other without a CPU round trip.
+#ifndef ISPM_PHOTON_DATA_H
+#define ISPM_PHOTON_DATA_H
+
+#include "host_device.h"
+
+ISPM_NAMESPACE_BEGIN
+
+// After the first bounce, at the surface the light camera saw. Interleaved transform-feedback
+// varyings, in this order: outPositionDistance, outDirectionDensity, outPower.
+struct BouncePhoton {
+    vec4 positionDistance; // xyz world position (m); w = distance travelled from the light (m)
+    vec4 directionDensity; // xyz unit outgoing direction; w = path density (1/m^2)
+    vec4 power;            // rgb power (W) after the bounce; w = photon index (uint bits)
+};
+ISPM_STATIC_ASSERT_SIZE(BouncePhoton, 48);
+
+// A photon landing on a diffuse or glossy surface, splatted onto the image.
+struct ResultPhoton {
+    vec4 positionDistance; // xyz hit position (m); w = distance travelled from the light (m)
+    vec4 normalDensity;    // xyz unit normal on the side the photon arrived from; w = path density
+    vec4 incoming;         // xyz unit direction of travel; w = reflections before this hit
+    vec4 power;            // rgb incoming power (W)
+};
+ISPM_STATIC_ASSERT_SIZE(ResultPhoton, 64);
+
+// Counters and indirect arguments in one buffer, so one bind serves every stage.
+struct PhotonCounters {
+    uvec4 bounce;        // x = bounce photons written (transform feedback query result)
+    uvec4 result;        // x = result photons appended (may pass capacity), y = capacity,
+                         // z = overflow (appends dropped), w = bounce capacity
+    uvec4 traceDispatch; // glDispatchComputeIndirect arguments (x, y, z)
+    uvec4 splatDraw;     // glDrawArraysIndirect: count, instanceCount, first, baseInstance
+};
+ISPM_STATIC_ASSERT_SIZE(PhotonCounters, 64);
+
+ISPM_CONST uint kTraceGroupSize = 64u;
+ISPM_CONST uint kMaxSplatPasses = 64u;
+ISPM_CONST uint kSplatCubeVertices = 36u; // 12 triangles
+
+// Binding points (storage buffers), after the BVH's.
+ISPM_CONST int kBindingBouncePhotons = 11;
+ISPM_CONST int kBindingResultPhotons = 12;
+ISPM_CONST int kBindingPhotonCounters = 13;
+ISPM_CONST int kBindingSplatDraws = 14; // uvec4 draw commands, one per splat pass
+
+ISPM_NAMESPACE_END
+
+#endif

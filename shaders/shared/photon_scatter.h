@@ -1,0 +1,148 @@
+// Random numbers and the photon scattering decision, written once for GLSL (emit and trace
+// passes) and C++ (the CPU reference the tests compare against).
+// Russian roulette picks diffuse, specular or transmissive with probabilities equal to the mean
+// reflectances and scales the power by reflectance / probability, so the estimate is unbiased.
+#ifndef ISPM_PHOTON_SCATTER_H
+#define ISPM_PHOTON_SCATTER_H
+
+#include "host_device.h"
+
+ISPM_NAMESPACE_BEGIN
+
+ISPM_CONST uint kRngPcg = 0u;
+ISPM_CONST uint kRngLcg = 1u;
+
+ISPM_CONST uint kScatterAbsorbed = 0u;
+ISPM_CONST uint kScatterDiffuse = 1u;
+ISPM_CONST uint kScatterSpecular = 2u;
+ISPM_CONST uint kScatterReflect = 3u; // Fresnel reflection off a transmissive surface
+ISPM_CONST uint kScatterRefract = 4u;
+
+ISPM_CONST float kTwoPiF = 6.28318530717958f;
+
+// PCG-family integer hash (Jarzynski and Olano 2020, "pcg" output permutation).
+ISPM_INLINE uint hashPcg(uint v) {
+    uint state = v * 747796405u + 2891336453u;
+    uint word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+    return (word >> 22u) ^ word;
+}
+
+// Stateless: the same photon, bounce and frame seed always draw the same numbers.
+ISPM_INLINE uint seedRandom(uint photon, uint bounce, uint frameSeed) {
+    return hashPcg(photon ^ hashPcg(bounce ^ hashPcg(frameSeed)));
+}
+
+// Next number in [0, 1) with 24 bits. kRngLcg steps the thesis's linear congruential generator
+// (Numerical Recipes constants); kRngPcg re-hashes the state.
+ISPM_INLINE float nextRandom(ISPM_INOUT(uint) state, uint mode) {
+    if (mode == kRngLcg) {
+        state = 1664525u * state + 1013904223u;
+    } else {
+        state = hashPcg(state);
+    }
+    return float(state >> 8u) * (1.0f / 16777216.0f);
+}
+
+// An orthonormal basis around unit n (Duff et al. 2017).
+ISPM_INLINE void buildBasis(vec3 n, ISPM_OUT(vec3) t, ISPM_OUT(vec3) b) {
+    float s = n.z >= 0.0f ? 1.0f : -1.0f;
+    float a = -1.0f / (s + n.z);
+    float c = n.x * n.y * a;
+    t = vec3(1.0f + s * n.x * n.x * a, s * c, -s * n.x);
+    b = vec3(c, s + n.y * n.y * a, -n.y);
+}
+
+// Cosine-weighted direction around unit n.
+ISPM_INLINE vec3 sampleCosine(vec3 n, float u1, float u2) {
+    vec3 t;
+    vec3 b;
+    buildBasis(n, t, b);
+    float r = sqrt(u1);
+    float phi = kTwoPiF * u2;
+    float z = sqrt(max(0.0f, 1.0f - u1));
+    return normalize(t * (r * cos(phi)) + b * (r * sin(phi)) + n * z);
+}
+
+// Direction with density (e + 1) / (2 pi) cos^e(alpha) around unit axis.
+ISPM_INLINE vec3 samplePhongLobe(vec3 axis, float exponent, float u1, float u2) {
+    vec3 t;
+    vec3 b;
+    buildBasis(axis, t, b);
+    float cosAlpha = pow(u1, 1.0f / (exponent + 1.0f));
+    float sinAlpha = sqrt(max(0.0f, 1.0f - cosAlpha * cosAlpha));
+    float phi = kTwoPiF * u2;
+    return normalize(t * (sinAlpha * cos(phi)) + b * (sinAlpha * sin(phi)) + axis * cosAlpha);
+}
+
+// Unpolarised Fresnel reflectance of a dielectric; eta = n_incident / n_transmitted.
+ISPM_INLINE float computeFresnel(float cosIncident, float eta) {
+    float sin2T = eta * eta * max(0.0f, 1.0f - cosIncident * cosIncident);
+    if (sin2T >= 1.0f) return 1.0f; // total internal reflection
+    float cosT = sqrt(1.0f - sin2T);
+    float rs = (eta * cosIncident - cosT) / (eta * cosIncident + cosT);
+    float rp = (cosIncident - eta * cosT) / (cosIncident + eta * cosT);
+    return 0.5f * (rs * rs + rp * rp);
+}
+
+ISPM_INLINE float computeMean(vec3 v) { return (v.x + v.y + v.z) * (1.0f / 3.0f); }
+
+// Scatters a photon travelling along `dir` that hit a surface with unit normal `n` facing the
+// side it came from. `entering`: it hit the front face (for the index of refraction). Updates
+// dir and power; returns the kScatter* event (kScatterAbsorbed ends the path).
+ISPM_INLINE uint scatterPhoton(ISPM_INOUT(vec3) dir, ISPM_INOUT(vec3) power, vec3 n, vec3 diffuse,
+                               vec4 specular, vec4 transmissive, bool entering,
+                               ISPM_INOUT(uint) rng, uint mode) {
+    float pd = computeMean(diffuse);
+    float ps = computeMean(vec3(specular));
+    float pt = computeMean(vec3(transmissive));
+    float u = nextRandom(rng, mode);
+    float u1 = nextRandom(rng, mode);
+    float u2 = nextRandom(rng, mode);
+    if (u < pd) {
+        dir = sampleCosine(n, u1, u2);
+        power = power * (diffuse / pd);
+        return kScatterDiffuse;
+    }
+    if (u < pd + ps) {
+        float exponent = specular.w;
+        vec3 out_ = samplePhongLobe(reflect(dir, n), exponent, u1, u2);
+        float cosOut = dot(out_, n);
+        if (cosOut <= 0.0f) return kScatterAbsorbed; // the lobe dipped below the surface
+        // f cos / pdf for the normalised Phong lobe: rho_s (e + 2) / (e + 1) cos(theta_out).
+        power = power * (vec3(specular) / ps) * ((exponent + 2.0f) / (exponent + 1.0f) * cosOut);
+        dir = out_;
+        return kScatterSpecular;
+    }
+    if (u < pd + ps + pt) {
+        float ior = transmissive.w;
+        float eta = entering ? 1.0f / ior : ior;
+        float cosI = clamp(-dot(dir, n), 0.0f, 1.0f);
+        float fresnel = computeFresnel(cosI, eta);
+        power = power * (vec3(transmissive) / pt);
+        if (u1 < fresnel) {
+            dir = reflect(dir, n);
+            return kScatterReflect;
+        }
+        float sin2T = eta * eta * (1.0f - cosI * cosI);
+        dir = normalize(dir * eta + n * (eta * cosI - sqrt(1.0f - sin2T)));
+        return kScatterRefract;
+    }
+    return kScatterAbsorbed;
+}
+
+// Path density: how much the scattering so far has concentrated the photon's path, relative to
+// a diffuse bounce (1). A Phong lobe concentrates by about (e + 2) / 2 relative to the cosine lobe;
+// mirror reflection and refraction are treated as a fixed strong focus. The splat radius in
+// `path_density` mode shrinks with its square root, so caustics stay sharp.
+ISPM_CONST float kDeltaConcentration = 16.0f;
+
+ISPM_INLINE float updatePathDensity(float density, uint event, float exponent) {
+    if (event == kScatterDiffuse) return 1.0f;
+    if (event == kScatterSpecular) return density * (exponent + 2.0f) * 0.5f;
+    if (event == kScatterReflect || event == kScatterRefract) return density * kDeltaConcentration;
+    return density;
+}
+
+ISPM_NAMESPACE_END
+
+#endif

@@ -1,0 +1,41 @@
+// Splat fragment stage: the viewer G-buffer point under the pixel receives the photon when it lies
+// inside the photon's ellipsoid and faces the same way; it gets BRDF x power x kernel, the kernel
+// 2 / (pi r^2) (1 - s^2 / r^2) over the in-plane distance s, which integrates to 1 over the disc
+// of radius r: one photon's power is conserved on a flat surface.
+#include "lib/frame_constants.glsl"
+#include "lib/brdf.glsl"
+#include "shared/photon_data.h"
+
+layout(std430, binding = kBindingResultPhotons) readonly buffer ResultBuffer { ResultPhoton photons[]; };
+layout(location = 2) uniform vec4 uSplatShape; // z = squash
+
+layout(binding = kUnitGBufferFirst + GBUFFER_POSITION) uniform sampler2D uPosition;
+layout(binding = kUnitGBufferFirst + GBUFFER_NORMAL) uniform sampler2D uNormal;
+layout(binding = kUnitGBufferFirst + GBUFFER_DIFFUSE) uniform sampler2D uDiffuse;
+layout(binding = kUnitGBufferFirst + GBUFFER_SPECULAR) uniform sampler2D uSpecular;
+
+flat in uint vPhoton;
+flat in float vRadius;
+
+layout(location = 0) out vec4 outRadiance;
+
+void main() {
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    vec4 position = texelFetch(uPosition, pixel, 0);
+    if (position.w < 0.5) discard;
+    ResultPhoton photon = photons[vPhoton];
+    vec3 pn = photon.normalDensity.xyz;
+    vec3 n = texelFetch(uNormal, pixel, 0).xyz;
+    if (dot(n, pn) <= 0.0) discard; // the surface faces away from where the photon arrived
+    vec3 d = position.xyz - photon.positionDistance.xyz;
+    float along = dot(d, pn);
+    vec3 inPlane = d - along * pn;
+    float s2 = dot(inPlane, inPlane) / (vRadius * vRadius);
+    float z = along / (vRadius * uSplatShape.z);
+    if (s2 + z * z > 1.0) discard;
+    float kernel = 2.0 * kInvPi / (vRadius * vRadius) * (1.0 - s2);
+    vec3 wi = -photon.incoming.xyz;
+    vec3 wo = normalize(frame.cameraPosition.xyz - position.xyz);
+    vec3 f = evaluateBrdf(texelFetch(uDiffuse, pixel, 0).rgb, texelFetch(uSpecular, pixel, 0), n, wi, wo);
+    outRadiance = vec4(f * photon.power.rgb * kernel, 1.0);
+}

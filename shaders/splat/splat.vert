@@ -1,0 +1,38 @@
+// Splat vertex stage: one instanced box per result photon, aligned with the photon's surface
+// normal, radius r in the surface plane and r * squash along the normal. Only back faces are kept
+// (front faces culled): they cover the box's screen footprint once, camera inside or out.
+#include "lib/frame_constants.glsl"
+#include "shared/photon_data.h"
+#include "shared/photon_scatter.h"
+#include "splat/splat_radius.glsl"
+
+layout(std430, binding = kBindingResultPhotons) readonly buffer ResultBuffer { ResultPhoton photons[]; };
+layout(std430, binding = kBindingPhotonCounters) readonly buffer CounterBuffer { PhotonCounters counters; };
+
+layout(location = 0) uniform uvec2 uPass; // x = this pass, y = pass count
+
+flat out uint vPhoton;
+flat out float vRadius;
+
+// Unit cube corners and its 12 triangles, counter-clockwise seen from outside.
+const vec3 kCorners[8] = vec3[8](vec3(-1, -1, -1), vec3(1, -1, -1), vec3(-1, 1, -1), vec3(1, 1, -1),
+                                 vec3(-1, -1, 1), vec3(1, -1, 1), vec3(-1, 1, 1), vec3(1, 1, 1));
+const int kIndices[36] = int[36](0, 2, 1, 1, 2, 3,  4, 5, 6, 5, 7, 6,  0, 1, 4, 1, 5, 4,
+                                 2, 6, 3, 3, 6, 7,  0, 4, 2, 2, 4, 6,  1, 3, 5, 3, 7, 5);
+
+void main() {
+    uint stored = counters.splatDraw.y;
+    uint id = stored * uPass.x / uPass.y + uint(gl_InstanceID);
+    ResultPhoton photon = photons[id];
+    vec3 n = photon.normalDensity.xyz;
+    vec3 t;
+    vec3 b;
+    buildBasis(n, t, b);
+    float radius = computeSplatRadius(photon.positionDistance.w, photon.normalDensity.w);
+    vec3 c = kCorners[kIndices[gl_VertexID]];
+    vec3 world = photon.positionDistance.xyz +
+                 radius * (t * c.x + b * c.y + n * (c.z * uSplatShape.z));
+    vPhoton = id;
+    vRadius = radius;
+    gl_Position = frame.clipFromWorld * vec4(world, 1.0);
+}
