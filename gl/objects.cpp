@@ -36,7 +36,7 @@ Buffer::Buffer(std::string_view label, size_t bytes, const void* data) : mSize(b
     setLabel(GL_BUFFER, id, label);
 }
 
-void Buffer::upload(size_t offsetBytes, size_t bytes, const void* data) {
+void Buffer::upload(size_t offsetBytes, size_t bytes, const void* data) const {
     assert(offsetBytes + bytes <= mSize);
     if (bytes == 0) return;
     glNamedBufferSubData(getId(), static_cast<GLintptr>(offsetBytes), static_cast<GLsizeiptr>(bytes),
@@ -50,7 +50,7 @@ void Buffer::download(size_t offsetBytes, size_t bytes, void* out) const {
                             static_cast<GLsizeiptr>(bytes), out);
 }
 
-void Buffer::clearToZero() {
+void Buffer::clearToZero() const {
     const GLuint zero = 0;
     glClearNamedBufferData(getId(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
 }

@@ -45,9 +45,11 @@ public:
         return Buffer(label, items.size_bytes(), items.data());
     }
 
-    void upload(size_t offsetBytes, size_t bytes, const void* data);
+    // Contents are GPU state, not the handle's: writing them through a const handle is allowed,
+    // as through a const pointer.
+    void upload(size_t offsetBytes, size_t bytes, const void* data) const;
     template <typename T>
-    void upload(std::span<const T> items, size_t offsetBytes = 0) {
+    void upload(std::span<const T> items, size_t offsetBytes = 0) const {
         upload(offsetBytes, items.size_bytes(), items.data());
     }
     void download(size_t offsetBytes, size_t bytes, void* out) const;
@@ -57,7 +59,7 @@ public:
         download(offsetBytes, count * sizeof(T), items.data());
         return items;
     }
-    void clearToZero();
+    void clearToZero() const;
 
     void bindBase(BufferTarget target, GLuint index) const;
     void bindRange(BufferTarget target, GLuint index, size_t offsetBytes, size_t bytes) const;

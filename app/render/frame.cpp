@@ -82,10 +82,14 @@ void FrameRunner::runPass(Pass& pass, const FrameInputs& inputs) {
     mTimer.end();
 }
 
+FrameInputs FrameRunner::getFrameInputs() const {
+    return {mScene,         mGpuScene,          mSettings, mFrameConstants,
+            mClipFromWorld, mScene.camera.position, mWidth,    mHeight};
+}
+
 void FrameRunner::renderFrame() {
     updateFrameConstants();
-    const FrameInputs inputs{mScene, mGpuScene, mSettings, mFrameConstants, mClipFromWorld,
-                             mScene.camera.position, mWidth, mHeight};
+    const FrameInputs inputs = getFrameInputs();
     runPass(*mGBuffer, inputs);
     runPass(*mLightViews, inputs);
     if (hasIndirect()) runPass(*mEmit, inputs);

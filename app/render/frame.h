@@ -41,6 +41,12 @@ public:
     // Photon counts of the last frame, read back from the GPU (for reports; waits for the GPU).
     PhotonCounts readPhotonCounts() const;
     const PhotonBuffers& getPhotonBuffers() const { return mPhotonBuffers; }
+    // The emission grids of the last frame (light view, size, first photon index).
+    const std::vector<EmissionGrid>& getEmissionGrids() const { return mEmit->getGrids(); }
+    const GpuScene& getGpuScene() const { return mGpuScene; }
+    // What the passes were given in the last frame (valid after renderFrame), so a pass can be
+    // run on its own against the same frame: tests and debug views.
+    FrameInputs getFrameInputs() const;
     const GBuffer& getViewerGBuffer() const { return mGBuffer->getGBuffer(); }
     const GBuffer& getLightGBuffer() const { return mLightViews->getGBuffer(); }
     float readLuminanceMax() const { return mTonemap->readLuminanceMax(); }

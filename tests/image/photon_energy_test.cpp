@@ -1,0 +1,182 @@
+// Energy of the photon pipeline, against closed forms: photons inside a closed diffuse box, and
+// one splat on a plane.
+#include "support/gl_fixture.h"
+#include "support/render_support.h"
+
+#include "render/readback.h"
+#include "render/splat_pass.h"
+
+#include <glm/gtc/constants.hpp>
+
+#include <cmath>
+
+namespace ispm::test {
+namespace {
+
+class PhotonEnergyTest : public GlTest {};
+
+// A closed box [-1,1]^3 (two-sided walls) of grey diffuse albedo rho, a point light inside.
+Scene makeClosedBox(float rho, const glm::vec3& lightPosition, float intensity) {
+    Scene scene;
+    scene.sourcePath = "closed box";
+    Material m;
+    m.name = "walls";
+    m.diffuse = glm::vec3(rho);
+    scene.materials.push_back(m);
+    Mesh mesh;
+    mesh.name = "box";
+    for (int i = 0; i < 8; ++i) {
+        mesh.positions.emplace_back((i & 1) ? 1.0f : -1.0f, (i & 2) ? 1.0f : -1.0f, (i & 4) ? 1.0f : -1.0f);
+    }
+    const glm::uvec4 faces[6] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                                 {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    for (const glm::uvec4& f : faces) {
+        mesh.triangles.emplace_back(f.x, f.y, f.z);
+        mesh.triangles.emplace_back(f.x, f.z, f.w);
+        mesh.triangleMaterials.insert(mesh.triangleMaterials.end(), {0u, 0u});
+    }
+    scene.meshes.push_back(mesh);
+    scene.instances.push_back({0, glm::mat4(1.0f)});
+    Light light;
+    light.type = LightType::Point;
+    light.position = lightPosition;
+    light.intensity = glm::vec3(intensity);
+    scene.lights.push_back(light);
+    scene.camera.position = {0.0f, 0.0f, 0.9f};
+    scene.camera.target = {0.0f, 0.0f, 0.0f};
+    return scene;
+}
+
+TEST_F(PhotonEnergyTest, StoredPowerIsLightPowerTimesGeometricSeries) {
+    constexpr float kRho = 0.6f;
+    constexpr float kIntensity = 2.0f; // W/sr
+    constexpr int kPhotons = 50000;
+    // Off-centre so the walls are hit at every angle, not only head-on.
+    const Scene scene = makeClosedBox(kRho, {0.3f, -0.2f, 0.1f}, kIntensity);
+    const double lightPower = 4.0 * glm::pi<double>() * double(kIntensity);
+    for (int bounces : {1, 3}) {
+        Settings settings;
+        settings.set("width", 16, "test");
+        settings.set("height", 16, "test");
+        settings.set("shadow_map_size", 128, "test");
+        settings.set("photons", kPhotons, "test");
+        settings.set("bounces", bounces, "test");
+        settings.set("seed", 3, "test");
+        FrameRunner runner(scene, settings, gl::TimingMethod::CpuFinish);
+        runner.renderFrame();
+        const PhotonCounts counts = runner.readPhotonCounts();
+        ASSERT_EQ(counts.overflow, 0u);
+        ASSERT_GT(counts.stored, 0u);
+        const auto photons =
+            runner.getPhotonBuffers().getResult().read<gpu::ResultPhoton>(counts.stored);
+        glm::dvec3 stored(0.0);
+        for (const gpu::ResultPhoton& p : photons) stored += glm::dvec3(glm::vec3(p.power));
+        double series = 0.0;
+        for (int k = 1; k <= bounces; ++k) series += std::pow(double(kRho), k);
+        const double expected = lightPower * series;
+        std::printf("bounces %d: stored/expected = %.4f %.4f %.4f (%u photons)\n", bounces,
+                    stored.x / expected, stored.y / expected, stored.z / expected, counts.stored);
+        // 2%: Russian roulette with ~50k photons has a relative standard deviation of about
+        // sqrt((1 - rho) / (rho N)) ~ 0.4% per bounce; a missing bounce or a wrong power scale
+        // is off by 20% or more.
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_NEAR(stored[c] / expected, 1.0, 0.02) << "bounces " << bounces << " channel " << c;
+        }
+    }
+}
+
+// Pixel footprint on the plane y = 0 for a camera looking straight down: exact, from the
+// corners of the pixel projected onto the plane.
+double computePixelArea(const glm::mat4& worldFromClip, int x, int y, int size) {
+    auto project = [&](float px, float py) {
+        const glm::vec2 ndc(px / float(size) * 2.0f - 1.0f, py / float(size) * 2.0f - 1.0f);
+        const glm::vec4 a = worldFromClip * glm::vec4(ndc, -1.0f, 1.0f);
+        const glm::vec4 b = worldFromClip * glm::vec4(ndc, 1.0f, 1.0f);
+        const glm::dvec3 p0 = glm::dvec3(glm::vec3(a) / a.w);
+        const glm::dvec3 p1 = glm::dvec3(glm::vec3(b) / b.w);
+        return p0 + (p1 - p0) * (p0.y / (p0.y - p1.y));
+    };
+    const float fx = float(x);
+    const float fy = float(y);
+    const glm::dvec3 c00 = project(fx, fy);
+    const glm::dvec3 c10 = project(fx + 1.0f, fy);
+    const glm::dvec3 c01 = project(fx, fy + 1.0f);
+    const glm::dvec3 c11 = project(fx + 1.0f, fy + 1.0f);
+    return 0.5 * glm::length(glm::cross(c11 - c00, c01 - c10));
+}
+
+TEST_F(PhotonEnergyTest, OneSplatOnAPlaneIntegratesToBrdfTimesPower) {
+    constexpr float kRho = 0.5f;
+    constexpr int kSize = 128;
+    constexpr float kRadiusM = 0.3f; // ~40 pixels across: the kernel is well resolved
+    Scene scene;
+    scene.sourcePath = "splat plane";
+    Material m;
+    m.diffuse = glm::vec3(kRho);
+    scene.materials.push_back(m);
+    Mesh plane;
+    plane.positions = {{-5, 0, -5}, {5, 0, -5}, {5, 0, 5}, {-5, 0, 5}};
+    plane.triangles = {{0, 1, 2}, {0, 2, 3}};
+    plane.triangleMaterials = {0, 0};
+    scene.meshes.push_back(plane);
+    scene.instances.push_back({0, glm::mat4(1.0f)});
+    // Far and narrow: close to the orthographic camera the closed form assumes; the pixel areas
+    // below are exact anyway.
+    scene.camera.position = {0.0f, 20.0f, 0.0f};
+    scene.camera.target = {0.0f, 0.0f, 0.0f};
+    scene.camera.up = {0.0f, 0.0f, 1.0f};
+    scene.camera.fovYDeg = 3.0f;
+    Settings settings;
+    settings.set("width", kSize, "test");
+    settings.set("height", kSize, "test");
+    settings.set("bounces", 0, "test"); // the frame itself stores no photons
+    settings.set("radius_min", kRadiusM, "test");
+    settings.set("radius_max", kRadiusM, "test");
+    FrameRunner runner(scene, settings, gl::TimingMethod::CpuFinish);
+    runner.renderFrame();
+
+    // One photon of 1 W at the origin, arriving straight down.
+    PhotonBuffers buffers;
+    buffers.reserve(1, 1);
+    gpu::ResultPhoton photon{};
+    photon.positionDistance = glm::vec4(0.1f, 0.0f, -0.05f, 1.0f);
+    photon.normalDensity = glm::vec4(0.0f, 1.0f, 0.0f, 1.0f);
+    photon.incoming = glm::vec4(0.0f, -1.0f, 0.0f, 1.0f);
+    photon.power = glm::vec4(1.0f, 2.0f, 0.5f, 0.0f);
+    buffers.getResult().upload(0, sizeof(photon), &photon);
+    gpu::PhotonCounters counters{};
+    counters.result = glm::uvec4(1, 1, 0, 1);
+    counters.splatDraw = glm::uvec4(gpu::kSplatCubeVertices, 1, 0, 0);
+    buffers.getCounters().upload(0, sizeof(counters), &counters);
+    const glm::uvec4 draw(gpu::kSplatCubeVertices, 1, 0, 0);
+    buffers.getSplatDraws().upload(0, sizeof(draw), &draw);
+
+    SplatPass splat(runner.getViewerGBuffer(), buffers);
+    splat.resize(kSize, kSize);
+    splat.execute(runner.getFrameInputs());
+    const std::vector<glm::vec4> radiance = splat.getOutput().readRgba();
+
+    float nearM = 0.0f;
+    float farM = 0.0f;
+    computeCameraRange(scene.camera, scene.computeWorldBounds(), nearM, farM);
+    const glm::mat4 worldFromClip = glm::inverse(computeClipFromView(scene.camera, 1.0f, nearM, farM) *
+                                                 computeViewFromWorld(scene.camera));
+    glm::dvec3 flux(0.0);
+    int covered = 0;
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) {
+            const glm::vec4 L = radiance[size_t(y * kSize + x)];
+            if (L.x > 0.0f) ++covered;
+            flux += glm::dvec3(glm::vec3(L)) * computePixelArea(worldFromClip, x, y, kSize);
+        }
+    }
+    EXPECT_GT(covered, 1000) << "the splat covers a disc of many pixels";
+    std::printf("splat: %d pixels, flux / expected = %.5f\n", covered, flux.x / (double(kRho) / glm::pi<double>()));
+    // Integral of radiance over area = BRDF x power = rho / pi x power (W/sr). 1%: the kernel is
+    // sampled at pixel centres; at ~40 pixels across a disc, the sum errs by well under 1%.
+    const glm::dvec3 expected = glm::dvec3(glm::vec3(photon.power)) * double(kRho) / glm::pi<double>();
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(flux[c] / expected[c], 1.0, 0.01) << "channel " << c;
+}
+
+} // namespace
+} // namespace ispm::test
