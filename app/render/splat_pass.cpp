@@ -79,8 +79,10 @@ void SplatPass::resize(int width, int height) {
 void SplatPass::execute(const FrameInputs& inputs) {
     mFramebuffer.clearColor(0, glm::vec4(0.0f));
     mFramebuffer.bind();
-    // Additive float accumulation; front faces culled so each box covers a pixel once.
-    gl::applyState({.blend = gl::Blend::Additive, .cull = gl::Cull::Front});
+    // Additive float accumulation; only back faces count, so each box covers a pixel once.
+    const bool cullInRasteriser = inputs.settings.getEnum("splat_faces") == "back";
+    gl::applyState({.blend = gl::Blend::Additive,
+                    .cull = cullInRasteriser ? gl::Cull::Front : gl::Cull::Off});
     mProgram.use();
     mVertexArray.bind();
     mBuffers.bind();
@@ -88,8 +90,8 @@ void SplatPass::execute(const FrameInputs& inputs) {
     mViewer.bindTextures(gpu::kUnitGBufferFirst);
     const SplatRadii r = computeSplatRadii(inputs.model, inputs.settings);
     glUniform4f(kLocationRadius, r.radiusMinM, r.radiusMaxM, r.distMinM, r.distMaxM);
-    glUniform4f(kLocationShape, static_cast<float>(inputs.settings.get("radius_mode")), 0.0f,
-                inputs.settings.getFloat("squash"), 0.0f);
+    glUniform4f(kLocationShape, static_cast<float>(inputs.settings.get("radius_mode")),
+                cullInRasteriser ? 0.0f : 1.0f, inputs.settings.getFloat("squash"), 0.0f);
     const auto passes = static_cast<GLuint>(inputs.settings.getInt("splat_passes"));
     for (GLuint p = 0; p < passes; ++p) {
         glUniform2ui(kLocationPass, p, passes);

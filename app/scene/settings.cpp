@@ -62,6 +62,10 @@ const std::vector<SettingDesc>& table() {
          "splat ellipsoid thickness along the surface normal, as a fraction of its radius", {}},
         {"splat_passes", SettingType::Int, 1, 1, 64, "",
          "number of draw calls the splats are split into", {}},
+        {"splat_faces", SettingType::Enum, 0, 0, 1, "",
+         "back: the rasteriser culls the boxes' front faces (the thesis's choice); all: every face "
+         "is rasterised and the fragment stage drops front faces (same image, for measuring)",
+         {"back", "all"}},
     };
     return kTable;
 }

@@ -7,7 +7,7 @@
 #include "shared/photon_data.h"
 
 layout(std430, binding = kBindingResultPhotons) readonly buffer ResultBuffer { ResultPhoton photons[]; };
-layout(location = 2) uniform vec4 uSplatShape; // z = squash
+layout(location = 2) uniform vec4 uSplatShape; // y = 1: drop front faces here; z = squash
 
 layout(binding = kUnitGBufferFirst + GBUFFER_POSITION) uniform sampler2D uPosition;
 layout(binding = kUnitGBufferFirst + GBUFFER_NORMAL) uniform sampler2D uNormal;
@@ -20,6 +20,7 @@ flat in float vRadius;
 layout(location = 0) out vec4 outRadiance;
 
 void main() {
+    if (uSplatShape.y > 0.5 && gl_FrontFacing) discard; // splat_faces = all
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec4 position = texelFetch(uPosition, pixel, 0);
     if (position.w < 0.5) discard;

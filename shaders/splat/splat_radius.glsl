@@ -3,7 +3,8 @@
 // the travel radius divided by the square root of the path density, so focused photons splat
 // smaller, never below radius_min.
 layout(location = 1) uniform vec4 uRadius;     // x = radius_min, y = radius_max, z = dist_min, w = dist_max
-layout(location = 2) uniform vec4 uSplatShape; // x = mode (0 travel, 1 path density), z = squash
+layout(location = 2) uniform vec4 uSplatShape; // x = mode (0 travel, 1 path density),
+                                               // y = faces (0 back, 1 all), z = squash
 
 float computeSplatRadius(float travelled, float density) {
     float s = clamp((travelled - uRadius.z) / max(uRadius.w - uRadius.z, 1e-9), 0.0, 1.0);
