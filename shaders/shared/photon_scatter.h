@@ -86,21 +86,24 @@ ISPM_INLINE float computeFresnel(float cosIncident, float eta) {
 
 ISPM_INLINE float computeMean(vec3 v) { return (v.x + v.y + v.z) * (1.0f / 3.0f); }
 
-// Scatters a photon travelling along `dir` that hit a surface with unit normal `n` facing the
-// side it came from. `entering`: it hit the front face (for the index of refraction). Updates
-// dir and power; returns the kScatter* event (kScatterAbsorbed ends the path).
-ISPM_INLINE uint scatterPhoton(ISPM_INOUT(vec3) dir, ISPM_INOUT(vec3) power, vec3 n, vec3 diffuse,
-                               vec4 specular, vec4 transmissive, bool entering,
-                               ISPM_INOUT(uint) rng, uint mode) {
-    float pd = computeMean(diffuse);
-    float ps = computeMean(vec3(specular));
-    float pt = computeMean(vec3(transmissive));
+// Scatters a path travelling along `dir` that hit a surface with unit normal `n` facing the side
+// it came from. `entering`: it hit the front face (for the index of refraction). A lobe is chosen
+// with probability (its mean reflectance) x selectScale, and the weight is divided by that
+// probability. selectScale = 1 is Russian roulette on the albedo (photons: absorbed paths end);
+// selectScale = 1 / (sum of the means) always picks a lobe (camera paths of the reference, which
+// apply their own roulette). Updates dir and weight; returns the kScatter* event.
+ISPM_INLINE uint scatterSurface(ISPM_INOUT(vec3) dir, ISPM_INOUT(vec3) weight, vec3 n,
+                                vec3 diffuse, vec4 specular, vec4 transmissive, bool entering,
+                                ISPM_INOUT(uint) rng, uint mode, float selectScale) {
+    float pd = computeMean(diffuse) * selectScale;
+    float ps = computeMean(vec3(specular)) * selectScale;
+    float pt = computeMean(vec3(transmissive)) * selectScale;
     float u = nextRandom(rng, mode);
     float u1 = nextRandom(rng, mode);
     float u2 = nextRandom(rng, mode);
     if (u < pd) {
         dir = sampleCosine(n, u1, u2);
-        power = power * (diffuse / pd);
+        weight = weight * (diffuse / pd);
         return kScatterDiffuse;
     }
     if (u < pd + ps) {
@@ -109,7 +112,7 @@ ISPM_INLINE uint scatterPhoton(ISPM_INOUT(vec3) dir, ISPM_INOUT(vec3) power, vec
         float cosOut = dot(out_, n);
         if (cosOut <= 0.0f) return kScatterAbsorbed; // the lobe dipped below the surface
         // f cos / pdf for the normalised Phong lobe: rho_s (e + 2) / (e + 1) cos(theta_out).
-        power = power * (vec3(specular) / ps) * ((exponent + 2.0f) / (exponent + 1.0f) * cosOut);
+        weight = weight * (vec3(specular) / ps) * ((exponent + 2.0f) / (exponent + 1.0f) * cosOut);
         dir = out_;
         return kScatterSpecular;
     }
@@ -118,7 +121,7 @@ ISPM_INLINE uint scatterPhoton(ISPM_INOUT(vec3) dir, ISPM_INOUT(vec3) power, vec
         float eta = entering ? 1.0f / ior : ior;
         float cosI = clamp(-dot(dir, n), 0.0f, 1.0f);
         float fresnel = computeFresnel(cosI, eta);
-        power = power * (vec3(transmissive) / pt);
+        weight = weight * (vec3(transmissive) / pt);
         if (u1 < fresnel) {
             dir = reflect(dir, n);
             return kScatterReflect;
@@ -128,6 +131,13 @@ ISPM_INLINE uint scatterPhoton(ISPM_INOUT(vec3) dir, ISPM_INOUT(vec3) power, vec
         return kScatterRefract;
     }
     return kScatterAbsorbed;
+}
+
+// Photons: Russian roulette on the albedo, absorbed photons end.
+ISPM_INLINE uint scatterPhoton(ISPM_INOUT(vec3) dir, ISPM_INOUT(vec3) power, vec3 n, vec3 diffuse,
+                               vec4 specular, vec4 transmissive, bool entering,
+                               ISPM_INOUT(uint) rng, uint mode) {
+    return scatterSurface(dir, power, n, diffuse, specular, transmissive, entering, rng, mode, 1.0f);
 }
 
 // Path density: how much the scattering so far has concentrated the photon's path, relative to
