@@ -32,6 +32,7 @@ enum class Barrier : GLbitfield {
     Framebuffer = GL_FRAMEBUFFER_BARRIER_BIT,
     QueryBuffer = GL_QUERY_BUFFER_BARRIER_BIT,
     BufferUpdate = GL_BUFFER_UPDATE_BARRIER_BIT,
+    TextureUpdate = GL_TEXTURE_UPDATE_BARRIER_BIT,
     All = GL_ALL_BARRIER_BITS,
 };
 

@@ -8,6 +8,7 @@
 #include "image/image_io.h"
 #include "render/frame.h"
 #include "render/readback.h"
+#include "render/reference_pass.h"
 #include "scene/input_error.h"
 #include "scene/scene_loader.h"
 
@@ -15,6 +16,8 @@
 
 #include <chrono>
 #include <cstdio>
+
+#include <unistd.h>
 
 namespace ispm {
 
@@ -30,21 +33,81 @@ void addRenderCommand(CLI::App& app, RenderOptions& options) {
     cmd->add_option("--aov", options.aov,
                     "linear output for .pfm/.exr: direct, indirect or total (default total)");
     cmd->add_flag("-q,--quiet", options.quiet, "print only errors");
-    cmd->footer("Renders a warm-up frame first and prints the per-pass times of the second.");
+    cmd->add_option("--mode", options.mode,
+                    "ispm (image-space photon mapping, default) or reference (path tracer)");
+    cmd->add_option("--spp", options.spp, "reference mode: samples per pixel (default 64)");
+    cmd->add_option("--bounces", options.bounces,
+                    "reflections between light and visible surface (setting `bounces`; 0 = direct "
+                    "light; reference default 64)");
+    cmd->footer("ispm mode renders a warm-up frame first and prints the per-pass times of the "
+                "second. reference mode accumulates --spp jittered samples per pixel with a "
+                "progress bar on a terminal and writes linear .pfm/.exr only.");
 }
+
+namespace {
+
+bool isTerminal() { return ::isatty(::fileno(stderr)) != 0; }
+
+void printProgress(int done, int total, double elapsedS) {
+    constexpr int kBarWidth = 30;
+    const int filled = total > 0 ? done * kBarWidth / total : kBarWidth;
+    const double left = done > 0 ? elapsedS / done * (total - done) : 0.0;
+    std::fprintf(stderr, "\r[%s%s] %d/%d spp, %.1f s left  ", std::string(size_t(filled), '#').c_str(),
+                 std::string(size_t(kBarWidth - filled), '.').c_str(), done, total, left);
+    if (done == total) std::fprintf(stderr, "\n");
+}
+
+int runReference(const RenderOptions& options, const Scene& scene, const Settings& settings,
+                 std::chrono::steady_clock::time_point start) {
+    auto context = gl::createHeadlessContext();
+    ReferencePass reference(scene, settings);
+    const bool progress = !options.quiet && isTerminal();
+    const auto traceStart = std::chrono::steady_clock::now();
+    auto secondsSince = [](std::chrono::steady_clock::time_point t) {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+    };
+    for (int s = 0; s < options.spp; ++s) {
+        reference.addSample();
+        if (progress) printProgress(s + 1, options.spp, secondsSince(traceStart));
+    }
+    writeImage(options.outputPath, reference.readMean());
+    if (!options.quiet) {
+        std::printf("wrote %s (%dx%d, reference, %d spp, %d bounces)\n", options.outputPath.c_str(),
+                    settings.getInt("width"), settings.getInt("height"), options.spp,
+                    reference.getBounces());
+        std::printf("path tracing: %.1f ms; whole command: %.1f ms\n",
+                    secondsSince(traceStart) * 1e3, secondsSince(start) * 1e3);
+    }
+    return gl::getDebugCounts().errors > 0 ? 1 : 0;
+}
+
+} // namespace
 
 int runRender(const RenderOptions& options) {
     const auto start = std::chrono::steady_clock::now();
     const OutputKind kind = classifyOutput(options.outputPath, "--output");
     const Aov aov = parseAov(options.aov, "--aov");
+    if (options.mode != "ispm" && options.mode != "reference") {
+        throw InputError(strCat("--mode: expected ispm or reference, got '", options.mode, "'"));
+    }
+    const bool isReference = options.mode == "reference";
     if (kind == OutputKind::Png && aov != Aov::Total) {
         throw InputError(strCat("--aov: a PNG holds the tone-mapped total; write .pfm or .exr for '",
                                 options.aov, "'"));
     }
-    const Settings commandLine = makeCommandLineSettings(options.sets, options.width, options.height);
+    if (isReference && kind == OutputKind::Png) {
+        throw InputError("--output: reference mode writes linear radiance: expected .pfm or .exr");
+    }
+    if (isReference && aov != Aov::Total) {
+        throw InputError("--aov: reference mode writes the total; --bounces 0 gives direct light");
+    }
+    if (options.spp < 1) throw InputError(strCat("--spp: expected at least 1, got ", options.spp));
+    Settings commandLine = makeCommandLineSettings(options.sets, options.width, options.height);
+    if (options.bounces) commandLine.set("bounces", *options.bounces, "--bounces");
     const Scene scene = loadScene(options.scenePath);
     Settings settings = scene.settings;
     settings.merge(commandLine);
+    if (isReference) return runReference(options, scene, settings, start);
 
     auto context = gl::createHeadlessContext();
     const gl::TimingMethod timing = context->getInfo().isSoftware ? gl::TimingMethod::CpuFinish

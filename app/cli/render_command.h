@@ -19,6 +19,9 @@ struct RenderOptions {
     std::vector<std::string> sets;
     std::string aov = "total";
     bool quiet = false;
+    std::string mode = "ispm";
+    int spp = 64;                // reference mode: samples per pixel
+    std::optional<int> bounces;  // setting `bounces`
 };
 
 void addRenderCommand(CLI::App& app, RenderOptions& options);

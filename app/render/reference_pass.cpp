@@ -1,0 +1,77 @@
+// Reference path tracing: setup and one sample per dispatch.
+#include "render/reference_pass.h"
+
+#include "gl/gl.h"
+#include "gl/state.h"
+#include "render/frame.h"
+#include "render/gbuffer.h"
+#include "render/readback.h"
+#include "render/shader_root.h"
+
+#include <shared/scene_data.h>
+
+namespace ispm {
+namespace {
+
+constexpr GLint kLocationParams = 0;
+constexpr GLint kLocationEpsilon = 1;
+constexpr GLuint kImageUnitAccumulation = 0;
+constexpr unsigned kGroupSize = 8; // local_size_x/y of reference.comp
+// The light G-buffer of the photon mapper is not used here; the GPU scene still derives light
+// cameras, at the smallest size.
+constexpr int kUnusedLightResolution = 1;
+
+} // namespace
+
+ReferencePass::ReferencePass(const Scene& scene, const Settings& settings)
+    : mScene(scene), mGpuScene(scene, kUnusedLightResolution),
+      mProgram(gl::Program::build(getShaderRoot(),
+                                  {.label = "reference path tracer",
+                                   .stages = {{gl::ShaderStage::Compute, "reference/reference.comp"}},
+                                   .defines = getGBufferDefines()})),
+      mFrameConstants("reference frame constants", sizeof(gpu::FrameConstants)),
+      mWidth(settings.getInt("width")), mHeight(settings.getInt("height")),
+      mBounces(settings.isSet("bounces") ? settings.getInt("bounces") : kReferenceDefaultBounces),
+      mSeed(static_cast<uint32_t>(settings.getInt("seed"))) {
+    mAccumulation = gl::Texture::create2D("reference accumulation", gl::Format::RGBA32F, mWidth, mHeight);
+    mAccumulation.clear(glm::vec4(0.0f));
+    float nearM = 0.0f;
+    float farM = 0.0f;
+    computeCameraRange(scene.camera, mGpuScene.getBounds(), nearM, farM);
+    const float aspect = static_cast<float>(mWidth) / static_cast<float>(mHeight);
+    const glm::mat4 clipFromWorld =
+        computeClipFromView(scene.camera, aspect, nearM, farM) * computeViewFromWorld(scene.camera);
+    gpu::FrameConstants fc{};
+    fc.clipFromWorld = clipFromWorld;
+    fc.worldFromClip = glm::inverse(clipFromWorld);
+    fc.cameraPosition = glm::vec4(scene.camera.position, 1.0f);
+    fc.background = glm::vec4(scene.background, 0.0f);
+    fc.imageSize = glm::vec4(mWidth, mHeight, 1.0f / static_cast<float>(mWidth),
+                             1.0f / static_cast<float>(mHeight));
+    fc.counts = glm::uvec4(mGpuScene.getLightCount(), 0u, mSeed, 0u);
+    mFrameConstants.upload(0, sizeof(fc), &fc);
+}
+
+void ReferencePass::addSample() {
+    mGpuScene.bind();
+    mFrameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
+    mAccumulation.bindImage(kImageUnitAccumulation, true, true);
+    mProgram.use();
+    glUniform4ui(kLocationParams, static_cast<GLuint>(mSamples), static_cast<GLuint>(mBounces),
+                 mSeed, 0u);
+    glUniform1f(kLocationEpsilon, mGpuScene.getRayEpsilon());
+    gl::dispatchCompute((static_cast<unsigned>(mWidth) + kGroupSize - 1) / kGroupSize,
+                        (static_cast<unsigned>(mHeight) + kGroupSize - 1) / kGroupSize);
+    // The next sample reads what this one wrote; read-back follows the same rule.
+    gl::memoryBarrier(gl::Barrier::ImageAccess | gl::Barrier::TextureUpdate);
+    ++mSamples;
+}
+
+Image ReferencePass::readMean() const {
+    Image image = readTextureImage(mAccumulation);
+    const float scale = mSamples > 0 ? 1.0f / static_cast<float>(mSamples) : 0.0f;
+    for (glm::vec3& p : image.pixels) p *= scale;
+    return image;
+}
+
+} // namespace ispm

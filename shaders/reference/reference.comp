@@ -1,0 +1,88 @@
+// Reference path tracer (one sample per pixel per dispatch, accumulated): camera paths through
+// the same BVH, materials and lights as the photon mapper. Next-event estimation to every light
+// with a shadow ray at each vertex (point, spot and sun lights are delta lights: paths cannot hit
+// them), BSDF sampling by the shared scatterSurface, Russian roulette after a few vertices.
+// `bounces` B counts reflections between the light and the visible surface, as in ispm mode:
+// light is gathered at vertices 1..B+1 and the path stops there.
+#include "lib/scene_buffers.glsl"
+#include "lib/frame_constants.glsl"
+#include "lib/bvh.glsl"
+#include "lib/brdf.glsl"
+#include "lib/lights.glsl"
+#include "shared/photon_scatter.h"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(binding = 0, rgba32f) uniform image2D uAccumulation;
+
+layout(location = 0) uniform uvec4 uParams;   // x = sample index, y = bounces, z = seed
+layout(location = 1) uniform float uEpsilonM; // ray offset off the surface a ray leaves
+
+const uint kRouletteDepth = 3u;      // vertices traced with certainty before roulette starts
+const float kMaxSurvival = 0.95;     // even bright paths end eventually
+
+bool isOccluded(vec3 origin, vec3 dir, float distanceM) {
+    RayHit hit;
+    return traceRay(origin, dir, distanceM, hit);
+}
+
+vec3 traceCameraPath(vec2 pixel, inout uint rng) {
+    vec2 ndc = pixel * frame.imageSize.zw * 2.0 - 1.0;
+    vec4 nearW = frame.worldFromClip * vec4(ndc, -1.0, 1.0);
+    vec4 farW = frame.worldFromClip * vec4(ndc, 1.0, 1.0);
+    vec3 origin = frame.cameraPosition.xyz;
+    vec3 dir = normalize(farW.xyz / farW.w - nearW.xyz / nearW.w);
+    vec3 radiance = vec3(0.0);
+    vec3 throughput = vec3(1.0);
+    uint bounces = uParams.y;
+    for (uint vertex = 1u; ; ++vertex) {
+        RayHit hit;
+        if (!traceRay(origin, dir, 3.0e38, hit)) {
+            if (vertex == 1u) radiance += frame.background.rgb; // the background lights nothing
+            break;
+        }
+        vec3 position = origin + dir * hit.t;
+        vec3 geometric = computeHitNormal(hit);
+        bool frontFace = dot(geometric, dir) < 0.0;
+        vec3 n = frontFace ? geometric : -geometric;
+        GpuMaterial m = materials[triangles[hit.triangle].w];
+        if (vertex == 1u) radiance += m.emission.rgb; // emission is seen, it lights nothing
+        vec3 wo = -dir;
+        vec3 offsetOrigin = position + n * uEpsilonM;
+        for (uint i = 0u; i < frame.counts.x; ++i) {
+            LightSample s = sampleLight(lights[i], position);
+            float cosTheta = dot(n, s.wi);
+            if (cosTheta <= 0.0 || all(equal(s.irradiance, vec3(0.0)))) continue;
+            if (isOccluded(offsetOrigin, s.wi, s.distanceM - 2.0 * uEpsilonM)) continue;
+            radiance += throughput * evaluateBrdf(m.diffuse.rgb, m.specular, n, s.wi, wo) *
+                        s.irradiance * cosTheta;
+        }
+        if (vertex > bounces) break;
+        float total = computeMean(m.diffuse.rgb) + computeMean(m.specular.rgb) +
+                      computeMean(m.transmissive.rgb);
+        if (total <= 0.0) break;
+        uint event = scatterSurface(dir, throughput, n, m.diffuse.rgb, m.specular, m.transmissive,
+                                    frontFace, rng, kRngPcg, 1.0 / total);
+        if (event == kScatterAbsorbed) break;
+        if (vertex >= kRouletteDepth) {
+            float survive = min(max(throughput.r, max(throughput.g, throughput.b)), kMaxSurvival);
+            if (nextRandom(rng, kRngPcg) >= survive) break;
+            throughput /= survive;
+        }
+        // Leave on the side the new direction points to (refraction crosses the surface).
+        origin = position + (dot(dir, n) >= 0.0 ? n : -n) * uEpsilonM;
+    }
+    return radiance;
+}
+
+void main() {
+    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+    ivec2 size = imageSize(uAccumulation);
+    if (any(greaterThanEqual(pixel, size))) return;
+    uint pixelIndex = uint(pixel.y * size.x + pixel.x);
+    uint rng = seedRandom(pixelIndex, uParams.x, uParams.z);
+    // Box filter: a uniformly jittered position inside the pixel.
+    vec2 jitter = vec2(nextRandom(rng, kRngPcg), nextRandom(rng, kRngPcg));
+    vec3 radiance = traceCameraPath(vec2(pixel) + jitter, rng);
+    vec4 sum = imageLoad(uAccumulation, pixel);
+    imageStore(uAccumulation, pixel, sum + vec4(radiance, 1.0));
+}
