@@ -23,6 +23,21 @@ std::vector<gpu::GpuInstance> buildInstances(const Scene& scene, const BvhScene&
     return instances;
 }
 
+double computeSceneSurfaceArea(const Scene& scene) {
+    double area = 0.0;
+    for (const Instance& inst : scene.instances) {
+        const Mesh& mesh = scene.meshes[inst.meshIndex];
+        for (const glm::uvec3& t : mesh.triangles) {
+            const auto toWorld = [&](uint32_t i) {
+                return glm::vec3(inst.worldFromObject * glm::vec4(mesh.positions[i], 1.0f));
+            };
+            const glm::vec3 p0 = toWorld(t.x);
+            area += 0.5 * double(glm::length(glm::cross(toWorld(t.y) - p0, toWorld(t.z) - p0)));
+        }
+    }
+    return area;
+}
+
 } // namespace
 
 GpuScene::GpuScene(const Scene& scene, int lightResolution) : mLightResolution(lightResolution) {
@@ -49,6 +64,7 @@ GpuScene::GpuScene(const Scene& scene, int lightResolution) : mLightResolution(l
     mBlasOrder = gl::Buffer::fromSpan<uint32_t>("bvh triangle order", mBvh.blasTriangleOrder);
     mInstances = buildInstances(scene, mBvh);
     mInstanceBuffer = gl::Buffer::fromSpan<gpu::GpuInstance>("scene instances", mInstances);
+    mSurfaceAreaM2 = computeSceneSurfaceArea(scene);
     uploadTopLevel();
     uploadLights(scene);
 }
@@ -76,6 +92,7 @@ void GpuScene::updateDynamic(const Scene& scene) {
     uploadTopLevel();
     mInstances = buildInstances(scene, mBvh);
     mInstanceBuffer.upload<gpu::GpuInstance>(mInstances);
+    mSurfaceAreaM2 = computeSceneSurfaceArea(scene); // scaled instances change it
     uploadLights(scene);
 }
 

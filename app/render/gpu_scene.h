@@ -29,6 +29,8 @@ public:
     uint32_t getLightCount() const { return mLightCount; }
     int getLightResolution() const { return mLightResolution; }
     const Aabb& getBounds() const { return mBounds; }
+    // Total area of every instance's triangles in world space (m^2), for derived splat radii.
+    double getSurfaceArea() const { return mSurfaceAreaM2; }
     size_t getGpuBytes() const;
     const BvhScene& getBvh() const { return mBvh; }
     // A distance rays step off the surface they leave: relative to the scene's size, so float
@@ -44,6 +46,7 @@ private:
     uint32_t mLightCount = 0;
     int mLightResolution = 0;
     Aabb mBounds;
+    double mSurfaceAreaM2 = 0.0;
     gl::Buffer mPositions;
     gl::Buffer mTriangles;
     gl::Buffer mInstanceBuffer;

@@ -3,6 +3,7 @@
 
 #include "gl/gl.h"
 #include "gl/state.h"
+#include "render/gpu_scene.h"
 #include "render/shader_root.h"
 
 #include <shared/photon_data.h>
@@ -28,30 +29,15 @@ constexpr float kMaxRadiusFactor = 2.0f;
 
 } // namespace
 
-double computeSurfaceArea(const Scene& scene) {
-    double area = 0.0;
-    for (const Instance& inst : scene.instances) {
-        const Mesh& mesh = scene.meshes[inst.meshIndex];
-        for (const glm::uvec3& t : mesh.triangles) {
-            const glm::vec3 p0 = glm::vec3(inst.worldFromObject * glm::vec4(mesh.positions[t.x], 1.0f));
-            const glm::vec3 p1 = glm::vec3(inst.worldFromObject * glm::vec4(mesh.positions[t.y], 1.0f));
-            const glm::vec3 p2 = glm::vec3(inst.worldFromObject * glm::vec4(mesh.positions[t.z], 1.0f));
-            area += 0.5 * double(glm::length(glm::cross(p1 - p0, p2 - p0)));
-        }
-    }
-    return area;
-}
-
-SplatRadii computeSplatRadii(const Scene& scene, const Settings& settings) {
+SplatRadii computeSplatRadii(double surfaceAreaM2, float diagonalM, const Settings& settings) {
     const double photons = std::max(1, settings.getInt("photons"));
-    const auto r0 = float(std::sqrt(kSplatOverlap * computeSurfaceArea(scene) /
-                                    (glm::pi<double>() * photons)));
+    const auto r0 =
+        float(std::sqrt(kSplatOverlap * surfaceAreaM2 / (glm::pi<double>() * photons)));
     SplatRadii r;
     r.radiusMinM = settings.isSet("radius_min") ? settings.getFloat("radius_min") : kMinRadiusFactor * r0;
     r.radiusMaxM = settings.isSet("radius_max") ? settings.getFloat("radius_max") : kMaxRadiusFactor * r0;
     r.distMinM = settings.isSet("dist_min") ? settings.getFloat("dist_min") : 0.0f;
-    r.distMaxM = settings.isSet("dist_max") ? settings.getFloat("dist_max")
-                                            : glm::length(scene.computeWorldBounds().getExtent());
+    r.distMaxM = settings.isSet("dist_max") ? settings.getFloat("dist_max") : diagonalM;
     const float scale = settings.getFloat("radius_scale");
     r.radiusMinM *= scale;
     r.radiusMaxM *= scale;
@@ -88,7 +74,9 @@ void SplatPass::execute(const FrameInputs& inputs) {
     mBuffers.bind();
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
     mViewer.bindTextures(gpu::kUnitGBufferFirst);
-    const SplatRadii r = computeSplatRadii(inputs.model, inputs.settings);
+    const SplatRadii r =
+        computeSplatRadii(inputs.scene.getSurfaceArea(),
+                          glm::length(inputs.scene.getBounds().getExtent()), inputs.settings);
     glUniform4f(kLocationRadius, r.radiusMinM, r.radiusMaxM, r.distMinM, r.distMaxM);
     glUniform4f(kLocationShape, static_cast<float>(inputs.settings.get("radius_mode")),
                 cullInRasteriser ? 0.0f : 1.0f, inputs.settings.getFloat("squash"), 0.0f);
