@@ -3,6 +3,7 @@
 // not in timed tests.
 #include "cli/bench_command.h"
 
+#include "cli/bench_sweep.h"
 #include "cli/cli_common.h"
 #include "core/strings.h"
 #include "gl/context.h"
@@ -19,7 +20,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <map>
 #include <optional>
 #include <sstream>
 #include <utility>
@@ -79,12 +79,9 @@ struct PassStats {
     double maxMs = 0.0;
 };
 
-PassStats computeStats(std::string name, std::vector<double> samplesMs) {
-    std::sort(samplesMs.begin(), samplesMs.end());
-    const size_t n = samplesMs.size();
-    const double median =
-        n % 2 == 1 ? samplesMs[n / 2] : 0.5 * (samplesMs[n / 2 - 1] + samplesMs[n / 2]);
-    return {std::move(name), median, samplesMs.front(), samplesMs.back()};
+PassStats computeStats(std::string name, const std::vector<double>& samplesMs) {
+    const auto [minIt, maxIt] = std::minmax_element(samplesMs.begin(), samplesMs.end());
+    return {std::move(name), computeMedian(samplesMs), *minIt, *maxIt};
 }
 
 // Peak resident set size (VmHWM) in MiB; empty where /proc is not there to ask.
@@ -255,7 +252,25 @@ void addBenchCommand(CLI::App& app, BenchOptions& options) {
         "preset settings the settings table does not know yet are skipped and listed.\n"
         "--json fields: scene, width, height, frames, warmup, renderer, timing_method, passes "
         "[{name, median_ms, min_ms, max_ms}], total_median_ms, peak_rss_mib, gl_bytes, settings, "
-        "and preset {name, applied, skipped} with --preset.");
+        "and preset {name, applied, skipped} with --preset.\n"
+        "Sweep mode (--sweep, --reference, --csv): renders every configuration of the sweeps' "
+        "cartesian product (values checked by the settings table; the render size must be the "
+        "reference's), then runs the path tracer with the same bounces to --reference-spp-max "
+        "samples, timed in the same run. The CSV has one row per configuration (kind=ispm: the "
+        "settings, median ms per pass, total_ms, relmse_total, relmse_indirect, ssim, photon "
+        "counts) and one per 1, 2, 4, ... spp (kind=reference: cumulative total_ms). "
+        "relmse_indirect compares ispm's indirect AOV with REF minus ispm's own direct AOV (both "
+        "shade direct light alike up to shadow-map edges), or with REF minus --reference-direct. "
+        "Prints the equal-error speedup per configuration; tools/plot_bench.py draws the CSV.");
+    cmd->add_option("--sweep", options.sweeps,
+                    "sweep a setting: name=v1,v2,... (repeatable; the product is rendered)");
+    cmd->add_option("--reference", options.referencePath,
+                    "sweep: converged reference image (.pfm/.exr, linear, same size)");
+    cmd->add_option("--reference-direct", options.referenceDirectPath,
+                    "sweep: bounces=0 reference (.pfm/.exr) for relmse_indirect");
+    cmd->add_option("--csv", options.csvPath, "sweep: output CSV");
+    cmd->add_option("--reference-spp-max", options.referenceSppMax,
+                    "sweep: last sample count of the path tracer's curve (default 64)");
 }
 
 int runBench(const BenchOptions& options) {
@@ -273,6 +288,7 @@ int runBench(const BenchOptions& options) {
     Settings settings = scene.settings;
     settings.merge(report.preset.settings);
     settings.merge(commandLine);
+    if (isSweepRequested(options)) return runBenchSweep(options, report.scenePath, scene, settings);
     report.settings = describeOverrides(settings);
 
     auto context = gl::createHeadlessContext();
@@ -283,20 +299,10 @@ int runBench(const BenchOptions& options) {
     for (int i = 0; i < options.warmup; ++i)
         runner.renderFrame();
 
-    // Passes keep the order of their first appearance, so passes added later need no change here.
-    std::vector<std::string> passOrder;
-    std::map<std::string, std::vector<double>> samplesMs;
-    std::vector<double> totalsMs;
+    FrameTimes times;
     for (int i = 0; i < options.frames; ++i) {
         runner.renderFrame();
-        double frameMs = 0.0;
-        for (const PassTiming& t : runner.getLastTimings()) {
-            auto [it, inserted] = samplesMs.try_emplace(t.name);
-            if (inserted) passOrder.push_back(t.name);
-            it->second.push_back(t.ms);
-            frameMs += t.ms;
-        }
-        totalsMs.push_back(frameMs);
+        addFrameTimes(runner, times);
     }
 
     report.width = runner.getWidth();
@@ -306,10 +312,10 @@ int runBench(const BenchOptions& options) {
     report.renderer = info.renderer;
     report.contextPath = gl::getContextPathName(info.path);
     report.timingMethod = gl::getTimingMethodName(runner.getTimingMethod());
-    for (const std::string& name : passOrder) {
-        report.passes.push_back(computeStats(name, samplesMs[name]));
+    for (const std::string& name : times.passOrder) {
+        report.passes.push_back(computeStats(name, times.samplesMs[name]));
     }
-    report.total = computeStats("total", totalsMs);
+    report.total = computeStats("total", times.totalsMs);
     report.peakRssMib = readPeakRssMib();
     report.glBytes = runner.getGpuBytes();
     report.photons = readReportedPhotonCounts(runner);

@@ -1,5 +1,6 @@
 // `ispm bench`: time every pass over many frames after a warm-up and report medians, peak memory
-// and the settings used, as a table or as one JSON object for scripts and plots.
+// and the settings used, as a table or as one JSON object for scripts and plots. With --sweep it
+// measures speed against accuracy instead (bench_sweep.h).
 #pragma once
 
 #include <optional>
@@ -23,6 +24,13 @@ struct BenchOptions {
     std::vector<std::string> sets;
     bool json = false;
     std::string preset; // "" or "thesis"
+    // Sweep mode (bench_sweep.h): any of these turns it on.
+    std::vector<std::string> sweeps; // "name=v1,v2,..." each
+    std::string referencePath;       // linear .pfm/.exr the configurations are measured against
+    std::string referenceDirectPath; // optional bounces=0 reference: isolates indirect light
+    std::string csvPath;
+    // The path tracer's curve ends here; 64 spp at 256^2 takes seconds on llvmpipe.
+    int referenceSppMax = 64;
 };
 
 void addBenchCommand(CLI::App& app, BenchOptions& options);

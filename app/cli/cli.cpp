@@ -4,6 +4,7 @@
 
 #include "cli/bench_command.h"
 #include "cli/render_command.h"
+#include "cli/view_command.h"
 #include "core/strings.h"
 #include "gl/context.h"
 #include "gl/timer.h"
@@ -12,6 +13,7 @@
 #include "image/metrics.h"
 #include "scene/input_error.h"
 #include "scene/scene_loader.h"
+#include "scene/settings.h"
 
 #include <CLI/CLI.hpp>
 
@@ -90,6 +92,8 @@ int runCli(int argc, char** argv) {
     addRenderCommand(app, render);
     BenchOptions bench;
     addBenchCommand(app, bench);
+    ViewOptions view;
+    addViewCommand(app, view);
 
     std::string exportScene;
     std::string exportOut;
@@ -101,6 +105,9 @@ int runCli(int argc, char** argv) {
 
     CLI::App* infoCmd = app.add_subcommand(
         "info", "Print the OpenGL context: path taken, vendor, renderer, version, limits");
+
+    CLI::App* settingsCmd = app.add_subcommand(
+        "settings", "Print the settings table (name, type, default, range, unit, meaning) as Markdown");
 
     std::string compareA;
     std::string compareB;
@@ -120,8 +127,8 @@ int runCli(int argc, char** argv) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
         if (argc > 1 && app.get_subcommands().empty() && argv[1][0] != '-') {
-            std::fprintf(stderr, "ispm: unknown subcommand '%s' (expected render, bench, export, info "
-                                 "or compare; see ispm --help)\n", argv[1]);
+            std::fprintf(stderr, "ispm: unknown subcommand '%s' (expected render, view, bench, export, "
+                                 "info, settings or compare; see ispm --help)\n", argv[1]);
         } else {
             std::fprintf(stderr, "ispm: %s\n", e.what());
         }
@@ -131,6 +138,7 @@ int runCli(int argc, char** argv) {
     try {
         if (app.got_subcommand("render")) return runRender(render);
         if (app.got_subcommand("bench")) return runBench(bench);
+        if (app.got_subcommand("view")) return runView(view);
         if (app.got_subcommand(exportCmd)) {
             const Scene scene = loadScene(exportScene);
             exportObj(scene, exportOut);
@@ -138,6 +146,10 @@ int runCli(int argc, char** argv) {
             return 0;
         }
         if (app.got_subcommand(infoCmd)) return runInfo();
+        if (app.got_subcommand(settingsCmd)) {
+            std::fputs(formatSettingsMarkdown().c_str(), stdout);
+            return 0;
+        }
         if (app.got_subcommand(compareCmd)) return runCompare(compareA, compareB, maxRelMse);
     } catch (const InputError& e) {
         std::fprintf(stderr, "ispm: %s\n", e.what());

@@ -42,9 +42,28 @@ FrameRunner::FrameRunner(const Scene& scene, const Settings& settings, gl::Timin
     mCompose = std::make_unique<ComposePass>(mGBuffer->getGBuffer(), mDirect->getOutput(),
                                              mSplat->getOutput());
     mTonemap = std::make_unique<TonemapPass>(mCompose->getOutput());
+    resizePasses();
+}
+
+void FrameRunner::resizePasses() {
     for (Pass* pass : std::initializer_list<Pass*>{mGBuffer.get(), mLightViews.get(), mSplat.get(),
                                                    mDirect.get(), mCompose.get(), mTonemap.get()}) {
         pass->resize(mWidth, mHeight);
+    }
+}
+
+void FrameRunner::setSettings(const Settings& settings) {
+    const int lightResolution = settings.getInt("shadow_map_size");
+    mSettings = settings;
+    if (lightResolution != mGpuScene.getLightResolution()) {
+        // The light cameras' resolution is baked into the uploaded scene; the light G-buffer
+        // follows it on its next execute.
+        mGpuScene = GpuScene(mScene, lightResolution);
+    }
+    if (settings.getInt("width") != mWidth || settings.getInt("height") != mHeight) {
+        mWidth = settings.getInt("width");
+        mHeight = settings.getInt("height");
+        resizePasses();
     }
 }
 

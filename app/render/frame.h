@@ -33,6 +33,15 @@ public:
     FrameRunner(const Scene& scene, const Settings& settings, gl::TimingMethod timing);
 
     void renderFrame();
+    // Viewer edits (both cheap when nothing relevant changed). setSettings resizes the passes when
+    // width/height change and re-uploads the scene when shadow_map_size changes; every other
+    // setting is read by the passes each frame. updateScene re-uploads instance transforms and
+    // lights after the caller edited the Scene this runner was built on; rebuildScene uploads it
+    // anew (BVH included) when lights or instances were added or removed.
+    void setSettings(const Settings& settings);
+    void updateScene() { mGpuScene.updateDynamic(mScene); }
+    void rebuildScene() { mGpuScene = GpuScene(mScene, mGpuScene.getLightResolution()); }
+    const Settings& getSettings() const { return mSettings; }
     const std::vector<PassTiming>& getLastTimings() const { return mTimings; }
     gl::TimingMethod getTimingMethod() const { return mTimer.getMethod(); }
 
@@ -55,6 +64,7 @@ public:
     size_t getGpuBytes() const;
 
 private:
+    void resizePasses();
     void updateFrameConstants();
     bool hasIndirect() const;
     void runPass(Pass& pass, const FrameInputs& inputs);

@@ -46,15 +46,16 @@ const std::vector<SettingDesc>& table() {
          "(path_density, McGuire and Luebke 2009)",
          {"travel", "path_density"}},
         {"radius_min", SettingType::Float, 0, 1e-6, 1e6, "m",
-         "splat radius at dist_min or less; derived from the scene size and photon density", {},
+         "splat radius at dist_min or less; derived: r0 / 2, where `photons` discs of radius r0 "
+         "cover the scene's surface area 32 times", {},
          true},
         {"radius_max", SettingType::Float, 0, 1e-6, 1e6, "m",
-         "splat radius at dist_max or more; derived from the scene size and photon density", {},
+         "splat radius at dist_max or more; derived: 2 r0", {},
          true},
         {"dist_min", SettingType::Float, 0, 0, 1e9, "m",
-         "travel distance where the radius starts to grow; derived (0)", {}, true},
+         "travel distance where the radius starts to grow; derived: 0", {}, true},
         {"dist_max", SettingType::Float, 0, 1e-6, 1e9, "m",
-         "travel distance where the radius reaches radius_max; derived from the scene size", {},
+         "travel distance where the radius reaches radius_max; derived: the scene's diagonal", {},
          true},
         {"radius_scale", SettingType::Float, 1, 1e-3, 1e3, "",
          "multiplies every splat radius (derived or set)", {}},
@@ -79,6 +80,47 @@ const SettingDesc* findSetting(std::string_view name) {
         if (d.name == name) return &d;
     }
     return nullptr;
+}
+
+namespace {
+
+// Whole numbers in full (2147483647, not 2.14748365e+09), others as strCat writes them.
+std::string formatNumber(double value) {
+    constexpr double kLargestExact = 9007199254740992.0; // 2^53
+    if (value == std::floor(value) && std::abs(value) < kLargestExact) {
+        return std::to_string(static_cast<long long>(value));
+    }
+    return strCat(value);
+}
+
+std::string describeType(const SettingDesc& d) {
+    switch (d.type) {
+    case SettingType::Int: return "int";
+    case SettingType::Float: return "float";
+    case SettingType::Enum: return "enum";
+    }
+    return "";
+}
+
+} // namespace
+
+std::string formatSettingsMarkdown() {
+    std::string out = "| name | type | default | range | unit | meaning |\n";
+    out += "|---|---|---|---|---|---|\n";
+    for (const SettingDesc& d : table()) {
+        std::string defaultText;
+        std::string range;
+        if (d.type == SettingType::Enum) {
+            defaultText = strCat("`", d.choices.at(static_cast<size_t>(d.defaultValue)), "`");
+            for (std::string_view c : d.choices) range += (range.empty() ? "" : ", ") + strCat("`", c, "`");
+        } else {
+            defaultText = d.derived ? "derived" : formatNumber(d.defaultValue);
+            range = strCat(formatNumber(d.minValue), " to ", formatNumber(d.maxValue));
+        }
+        out += strCat("| `", d.name, "` | ", describeType(d), " | ", defaultText, " | ", range, " | ",
+                      d.unit, " | ", d.help, " |\n");
+    }
+    return out;
 }
 
 static const SettingDesc& requireSetting(std::string_view name, const std::string& where) {

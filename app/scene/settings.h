@@ -29,6 +29,10 @@ struct SettingDesc {
 std::span<const SettingDesc> getSettingTable();
 const SettingDesc* findSetting(std::string_view name);
 
+// The table as Markdown (name, type, default, range, unit, meaning): what README.md and
+// docs/scene-format.md show between their settings-table markers, and `ispm settings` prints.
+std::string formatSettingsMarkdown();
+
 // Values that differ from the table's defaults. Values are checked against the table on entry;
 // a bad name or value throws InputError with `where` as context (a file and JSON path, or a flag).
 class Settings {

@@ -135,7 +135,7 @@ TEST_F(CliTest, CompareReportsMetricsAndThreshold) {
 }
 
 TEST_F(CliTest, HelpOnEverySubcommand) {
-    for (const char* sub : {"render", "export", "info", "compare"}) {
+    for (const char* sub : {"render", "export", "info", "compare", "bench", "view", "settings"}) {
         const RunResult r = run(std::string(sub) + " --help");
         EXPECT_EQ(r.exitCode, 0) << sub;
         EXPECT_NE(r.output.find("Usage"), std::string::npos) << sub;

@@ -1,0 +1,131 @@
+// DebugViewDrawer: picks the texture and the value transform of a view, then one triangle.
+#include "viewer/debug_view.h"
+
+#include "gl/gl.h"
+#include "gl/state.h"
+#include "render/gbuffer.h"
+#include "render/shader_root.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ispm {
+namespace {
+
+// Uniform locations of shaders/viewer/blit.frag.
+constexpr GLint kLocationRegion = 0;
+constexpr GLint kLocationTransform = 1;
+constexpr GLuint kUnitSource = 0;
+constexpr float kDisplayGamma = 2.2f; // linear views are encoded like the default tone map
+constexpr int kFullscreenVertices = 3;
+
+gl::Program buildBlitProgram(bool isArray) {
+    std::vector<std::string> defines;
+    if (isArray) defines.emplace_back("TEXTURE_ARRAY");
+    return gl::Program::build(getShaderRoot(),
+                              {.label = isArray ? "viewer blit array" : "viewer blit",
+                               .stages = {{gl::ShaderStage::Vertex, "lib/fullscreen.vert"},
+                                          {gl::ShaderStage::Fragment, "viewer/blit.frag"}},
+                               .defines = defines});
+}
+
+// Scale and bias that bring a channel's typical values into [0, 1].
+void getChannelTransform(std::string_view channel, float& scale, float& bias) {
+    if (channel == "normal") {
+        scale = 0.5f; // [-1, 1] -> [0, 1]
+        bias = 0.5f;
+    } else {
+        scale = 1.0f;
+        bias = 0.0f;
+    }
+}
+
+const gl::Texture& selectTexture(const FrameRunner& runner, const DebugView& view) {
+    switch (view.source) {
+    case DebugView::Source::ViewerGBuffer:
+        return runner.getViewerGBuffer().getChannel(view.channel);
+    case DebugView::Source::LightGBuffer:
+        return runner.getLightGBuffer().getChannel(view.channel);
+    case DebugView::Source::Aov:
+        break;
+    }
+    return runner.getAov(view.aov);
+}
+
+} // namespace
+
+std::vector<DebugView> buildDebugViews() {
+    std::vector<DebugView> views = {{"display", DebugView::Source::Aov, Aov::Display, 0},
+                                    {"direct", DebugView::Source::Aov, Aov::Direct, 0},
+                                    {"indirect", DebugView::Source::Aov, Aov::Indirect, 0},
+                                    {"total", DebugView::Source::Aov, Aov::Total, 0}};
+    const auto channels = getGBufferChannels();
+    for (size_t i = 0; i < channels.size(); ++i) {
+        views.push_back({"gbuffer " + std::string(channels[i].name),
+                         DebugView::Source::ViewerGBuffer, Aov::Display, i});
+    }
+    for (size_t i = 0; i < channels.size(); ++i) {
+        views.push_back({"light gbuffer " + std::string(channels[i].name),
+                         DebugView::Source::LightGBuffer, Aov::Display, i});
+    }
+    return views;
+}
+
+int findDebugView(const std::vector<DebugView>& views, const std::string& name) {
+    for (size_t i = 0; i < views.size(); ++i) {
+        if (views[i].name == name) return static_cast<int>(i);
+    }
+    return -1;
+}
+
+DebugViewDrawer::DebugViewDrawer()
+    : mProgram2D(buildBlitProgram(false)), mProgramArray(buildBlitProgram(true)),
+      mVertexArray("viewer blit vao"),
+      mSampler("viewer blit sampler", gl::Filter::Nearest, gl::Wrap::ClampToEdge) {}
+
+void DebugViewDrawer::draw(const FrameRunner& runner, const DebugView& view,
+                           const ViewTransform& transform, int width, int height) const {
+    gl::applyState({});
+    gl::bindDefaultFramebuffer(width, height);
+    const gl::Texture& texture = selectTexture(runner, view);
+    float scale = 1.0f;
+    float bias = 0.0f;
+    float inverseGamma = 0.0f;
+    float layer = 0.0f;
+    int regionWidth = width;
+    int regionHeight = height;
+    switch (view.source) {
+    case DebugView::Source::Aov:
+        if (view.aov != Aov::Display) {
+            scale = std::exp2(transform.exposureStops);
+            inverseGamma = 1.0f / kDisplayGamma;
+        }
+        break;
+    case DebugView::Source::ViewerGBuffer:
+        getChannelTransform(getGBufferChannels()[view.channel].name, scale, bias);
+        scale *= std::exp2(transform.exposureStops);
+        break;
+    case DebugView::Source::LightGBuffer: {
+        getChannelTransform(getGBufferChannels()[view.channel].name, scale, bias);
+        scale *= std::exp2(transform.exposureStops);
+        layer = static_cast<float>(std::clamp(transform.lightLayer, 0, texture.getLayers() - 1));
+        // Light cameras are square: keep their aspect in the region's lower-left square.
+        regionWidth = regionHeight = std::min(width, height);
+        glViewport(0, 0, regionWidth, regionHeight);
+        break;
+    }
+    }
+    const gl::Program& program = texture.isArray() ? mProgramArray : mProgram2D;
+    program.use();
+    glUniform4f(kLocationRegion, 0.0f, 0.0f, static_cast<float>(regionWidth),
+                static_cast<float>(regionHeight));
+    glUniform4f(kLocationTransform, scale, bias, inverseGamma, layer);
+    texture.bindUnit(kUnitSource);
+    mSampler.bindUnit(kUnitSource);
+    mVertexArray.bind();
+    gl::drawArrays(gl::Primitive::Triangles, 0, kFullscreenVertices);
+    // Passes bind their own samplers or none: leave unit 0 as they expect it.
+    glBindSampler(kUnitSource, 0);
+}
+
+} // namespace ispm

@@ -1,0 +1,149 @@
+// Parsing and replaying viewer scripts.
+#include "viewer/input_script.h"
+
+#include "core/strings.h"
+#include "scene/input_error.h"
+
+#include <cctype>
+#include <fstream>
+#include <sstream>
+
+namespace ispm {
+namespace {
+
+constexpr const char* kKeys = "WASDQE";
+
+int parseCount(std::istringstream& in, const std::string& where, const char* what) {
+    long long value = -1;
+    if (!(in >> value) || value < 0 || value > 1000000) {
+        throw InputError(strCat(where, ": expected ", what, " (a count from 0 to 1000000)"));
+    }
+    return static_cast<int>(value);
+}
+
+float parseFloat(std::istringstream& in, const std::string& where, const char* what) {
+    float value = 0.0f;
+    if (!(in >> value)) throw InputError(strCat(where, ": expected ", what, " (a number)"));
+    return value;
+}
+
+std::string parseWord(std::istringstream& in, const std::string& where, const char* what) {
+    std::string word;
+    if (!(in >> word)) throw InputError(strCat(where, ": expected ", what));
+    return word;
+}
+
+ScriptCommand parseLine(const std::string& command, std::istringstream& in,
+                        const std::string& where) {
+    using Kind = ScriptCommand::Kind;
+    ScriptCommand c;
+    c.where = where;
+    if (command == "key") {
+        c.kind = Kind::Key;
+        c.text = parseWord(in, where, "a key (W A S D Q E)");
+        for (char& ch : c.text)
+            ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+        if (c.text.size() != 1 || std::string(kKeys).find(c.text[0]) == std::string::npos) {
+            throw InputError(
+                strCat(where, ": expected a key among W A S D Q E, got '", c.text, "'"));
+        }
+        c.frames = parseCount(in, where, "the frames to hold the key");
+    } else if (command == "mouse_drag") {
+        c.kind = Kind::MouseDrag;
+        c.x = parseFloat(in, where, "the drag's dx in pixels");
+        c.y = parseFloat(in, where, "the drag's dy in pixels");
+        c.frames = 1;
+    } else if (command == "wheel") {
+        c.kind = Kind::Wheel;
+        c.x = parseFloat(in, where, "the scroll steps");
+    } else if (command == "set") {
+        c.kind = Kind::Set;
+        c.text = parseWord(in, where, "name=value");
+    } else if (command == "view") {
+        c.kind = Kind::View;
+        std::getline(in >> std::ws, c.text);
+        if (c.text.empty()) throw InputError(strCat(where, ": expected a view name"));
+    } else if (command == "points") {
+        c.kind = Kind::Points;
+        c.text = parseWord(in, where, "none, bounce, result or both");
+        if (c.text != "none" && c.text != "bounce" && c.text != "result" && c.text != "both") {
+            throw InputError(
+                strCat(where, ": expected none, bounce, result or both, got '", c.text, "'"));
+        }
+    } else if (command == "reset_camera") {
+        c.kind = Kind::ResetCamera;
+    } else if (command == "write_aov") {
+        c.kind = Kind::WriteAov;
+        c.text = parseWord(in, where, "an AOV (direct, indirect, total or display)");
+        c.path = parseWord(in, where, "an output file");
+    } else if (command == "screenshot") {
+        c.kind = Kind::Screenshot;
+        c.path = parseWord(in, where, "an output .png file");
+    } else if (command == "save_settings") {
+        c.kind = Kind::SaveSettings;
+        c.path = parseWord(in, where, "an output .json file");
+    } else if (command == "frames") {
+        c.kind = Kind::Frames;
+        c.frames = parseCount(in, where, "the frames to wait");
+    } else {
+        throw InputError(strCat(where, ": unknown command '", command,
+                                "' (expected key, mouse_drag, wheel, set, view, reset_camera, "
+                                "write_aov, screenshot, save_settings or frames)"));
+    }
+    std::string extra;
+    if (c.kind != Kind::View && in >> extra) {
+        throw InputError(strCat(where, ": unexpected '", extra, "' after the command"));
+    }
+    return c;
+}
+
+bool isOutput(const ScriptCommand& c) {
+    using Kind = ScriptCommand::Kind;
+    return c.kind == Kind::WriteAov || c.kind == Kind::Screenshot || c.kind == Kind::SaveSettings;
+}
+
+} // namespace
+
+std::vector<ScriptCommand> parseInputScript(const std::string& text,
+                                            const std::string& sourceName) {
+    std::vector<ScriptCommand> commands;
+    std::istringstream lines(text);
+    std::string line;
+    for (int number = 1; std::getline(lines, line); ++number) {
+        std::istringstream in(line);
+        std::string command;
+        if (!(in >> command) || command[0] == '#') continue;
+        commands.push_back(parseLine(command, in, strCat(sourceName, ":", number)));
+    }
+    return commands;
+}
+
+std::vector<ScriptCommand> loadInputScript(const std::string& path) {
+    std::ifstream file(path);
+    if (!file) throw InputError(strCat(path, ": cannot open the input script"));
+    std::stringstream text;
+    text << file.rdbuf();
+    return parseInputScript(text.str(), path);
+}
+
+std::vector<const ScriptCommand*> ScriptPlayer::advanceFrame() {
+    std::vector<const ScriptCommand*> active;
+    while (mHeldFrames == 0 && mNext < mCommands.size()) {
+        const ScriptCommand& c = mCommands[mNext];
+        if (!active.empty() && isOutput(*active.back()) && !isOutput(c)) break;
+        ++mNext;
+        if (c.frames > 0) {
+            mHeld = &c;
+            mHeldFrames = c.frames;
+        } else {
+            active.push_back(&c);
+        }
+    }
+    if (mHeldFrames > 0) {
+        active.push_back(mHeld);
+        --mHeldFrames;
+    }
+    return active;
+}
+
+} // namespace ispm

@@ -1,0 +1,69 @@
+// Scripted viewer input (`ispm view --script FILE`): one command a line, replayed frame by frame
+// through the same paths as the keyboard, mouse and panels, so tests drive the real viewer.
+//   key K N          hold key K (W A S D Q E) for the next N frames
+//   mouse_drag DX DY drag with the left button by DX, DY window pixels during the next frame
+//   wheel N          scroll N steps (camera speed)
+//   set NAME=VALUE   change a setting as the settings panel does
+//   view NAME        choose the debug view (as in the view menu: display, total, gbuffer normal
+//   ...) reset_camera     back to the scene camera write_aov AOV F  write the current frame's AOV
+//   (direct, indirect, total, display) to F screenshot F     write the window (UI included) as PNG
+//   to F save_settings F  write the current settings as a scene `render` block (the panel's "save")
+//   frames N         let N frames pass
+// Blank lines and lines starting with '#' are ignored.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace ispm {
+
+struct ScriptCommand {
+    enum class Kind {
+        Key,
+        MouseDrag,
+        Wheel,
+        Set,
+        View,
+        Points,
+        ResetCamera,
+        WriteAov,
+        Screenshot,
+        SaveSettings,
+        Frames
+    };
+    Kind kind = Kind::Frames;
+    std::string text;  // key, setting assignment, view, points choice or AOV name
+    std::string path;  // write_aov, screenshot, save_settings
+    float x = 0.0f;    // drag dx, wheel steps
+    float y = 0.0f;    // drag dy
+    int frames = 0;    // frames the command lasts; 0 for instantaneous commands
+    std::string where; // "file:line" for messages
+};
+
+// Throws InputError naming file and line for an unknown command or a malformed argument.
+std::vector<ScriptCommand> parseInputScript(const std::string& text, const std::string& sourceName);
+std::vector<ScriptCommand> loadInputScript(const std::string& path);
+
+// Hands out the commands frame by frame. A frame takes the next commands up to the first that
+// lasts frames (key, mouse_drag, frames: held for that many frames) or through a run of outputs
+// (write_aov, screenshot, save_settings): commands before an output shape the frame it writes,
+// commands after it start the next frame.
+class ScriptPlayer {
+  public:
+    ScriptPlayer() = default;
+    explicit ScriptPlayer(std::vector<ScriptCommand> commands) : mCommands(std::move(commands)) {}
+
+    // The commands active during the next frame (instantaneous ones once, lasting ones every
+    // frame they hold); advances by one frame.
+    std::vector<const ScriptCommand*> advanceFrame();
+    bool isFinished() const { return mNext >= mCommands.size() && mHeldFrames == 0; }
+
+  private:
+    std::vector<ScriptCommand> mCommands;
+    size_t mNext = 0;
+    const ScriptCommand* mHeld = nullptr;
+    int mHeldFrames = 0;
+};
+
+} // namespace ispm

@@ -1,0 +1,67 @@
+// PhotonPointsDrawer: one point per photon, its vertex index addressing the storage buffer.
+#include "viewer/photon_points.h"
+
+#include "gl/gl.h"
+#include "gl/state.h"
+#include "render/gbuffer.h"
+#include "render/shader_root.h"
+
+#include <shared/scene_data.h>
+
+#include <algorithm>
+
+namespace ispm {
+namespace {
+
+constexpr GLint kLocationTint = 0;  // shaders/viewer/photon_points.vert
+constexpr GLuint kUnitPosition = 0; // shaders/viewer/photon_points.frag
+constexpr float kPointSizePx = 2.0f;
+constexpr glm::vec4 kBounceTint{1.0f, 0.85f, 0.2f, kPointSizePx}; // yellow: first bounce
+constexpr glm::vec4 kResultTint{0.2f, 0.8f, 1.0f, kPointSizePx};  // cyan: stored photons
+
+gl::Program buildPointsProgram(bool isResult) {
+    std::vector<std::string> defines;
+    if (isResult) defines.emplace_back("RESULT_PHOTONS");
+    return gl::Program::build(
+        getShaderRoot(), {.label = isResult ? "viewer result photons" : "viewer bounce photons",
+                          .stages = {{gl::ShaderStage::Vertex, "viewer/photon_points.vert"},
+                                     {gl::ShaderStage::Fragment, "viewer/photon_points.frag"}},
+                          .defines = defines});
+}
+
+void drawPoints(const gl::Program& program, const glm::vec4& tint, uint32_t count) {
+    if (count == 0) return;
+    program.use();
+    glUniform4f(kLocationTint, tint.r, tint.g, tint.b, tint.a);
+    gl::drawArrays(gl::Primitive::Points, 0, static_cast<int>(count));
+}
+
+} // namespace
+
+PhotonPointsDrawer::PhotonPointsDrawer()
+    : mBounceProgram(buildPointsProgram(false)), mResultProgram(buildPointsProgram(true)),
+      mVertexArray("viewer photon points vao") {}
+
+void PhotonPointsDrawer::draw(const FrameRunner& runner, const PhotonCounts& counts,
+                              PhotonPoints which, int width, int height) const {
+    const PhotonBuffers& buffers = runner.getPhotonBuffers();
+    // No photons this frame (bounces = 0, photons = 0): the buffers may not even exist.
+    if (which == PhotonPoints::None || counts.emitted == 0) return;
+    gl::applyState({.programPointSize = true});
+    gl::bindDefaultFramebuffer(width, height);
+    runner.getFrameInputs().frameConstants.bindBase(gl::BufferTarget::Uniform,
+                                                    gpu::kBindingFrameConstants);
+    buffers.bind();
+    runner.getViewerGBuffer().getChannel("position").bindUnit(kUnitPosition);
+    mVertexArray.bind();
+    if (which == PhotonPoints::Bounce || which == PhotonPoints::Both) {
+        drawPoints(mBounceProgram, kBounceTint,
+                   std::min(counts.bounced, buffers.getBounceCapacity()));
+    }
+    if (which == PhotonPoints::Result || which == PhotonPoints::Both) {
+        drawPoints(mResultProgram, kResultTint,
+                   std::min(counts.stored, buffers.getResultCapacity()));
+    }
+}
+
+} // namespace ispm

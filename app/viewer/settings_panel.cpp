@@ -1,0 +1,147 @@
+// Settings widgets: drag fields whose speed follows the value's magnitude, so one widget serves
+// ranges from 1e-6 to 1e9; Ctrl+click types a value.
+#include "viewer/settings_panel.h"
+
+#include "core/strings.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <stdexcept>
+
+namespace ispm {
+namespace {
+
+constexpr double kDragFraction = 0.005; // of the current value per pixel dragged
+constexpr double kMinFloatSpeed = 1e-4; // so a zero value can still be dragged away
+constexpr float kMinIntSpeed = 0.2f;    // five pixels per step for small integers
+constexpr int kJsonIndent = 2;
+
+const char* kWhere = "viewer settings panel";
+
+void showHelp(const SettingDesc& d) {
+    if (!ImGui::IsItemHovered()) return;
+    const std::string unit = d.unit.empty() ? std::string() : strCat(" [", d.unit, "]");
+    ImGui::SetTooltip("%s%s\nrange %g .. %g", std::string(d.help).c_str(), unit.c_str(), d.minValue,
+                      d.maxValue);
+}
+
+bool drawValue(const SettingDesc& d, Settings& settings) {
+    const std::string label(d.name);
+    double value = settings.get(d.name);
+    bool changed = false;
+    switch (d.type) {
+    case SettingType::Enum: {
+        int index = static_cast<int>(value);
+        const std::string current(d.choices[static_cast<size_t>(index)]);
+        if (ImGui::BeginCombo(label.c_str(), current.c_str())) {
+            for (size_t i = 0; i < d.choices.size(); ++i) {
+                const std::string choice(d.choices[i]);
+                if (ImGui::Selectable(choice.c_str(), static_cast<int>(i) == index)) {
+                    index = static_cast<int>(i);
+                    changed = true;
+                }
+            }
+            ImGui::EndCombo();
+        }
+        value = index;
+        break;
+    }
+    case SettingType::Int: {
+        int v = static_cast<int>(value);
+        const int lo = static_cast<int>(d.minValue);
+        const int hi = static_cast<int>(d.maxValue);
+        const float speed =
+            std::max(kMinIntSpeed, static_cast<float>(std::abs(value) * kDragFraction));
+        changed = ImGui::DragScalar(label.c_str(), ImGuiDataType_S32, &v, speed, &lo, &hi, "%d",
+                                    ImGuiSliderFlags_AlwaysClamp);
+        value = v;
+        break;
+    }
+    case SettingType::Float: {
+        const double speed = std::max(kMinFloatSpeed, std::abs(value) * kDragFraction);
+        changed = ImGui::DragScalar(label.c_str(), ImGuiDataType_Double, &value,
+                                    static_cast<float>(speed), &d.minValue, &d.maxValue, "%.4g",
+                                    ImGuiSliderFlags_AlwaysClamp);
+        break;
+    }
+    }
+    showHelp(d);
+    if (changed) settings.set(d.name, value, kWhere);
+    return changed;
+}
+
+} // namespace
+
+bool isWindowSetting(std::string_view name) {
+    return name == "width" || name == "height";
+}
+
+Settings removeSetting(const Settings& settings, std::string_view name) {
+    Settings result;
+    for (const auto& [key, value] : settings.getOverrides()) {
+        if (key != name) result.set(key, value, kWhere);
+    }
+    return result;
+}
+
+bool drawSettingsPanel(Settings& settings) {
+    bool changed = false;
+    for (const SettingDesc& d : getSettingTable()) {
+        ImGui::PushID(d.name.data(), d.name.data() + d.name.size());
+        if (isWindowSetting(d.name)) {
+            ImGui::Text("%s: %d (follows the window)", std::string(d.name).c_str(),
+                        settings.getInt(d.name));
+        } else if (d.derived) {
+            // Derived settings: "auto" leaves the value to the renderer (from the scene).
+            bool isAuto = !settings.isSet(d.name);
+            if (ImGui::Checkbox("auto", &isAuto)) {
+                settings = isAuto ? removeSetting(settings, d.name) : settings;
+                if (!isAuto) settings.set(d.name, std::max(d.defaultValue, d.minValue), kWhere);
+                changed = true;
+            }
+            ImGui::SameLine();
+            if (isAuto) {
+                ImGui::TextDisabled("%s (derived)", std::string(d.name).c_str());
+                showHelp(d);
+            } else {
+                changed |= drawValue(d, settings);
+            }
+        } else {
+            changed |= drawValue(d, settings);
+        }
+        ImGui::PopID();
+    }
+    return changed;
+}
+
+nlohmann::json buildRenderBlock(const Settings& settings) {
+    nlohmann::json block = nlohmann::json::object();
+    for (const auto& [name, value] : settings.getOverrides()) {
+        const SettingDesc* d = findSetting(name);
+        if (!d) continue;
+        switch (d->type) {
+        case SettingType::Enum:
+            block[name] = std::string(settings.getEnum(name));
+            break;
+        case SettingType::Int:
+            block[name] = static_cast<long long>(value);
+            break;
+        case SettingType::Float:
+            block[name] = value;
+            break;
+        }
+    }
+    return block;
+}
+
+void saveRenderBlock(const std::string& path, const Settings& settings) {
+    std::ofstream file(path);
+    const nlohmann::json document = {{"render", buildRenderBlock(settings)}};
+    file << document.dump(kJsonIndent) << "\n";
+    if (!file) throw std::runtime_error(strCat(path, ": cannot write the render block"));
+}
+
+} // namespace ispm

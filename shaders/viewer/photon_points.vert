@@ -1,0 +1,28 @@
+// Photons as points over the viewer's debug view: bounce photons (where the first bounce left
+// them) or result photons (where they landed), tinted by the hue of their power.
+#include "lib/frame_constants.glsl"
+#include "shared/photon_data.h"
+
+#ifdef RESULT_PHOTONS
+layout(std430, binding = kBindingResultPhotons) readonly buffer Photons { ResultPhoton photons[]; };
+#else
+layout(std430, binding = kBindingBouncePhotons) readonly buffer Photons { BouncePhoton photons[]; };
+#endif
+
+layout(location = 0) uniform vec4 uTint; // rgb tint of this kind of photon; a = point size (px)
+
+out vec3 vColor;
+out vec3 vPositionW;
+
+const float kTintWeight = 0.5; // half kind (which buffer), half the photon's own hue
+const float kTinyPower = 1e-30; // keeps black photons from dividing by zero
+
+void main() {
+    vec3 positionW = photons[gl_VertexID].positionDistance.xyz;
+    vec3 power = photons[gl_VertexID].power.rgb;
+    vPositionW = positionW;
+    gl_Position = frame.clipFromWorld * vec4(positionW, 1.0);
+    gl_PointSize = uTint.a;
+    float peak = max(max(power.r, power.g), max(power.b, kTinyPower));
+    vColor = mix(power / peak, uTint.rgb, kTintWeight);
+}

@@ -1,0 +1,101 @@
+#!/usr/bin/python3
+# Draws a `ispm bench --sweep` CSV as error against time per frame (log-log): the ispm
+# configurations labelled by photon count with their Pareto front, and the path tracer's curve.
+# Usage: tools/plot_bench.py CSV OUT.png [--title T]   (Debian's matplotlib: /usr/bin/python3)
+import argparse
+import csv
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")  # headless: no display on the test machine
+import matplotlib.pyplot as plt  # noqa: E402
+
+FIGURE_SIZE_IN = (7.0, 5.0)
+DPI = 120
+LABEL_OFFSET_PT = (5, 4)  # photon-count labels sit just above and right of their point
+EXIT_BAD_INPUT = 2  # the same code the ispm CLI uses for bad input
+REQUIRED_COLUMNS = ("kind", "spp", "photons", "total_ms", "relmse_total")
+
+
+def fail(message):
+    print(f"plot_bench.py: {message}", file=sys.stderr)
+    sys.exit(EXIT_BAD_INPUT)
+
+
+def read_rows(path):
+    try:
+        with open(path, newline="") as f:
+            reader = csv.DictReader(f)
+            missing = [c for c in REQUIRED_COLUMNS if c not in (reader.fieldnames or [])]
+            if missing:
+                fail(f"{path}: expected columns {', '.join(missing)} (an `ispm bench --sweep` CSV)")
+            rows = list(reader)
+    except OSError as e:
+        fail(f"{path}: {e.strerror}")
+    ispm = [r for r in rows if r["kind"] == "ispm"]
+    reference = [r for r in rows if r["kind"] == "reference"]
+    if not ispm and not reference:
+        fail(f"{path}: no ispm or reference rows")
+    return ispm, reference
+
+
+def compute_pareto_front(points):
+    """Points no other point beats in both time and error, sorted by time."""
+    front = []
+    best_error = float("inf")
+    for time_ms, error, label in sorted(points):
+        if error < best_error:
+            front.append((time_ms, error, label))
+            best_error = error
+    return front
+
+
+def main():
+    parser = argparse.ArgumentParser(
+        description="Draw an `ispm bench --sweep` CSV: relMSE against time per frame.")
+    parser.add_argument("csv", help="CSV written by `ispm bench --sweep ... --csv`")
+    parser.add_argument("out", help="output PNG")
+    parser.add_argument("--title", default="Speed against accuracy", help="chart title")
+    args = parser.parse_args()
+
+    ispm, reference = read_rows(args.csv)
+    fig, ax = plt.subplots(figsize=FIGURE_SIZE_IN)
+
+    if reference:
+        curve = sorted((float(r["total_ms"]), float(r["relmse_total"]), int(r["spp"]))
+                       for r in reference)
+        ax.plot([c[0] for c in curve], [c[1] for c in curve], "s-", color="tab:grey",
+                label="path tracer (cumulative time, 1, 2, 4, ... spp)")
+        for time_ms, error, spp in curve:
+            ax.annotate(f"{spp} spp", (time_ms, error), textcoords="offset points",
+                        xytext=LABEL_OFFSET_PT, fontsize=7, color="tab:grey")
+
+    if ispm:
+        points = [(float(r["total_ms"]), float(r["relmse_total"]), r["photons"]) for r in ispm]
+        ax.scatter([p[0] for p in points], [p[1] for p in points], color="tab:blue", zorder=3,
+                   label="ispm configurations (median frame time)")
+        for time_ms, error, photons in points:
+            ax.annotate(f"{int(float(photons)):,}", (time_ms, error), textcoords="offset points",
+                        xytext=LABEL_OFFSET_PT, fontsize=7, color="tab:blue")
+        front = compute_pareto_front(points)
+        ax.plot([p[0] for p in front], [p[1] for p in front], "-", color="tab:orange", zorder=2,
+                label="ispm Pareto front")
+
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("time per frame (ms; path tracer: cumulative time of its samples)")
+    ax.set_ylabel("relMSE of total radiance against the reference")
+    ax.set_title(args.title)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    try:
+        fig.savefig(args.out, dpi=DPI)
+    except OSError as e:
+        fail(f"{args.out}: {e.strerror}")
+    print(f"wrote {args.out}")
+
+
+if __name__ == "__main__":
+    main()
