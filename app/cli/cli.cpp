@@ -17,6 +17,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 
@@ -65,10 +66,32 @@ int runInfo() {
     return 0;
 }
 
-int runCompare(const std::string& a, const std::string& b, double maxRelMse) {
+// A mask image includes the pixels where any channel is above one half (white on black).
+PixelMask readMask(const std::string& path, const Image& like) {
+    constexpr float kIncludedAbove = 0.5f;
+    const Image mask = readImage(path);
+    if (mask.width != like.width || mask.height != like.height) {
+        throw InputError(strCat(path, ": expected a ", like.width, "x", like.height, " mask, got ",
+                                mask.width, "x", mask.height));
+    }
+    PixelMask included(mask.pixels.size());
+    for (size_t i = 0; i < mask.pixels.size(); ++i) {
+        const glm::vec3& p = mask.pixels[i];
+        included[i] = std::max({p.x, p.y, p.z}) > kIncludedAbove ? 1 : 0;
+    }
+    return included;
+}
+
+int runCompare(const std::string& a, const std::string& b, const std::string& maskPath,
+               double maxRelMse) {
     const Image test = readImage(a);
     const Image reference = readImage(b);
-    const ImageMetrics m = computeMetrics(test, reference);
+    if (test.width != reference.width || test.height != reference.height) {
+        throw InputError(strCat(a, " is ", test.width, "x", test.height, " but ", b, " is ",
+                                reference.width, "x", reference.height, ": expected equal sizes"));
+    }
+    const PixelMask mask = maskPath.empty() ? PixelMask() : readMask(maskPath, test);
+    const ImageMetrics m = computeMetrics(test, reference, maskPath.empty() ? nullptr : &mask);
     std::printf("pixels      %zu\n", m.pixelCount);
     std::printf("RMSE        %.6g\n", m.rmse);
     std::printf("relMSE      %.6g\n", m.relMse);
@@ -112,12 +135,15 @@ int runCli(int argc, char** argv) {
     std::string compareA;
     std::string compareB;
     double maxRelMse = -1.0;
+    std::string maskPath;
     CLI::App* compareCmd = app.add_subcommand(
         "compare", "Compare image A against reference B: RMSE, relMSE, SSIM, mean ratio");
     compareCmd->add_option("a", compareA, "test image (.png, .pfm, .exr)")->required();
     compareCmd->add_option("b", compareB, "reference image (.png, .pfm, .exr)")->required();
     compareCmd->add_option("--max-relmse", maxRelMse, "exit 1 when relMSE exceeds this")
         ->check(CLI::NonNegativeNumber);
+    compareCmd->add_option("--mask", maskPath,
+                           "image of the same size: only pixels brighter than 0.5 are compared");
 
     try {
         app.parse(argc, argv);
@@ -150,7 +176,7 @@ int runCli(int argc, char** argv) {
             std::fputs(formatSettingsMarkdown().c_str(), stdout);
             return 0;
         }
-        if (app.got_subcommand(compareCmd)) return runCompare(compareA, compareB, maxRelMse);
+        if (app.got_subcommand(compareCmd)) return runCompare(compareA, compareB, maskPath, maxRelMse);
     } catch (const InputError& e) {
         std::fprintf(stderr, "ispm: %s\n", e.what());
         return kExitBadInput;

@@ -134,6 +134,32 @@ TEST_F(CliTest, CompareReportsMetricsAndThreshold) {
     expectBadInput("compare " + a + " " + (mDir / "none.pfm").string(), {"none.pfm"});
 }
 
+TEST_F(CliTest, CompareMaskRestrictsThePixels) {
+    constexpr int kSize = 8;
+    Image a(kSize, kSize, glm::vec3(1.0f));
+    Image b = a;
+    Image mask(kSize, kSize, glm::vec3(0.0f));
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) {
+            if (x >= kSize / 2) b.at(x, y) = glm::vec3(2.0f); // differs on the right half
+            if (x < kSize / 2) mask.at(x, y) = glm::vec3(1.0f); // compares the left half
+        }
+    }
+    const std::string pa = (mDir / "a.pfm").string();
+    const std::string pb = (mDir / "b.pfm").string();
+    const std::string pm = (mDir / "mask.png").string();
+    writeImage(pa, a);
+    writeImage(pb, b);
+    writeImage(pm, mask);
+    EXPECT_EQ(run("compare " + pa + " " + pb + " --max-relmse 0").exitCode, 1);
+    const RunResult masked = run("compare " + pa + " " + pb + " --mask " + pm + " --max-relmse 0");
+    EXPECT_EQ(masked.exitCode, 0) << masked.output;
+    EXPECT_NE(masked.output.find("pixels      32"), std::string::npos) << masked.output;
+    writeImage((mDir / "small.png").string(), Image(2, 2));
+    expectBadInput("compare " + pa + " " + pb + " --mask " + (mDir / "small.png").string(),
+                   {"small.png"});
+}
+
 TEST_F(CliTest, HelpOnEverySubcommand) {
     for (const char* sub : {"render", "export", "info", "compare", "bench", "view", "settings"}) {
         const RunResult r = run(std::string(sub) + " --help");
