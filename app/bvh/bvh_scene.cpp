@@ -42,18 +42,9 @@ void updateObjectFromWorld(BvhScene& bvh, const Scene& scene) {
 } // namespace
 
 Aabb computeInstanceBounds(const BvhScene& bvh, const Scene& scene, uint32_t instanceIndex) {
-    constexpr int kCornerCount = 8;
     const Instance& instance = scene.instances[instanceIndex];
     const Aabb local = getNodeBounds(bvh.blasNodes[bvh.meshBlasRoots[instance.meshIndex]]);
-    Aabb world;
-    if (local.isEmpty()) return world;
-    for (int corner = 0; corner < kCornerCount; ++corner) {
-        const glm::vec3 p{(corner & 1) ? local.hi.x : local.lo.x,
-                          (corner & 2) ? local.hi.y : local.lo.y,
-                          (corner & 4) ? local.hi.z : local.lo.z};
-        world.extend(glm::vec3(instance.worldFromObject * glm::vec4(p, 1.0f)));
-    }
-    return world;
+    return transformBounds(local, instance.worldFromObject);
 }
 
 BvhScene buildSceneBvh(const Scene& scene, const BvhBuildParams& meshParams) {

@@ -8,6 +8,7 @@
 #include "core/strings.h"
 #include "gl/context.h"
 #include "gl/debug.h"
+#include "gl/state.h"
 #include "render/frame.h"
 #include "scene/input_error.h"
 #include "scene/scene_loader.h"
@@ -16,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
@@ -31,6 +33,9 @@ constexpr int kMinTimedFrames = 1; // a median needs at least one sample
 constexpr int kMinWarmupFrames = 0;
 constexpr double kBytesPerMib = 1024.0 * 1024.0;
 constexpr double kKibPerMib = 1024.0;
+// --animate: the time step of a 60 Hz display, so the motion per frame is what a viewer sees.
+constexpr double kAnimateFrameSeconds = 1.0 / 60.0;
+constexpr const char* kSceneUpdateRow = "scene update";
 
 struct PresetSetting {
     const char* name;
@@ -106,6 +111,7 @@ struct BenchReport {
     std::string renderer;
     std::string contextPath;
     std::string timingMethod;
+    bool animate = false;
     std::vector<PassStats> passes; // frame order
     PassStats total;               // sum of the passes, per frame
     std::optional<double> peakRssMib;
@@ -140,6 +146,7 @@ void printJson(const BenchReport& r) {
     out["warmup"] = r.warmup;
     out["renderer"] = r.renderer;
     out["timing_method"] = r.timingMethod;
+    out["animate"] = r.animate;
     out["passes"] = nlohmann::json::array();
     for (const PassStats& p : r.passes) {
         out["passes"].push_back({{"name", p.name},
@@ -176,6 +183,11 @@ void printText(const BenchReport& r) {
                 r.height, r.frames, r.warmup);
     std::printf("renderer: %s (%s); pass times by %s\n", r.renderer.c_str(), r.contextPath.c_str(),
                 r.timingMethod.c_str());
+    if (r.animate) {
+        std::printf("animated: %.4f s per frame; '%s' = Scene::update + top-level BVH rebuild + "
+                    "light cameras + uploads (CPU clock)\n",
+                    kAnimateFrameSeconds, kSceneUpdateRow);
+    }
     if (!r.presetName.empty()) {
         std::printf("preset %s: applied %s", r.presetName.c_str(),
                     r.preset.applied.empty() ? "nothing" : joinWords(r.preset.applied).c_str());
@@ -224,6 +236,29 @@ void checkOptions(const BenchOptions& options) {
     if (options.scenePath.empty() && options.preset.empty()) {
         throw InputError("bench: expected a scene file (SCENE may be left out only with --preset)");
     }
+    if (options.animate && isSweepRequested(options)) {
+        throw InputError("--animate: expected without --sweep/--reference/--csv (a sweep compares "
+                         "still frames with a reference)");
+    }
+}
+
+// Advances the scene to `timeS` and re-uploads what moved; returns the milliseconds it took,
+// after glFinish so that uploads are counted here and not in the first pass.
+double advanceAnimation(Scene& scene, FrameRunner& runner, double timeS) {
+    const auto start = std::chrono::steady_clock::now();
+    scene.update(timeS);
+    runner.updateScene();
+    gl::finish();
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+        .count();
+}
+
+// The scene update's row goes first (it runs before the passes) and counts in the frame total.
+void addSceneUpdateTime(double ms, FrameTimes& times) {
+    auto [it, inserted] = times.samplesMs.try_emplace(kSceneUpdateRow);
+    if (inserted) times.passOrder.insert(times.passOrder.begin(), kSceneUpdateRow);
+    it->second.push_back(ms);
+    times.totalsMs.back() += ms;
 }
 
 } // namespace
@@ -239,6 +274,9 @@ void addBenchCommand(CLI::App& app, BenchOptions& options) {
     cmd->add_option("--height", options.height, "image height in pixels (setting `height`)");
     cmd->add_option("--set", options.sets, "override a setting: name=value (repeatable)");
     cmd->add_flag("--json", options.json, "print one JSON object on stdout and nothing else");
+    cmd->add_flag("--animate", options.animate,
+                  "advance animated scenes by 1/60 s per frame and time the scene update (BVH "
+                  "top level, light cameras) as a row of its own");
     cmd->add_option("--preset", options.preset,
                     "benchmark configuration: thesis (box city, 1280x1024, photons=50000, "
                     "bounces=3)");
@@ -250,7 +288,8 @@ void addBenchCommand(CLI::App& app, BenchOptions& options) {
         "Settings are layered: the scene's `render` block, then the preset, then --set, then "
         "--width/--height. --preset thesis uses assets/scenes/box_city.json unless SCENE is given; "
         "preset settings the settings table does not know yet are skipped and listed.\n"
-        "--json fields: scene, width, height, frames, warmup, renderer, timing_method, passes "
+        "--json fields: scene, width, height, frames, warmup, renderer, timing_method, animate, "
+        "passes "
         "[{name, median_ms, min_ms, max_ms}], total_median_ms, peak_rss_mib, gl_bytes, settings, "
         "and preset {name, applied, skipped} with --preset.\n"
         "Sweep mode (--sweep, --reference, --csv): renders every configuration of the sweeps' "
@@ -284,7 +323,7 @@ int runBench(const BenchOptions& options) {
     if (!options.preset.empty()) report.preset = applyThesisPreset();
     const Settings commandLine =
         makeCommandLineSettings(options.sets, options.width, options.height);
-    const Scene scene = loadScene(report.scenePath);
+    Scene scene = loadScene(report.scenePath);
     Settings settings = scene.settings;
     settings.merge(report.preset.settings);
     settings.merge(commandLine);
@@ -296,13 +335,24 @@ int runBench(const BenchOptions& options) {
     const gl::TimingMethod timing =
         info.isSoftware ? gl::TimingMethod::CpuFinish : gl::TimingMethod::TimerQuery;
     FrameRunner runner(scene, settings, timing);
-    for (int i = 0; i < options.warmup; ++i)
+    int frameIndex = 0;
+    // Frame i shows time i/60 s: warm-up frames animate too, so the timed ones are not the first
+    // to rebuild anything.
+    auto advance = [&]() {
+        const double timeS = static_cast<double>(frameIndex++) * kAnimateFrameSeconds;
+        return options.animate ? advanceAnimation(scene, runner, timeS) : 0.0;
+    };
+    for (int i = 0; i < options.warmup; ++i) {
+        advance();
         runner.renderFrame();
+    }
 
     FrameTimes times;
     for (int i = 0; i < options.frames; ++i) {
+        const double updateMs = advance();
         runner.renderFrame();
         addFrameTimes(runner, times);
+        if (options.animate) addSceneUpdateTime(updateMs, times);
     }
 
     report.width = runner.getWidth();
@@ -312,6 +362,7 @@ int runBench(const BenchOptions& options) {
     report.renderer = info.renderer;
     report.contextPath = gl::getContextPathName(info.path);
     report.timingMethod = gl::getTimingMethodName(runner.getTimingMethod());
+    report.animate = options.animate;
     for (const std::string& name : times.passOrder) {
         report.passes.push_back(computeStats(name, times.samplesMs[name]));
     }

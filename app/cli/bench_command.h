@@ -24,6 +24,9 @@ struct BenchOptions {
     std::vector<std::string> sets;
     bool json = false;
     std::string preset; // "" or "thesis"
+    // Every frame (warm-up and timed) advances the animation by 1/60 s and re-uploads the moved
+    // scene (top-level BVH, light cameras), timed as the row "scene update".
+    bool animate = false;
     // Sweep mode (bench_sweep.h): any of these turns it on.
     std::vector<std::string> sweeps; // "name=v1,v2,..." each
     std::string referencePath;       // linear .pfm/.exr the configurations are measured against

@@ -15,6 +15,7 @@
 #include <CLI/CLI.hpp>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 
 #include <unistd.h>
@@ -39,6 +40,9 @@ void addRenderCommand(CLI::App& app, RenderOptions& options) {
     cmd->add_option("--bounces", options.bounces,
                     "reflections between light and visible surface (setting `bounces`; 0 = direct "
                     "light; reference default 64)");
+    cmd->add_option("--time", options.timeS,
+                    "animation time in seconds, >= 0 (default 0): where animated objects and "
+                    "lights are (docs/scene-format.md, Animation)");
     cmd->footer("ispm mode renders a warm-up frame first and prints the per-pass times of the "
                 "second. reference mode accumulates --spp jittered samples per pixel with a "
                 "progress bar on a terminal and writes linear .pfm/.exr only.");
@@ -102,9 +106,13 @@ int runRender(const RenderOptions& options) {
         throw InputError("--aov: reference mode writes the total; --bounces 0 gives direct light");
     }
     if (options.spp < 1) throw InputError(strCat("--spp: expected at least 1, got ", options.spp));
+    if (!std::isfinite(options.timeS) || options.timeS < 0.0) {
+        throw InputError(strCat("--time: expected a number of seconds >= 0, got ", options.timeS));
+    }
     Settings commandLine = makeCommandLineSettings(options.sets, options.width, options.height);
     if (options.bounces) commandLine.set("bounces", *options.bounces, "--bounces");
-    const Scene scene = loadScene(options.scenePath);
+    Scene scene = loadScene(options.scenePath);
+    if (scene.isAnimated()) scene.update(options.timeS);
     Settings settings = scene.settings;
     settings.merge(commandLine);
     if (isReference) return runReference(options, scene, settings, start);

@@ -22,6 +22,7 @@ struct RenderOptions {
     std::string mode = "ispm";
     int spp = 64;                // reference mode: samples per pixel
     std::optional<int> bounces;  // setting `bounces`
+    double timeS = 0.0;          // animation time (seconds); scenes without animation ignore it
 };
 
 void addRenderCommand(CLI::App& app, RenderOptions& options);

@@ -11,6 +11,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include <filesystem>
+
 namespace ispm {
 
 void addViewCommand(CLI::App& app, ViewOptions& options) {
@@ -25,8 +27,11 @@ void addViewCommand(CLI::App& app, ViewOptions& options) {
                     "with --frames: write the last frame's window (UI included) as PNG");
     cmd->add_option("--script", options.scriptPath,
                     "replay input from a file (key, mouse_drag, wheel, set, view, frames ...)");
+    cmd->add_option("--reference", options.referencePath,
+                    "reference image (.pfm or .exr) for the side-by-side and error views");
     cmd->footer(
-        "Keys: WASD/QE fly, left drag looks, wheel sets the speed, F12 writes a screenshot.");
+        "Keys: WASD/QE fly, left drag looks, wheel sets the speed, F5 reloads changed shaders, F12 "
+        "writes a screenshot.");
 }
 
 int runView(const ViewOptions& options) {
@@ -42,6 +47,17 @@ int runView(const ViewOptions& options) {
     ViewerOptions viewer;
     viewer.maxFrames = options.frames;
     viewer.screenshotPath = options.screenshotPath;
+    if (!options.referencePath.empty()) {
+        const ImageFormat format = getImageFormatFromPath(options.referencePath);
+        if (format != ImageFormat::Pfm && format != ImageFormat::Exr) {
+            throw InputError(strCat("--reference: expected a .pfm or .exr file, got '",
+                                    options.referencePath, "'"));
+        }
+        if (!std::filesystem::is_regular_file(options.referencePath)) {
+            throw InputError(strCat("--reference: no such file '", options.referencePath, "'"));
+        }
+        viewer.referencePath = options.referencePath;
+    }
     if (!options.scriptPath.empty()) viewer.script = loadInputScript(options.scriptPath);
     const Settings commandLine =
         makeCommandLineSettings(options.sets, options.width, options.height);

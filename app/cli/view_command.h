@@ -20,6 +20,7 @@ struct ViewOptions {
     int frames = -1;
     std::string screenshotPath;
     std::string scriptPath;
+    std::string referencePath;
 };
 
 void addViewCommand(CLI::App& app, ViewOptions& options);

@@ -52,6 +52,16 @@ void FrameRunner::resizePasses() {
     }
 }
 
+ShaderReloadReport FrameRunner::reloadShaders() {
+    ShaderReloadReport report;
+    for (Pass* pass : std::initializer_list<Pass*>{mGBuffer.get(), mLightViews.get(), mEmit.get(),
+                                                   mTrace.get(), mSplat.get(), mDirect.get(),
+                                                   mCompose.get(), mTonemap.get()}) {
+        pass->reloadPrograms(report);
+    }
+    return report;
+}
+
 void FrameRunner::setSettings(const Settings& settings) {
     const int lightResolution = settings.getInt("shadow_map_size");
     mSettings = settings;

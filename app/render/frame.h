@@ -42,6 +42,8 @@ public:
     void updateScene() { mGpuScene.updateDynamic(mScene); }
     void rebuildScene() { mGpuScene = GpuScene(mScene, mGpuScene.getLightResolution()); }
     const Settings& getSettings() const { return mSettings; }
+    // F5: rebuilds the passes' programs whose source files changed; failures keep the old ones.
+    ShaderReloadReport reloadShaders();
     const std::vector<PassTiming>& getLastTimings() const { return mTimings; }
     gl::TimingMethod getTimingMethod() const { return mTimer.getMethod(); }
 

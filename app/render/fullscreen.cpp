@@ -2,18 +2,17 @@
 #include "render/fullscreen.h"
 
 #include "gl/state.h"
-#include "render/shader_root.h"
 
 namespace ispm {
 
 FullscreenTarget::FullscreenTarget(std::string label, gl::Format format,
-                                   const std::string& fragmentPath, std::vector<std::string> defines)
+                                   const std::string& fragmentPath,
+                                   std::vector<std::string> defines)
     : mLabel(std::move(label)), mFormat(format),
-      mProgram(gl::Program::build(getShaderRoot(),
-                                  {.label = mLabel,
-                                   .stages = {{gl::ShaderStage::Vertex, "lib/fullscreen.vert"},
-                                              {gl::ShaderStage::Fragment, fragmentPath}},
-                                   .defines = std::move(defines)})),
+      mProgram(ReloadableProgram({.label = mLabel,
+                                  .stages = {{gl::ShaderStage::Vertex, "lib/fullscreen.vert"},
+                                             {gl::ShaderStage::Fragment, fragmentPath}},
+                                  .defines = std::move(defines)})),
       mVertexArray(mLabel + " vao") {}
 
 void FullscreenTarget::resize(int width, int height) {

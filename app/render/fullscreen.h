@@ -2,7 +2,7 @@
 #pragma once
 
 #include "gl/objects.h"
-#include "gl/program.h"
+#include "render/reloadable_program.h"
 
 #include <string>
 #include <vector>
@@ -17,11 +17,12 @@ public:
     // Binds the target, applies a plain state (no depth, no blending) and draws.
     void draw() const;
     const gl::Texture& getTexture() const { return mTexture; }
+    void reloadProgram(ShaderReloadReport& report) { mProgram.reloadIfChanged(report); }
 
 private:
     std::string mLabel;
     gl::Format mFormat;
-    gl::Program mProgram;
+    ReloadableProgram mProgram;
     gl::VertexArray mVertexArray;
     gl::Texture mTexture;
     gl::Framebuffer mFramebuffer;

@@ -111,12 +111,11 @@ void drawSceneGBuffer(const gl::Program& program, const GpuScene& scene,
     }
 }
 
-gl::Program buildGBufferProgram() {
-    return gl::Program::build(getShaderRoot(),
-                              {.label = "gbuffer",
-                               .stages = {{gl::ShaderStage::Vertex, "gbuffer/gbuffer.vert"},
-                                          {gl::ShaderStage::Fragment, "gbuffer/gbuffer.frag"}},
-                               .defines = getGBufferDefines()});
+ReloadableProgram buildGBufferProgram() {
+    return ReloadableProgram({.label = "gbuffer",
+                              .stages = {{gl::ShaderStage::Vertex, "gbuffer/gbuffer.vert"},
+                                         {gl::ShaderStage::Fragment, "gbuffer/gbuffer.frag"}},
+                              .defines = getGBufferDefines()});
 }
 
 } // namespace ispm

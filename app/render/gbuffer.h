@@ -4,7 +4,7 @@
 #pragma once
 
 #include "gl/objects.h"
-#include "gl/program.h"
+#include "render/reloadable_program.h"
 
 #include <span>
 #include <string>
@@ -56,6 +56,6 @@ private:
 void drawSceneGBuffer(const gl::Program& program, const GpuScene& scene,
                       const glm::mat4& clipFromWorld, const glm::vec4& eye);
 
-gl::Program buildGBufferProgram();
+ReloadableProgram buildGBufferProgram();
 
 } // namespace ispm

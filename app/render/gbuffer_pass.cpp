@@ -18,7 +18,7 @@ void GBufferPass::execute(const FrameInputs& inputs) {
     mGBuffer.bindTarget(0);
     mVertexArray.bind();
     inputs.scene.bind();
-    drawSceneGBuffer(mProgram, inputs.scene, inputs.clipFromWorld,
+    drawSceneGBuffer(mProgram.get(), inputs.scene, inputs.clipFromWorld,
                      glm::vec4(inputs.cameraPosition, 1.0f));
 }
 
@@ -41,7 +41,7 @@ void LightViewPass::execute(const FrameInputs& inputs) {
         mGBuffer.bindTarget(layer);
         const glm::vec4 eye = cam.isOrthographic ? glm::vec4(-cam.axis, 0.0f)
                                                  : glm::vec4(cam.origin, 1.0f);
-        drawSceneGBuffer(mProgram, inputs.scene, cam.getClipFromWorld(), eye);
+        drawSceneGBuffer(mProgram.get(), inputs.scene, cam.getClipFromWorld(), eye);
     }
 }
 

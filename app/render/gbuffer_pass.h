@@ -13,10 +13,11 @@ public:
     const char* getName() const override { return "gbuffer"; }
     void resize(int width, int height) override;
     void execute(const FrameInputs& inputs) override;
+    void reloadPrograms(ShaderReloadReport& report) override { mProgram.reloadIfChanged(report); }
     const GBuffer& getGBuffer() const { return mGBuffer; }
 
 private:
-    gl::Program mProgram;
+    ReloadableProgram mProgram;
     gl::VertexArray mVertexArray;
     GBuffer mGBuffer;
 };
@@ -26,10 +27,11 @@ public:
     LightViewPass();
     const char* getName() const override { return "light_views"; }
     void execute(const FrameInputs& inputs) override;
+    void reloadPrograms(ShaderReloadReport& report) override { mProgram.reloadIfChanged(report); }
     const GBuffer& getGBuffer() const { return mGBuffer; }
 
 private:
-    gl::Program mProgram;
+    ReloadableProgram mProgram;
     gl::VertexArray mVertexArray;
     GBuffer mGBuffer;
 };

@@ -23,12 +23,9 @@ glm::vec3 pickUp(const glm::vec3& axis) {
                                               : glm::vec3(0.0f, 1.0f, 0.0f);
 }
 
-std::array<glm::vec3, 8> getCorners(const Aabb& b) {
-    std::array<glm::vec3, 8> corners;
-    for (int i = 0; i < 8; ++i) {
-        corners[static_cast<size_t>(i)] = {(i & 1) ? b.hi.x : b.lo.x, (i & 2) ? b.hi.y : b.lo.y,
-                                           (i & 4) ? b.hi.z : b.lo.z};
-    }
+std::array<glm::vec3, kAabbCornerCount> getCorners(const Aabb& b) {
+    std::array<glm::vec3, kAabbCornerCount> corners;
+    for (int i = 0; i < kAabbCornerCount; ++i) corners[static_cast<size_t>(i)] = b.getCorner(i);
     return corners;
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "gl/objects.h"
+#include "render/reloadable_program.h"
 
 #include <glm/glm.hpp>
 
@@ -34,6 +35,8 @@ public:
         (void)height;
     }
     virtual void execute(const FrameInputs& inputs) = 0;
+    // Rebuilds the programs whose source files changed (the viewer's F5); see ReloadableProgram.
+    virtual void reloadPrograms(ShaderReloadReport& report) = 0;
 };
 
 } // namespace ispm

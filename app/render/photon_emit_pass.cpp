@@ -25,8 +25,7 @@ constexpr GLint kLocationResolution = 4;
 
 PhotonEmitPass::PhotonEmitPass(const GBuffer& lightGBuffer, PhotonBuffers& buffers)
     : mLightGBuffer(lightGBuffer), mBuffers(buffers),
-      mProgram(gl::Program::build(
-          getShaderRoot(),
+      mProgram(ReloadableProgram(
           {.label = "photon emit",
            .stages = {{gl::ShaderStage::Vertex, "photon/photon_emit.vert"},
                       {gl::ShaderStage::Geometry, "photon/photon_emit.geom"}},

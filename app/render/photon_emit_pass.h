@@ -15,6 +15,7 @@ public:
     PhotonEmitPass(const GBuffer& lightGBuffer, PhotonBuffers& buffers);
     const char* getName() const override { return "emit"; }
     void execute(const FrameInputs& inputs) override;
+    void reloadPrograms(ShaderReloadReport& report) override { mProgram.reloadIfChanged(report); }
     // The grids of the last frame (emitted = their photon total).
     const std::vector<EmissionGrid>& getGrids() const { return mGrids; }
     uint32_t getEmittedCount() const { return countPhotons(mGrids); }
@@ -22,7 +23,7 @@ public:
 private:
     const GBuffer& mLightGBuffer;
     PhotonBuffers& mBuffers;
-    gl::Program mProgram;
+    ReloadableProgram mProgram;
     gl::VertexArray mVertexArray;
     gl::Framebuffer mFramebuffer;
     gl::TransformFeedback mFeedback;

@@ -23,12 +23,12 @@ constexpr GLuint kStageBeforeSplat = 1;
 
 PhotonTracePass::PhotonTracePass(PhotonBuffers& buffers)
     : mBuffers(buffers),
-      mPrepare(gl::Program::build(
-          getShaderRoot(), {.label = "photon prepare",
-                            .stages = {{gl::ShaderStage::Compute, "photon/photon_prepare.comp"}}})),
-      mTrace(gl::Program::build(
-          getShaderRoot(), {.label = "photon trace",
-                            .stages = {{gl::ShaderStage::Compute, "photon/photon_trace.comp"}}})) {}
+      mPrepare(ReloadableProgram(
+          {.label = "photon prepare",
+           .stages = {{gl::ShaderStage::Compute, "photon/photon_prepare.comp"}}})),
+      mTrace(ReloadableProgram(
+          {.label = "photon trace",
+           .stages = {{gl::ShaderStage::Compute, "photon/photon_trace.comp"}}})) {}
 
 void PhotonTracePass::execute(const FrameInputs& inputs) {
     mBuffers.bind();

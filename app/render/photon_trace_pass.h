@@ -3,7 +3,6 @@
 // all derived on the GPU from the emitted count.
 #pragma once
 
-#include "gl/program.h"
 #include "render/pass.h"
 #include "render/photon_buffers.h"
 
@@ -14,11 +13,15 @@ public:
     explicit PhotonTracePass(PhotonBuffers& buffers);
     const char* getName() const override { return "trace"; }
     void execute(const FrameInputs& inputs) override;
+    void reloadPrograms(ShaderReloadReport& report) override {
+        mPrepare.reloadIfChanged(report);
+        mTrace.reloadIfChanged(report);
+    }
 
 private:
     PhotonBuffers& mBuffers;
-    gl::Program mPrepare;
-    gl::Program mTrace;
+    ReloadableProgram mPrepare;
+    ReloadableProgram mTrace;
 };
 
 } // namespace ispm

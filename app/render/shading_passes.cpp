@@ -37,14 +37,12 @@ void ComposePass::execute(const FrameInputs& inputs) {
 }
 
 TonemapPass::TonemapPass(const gl::Texture& hdr)
-    : mHdr(hdr),
-      mHistogram(gl::Program::build(
-          getShaderRoot(), {.label = "luminance histogram",
-                            .stages = {{gl::ShaderStage::Compute,
-                                        "tonemap/luminance_histogram.comp"}}})),
-      mResolve(gl::Program::build(
-          getShaderRoot(), {.label = "luminance resolve",
-                            .stages = {{gl::ShaderStage::Compute, "tonemap/luminance_resolve.comp"}}})),
+    : mHdr(hdr), mHistogram(ReloadableProgram(
+                     {.label = "luminance histogram",
+                      .stages = {{gl::ShaderStage::Compute, "tonemap/luminance_histogram.comp"}}})),
+      mResolve(ReloadableProgram(
+          {.label = "luminance resolve",
+           .stages = {{gl::ShaderStage::Compute, "tonemap/luminance_resolve.comp"}}})),
       mExposure("exposure", sizeof(gpu::ExposureData)),
       mTarget("display", gl::Format::RGBA8, "tonemap/tonemap.frag", {}) {}
 

@@ -15,6 +15,7 @@ public:
     const char* getName() const override { return "direct"; }
     void resize(int width, int height) override { mTarget.resize(width, height); }
     void execute(const FrameInputs& inputs) override;
+    void reloadPrograms(ShaderReloadReport& report) override { mTarget.reloadProgram(report); }
     const gl::Texture& getOutput() const { return mTarget.getTexture(); }
 
 private:
@@ -29,6 +30,7 @@ public:
     const char* getName() const override { return "compose"; }
     void resize(int width, int height) override { mTarget.resize(width, height); }
     void execute(const FrameInputs& inputs) override;
+    void reloadPrograms(ShaderReloadReport& report) override { mTarget.reloadProgram(report); }
     const gl::Texture& getOutput() const { return mTarget.getTexture(); }
 
 private:
@@ -47,11 +49,16 @@ public:
     const gl::Texture& getOutput() const { return mTarget.getTexture(); }
     // The white point used by the last frame (derived or set), read back: for reports only.
     float readLuminanceMax() const;
+    void reloadPrograms(ShaderReloadReport& report) override {
+        mHistogram.reloadIfChanged(report);
+        mResolve.reloadIfChanged(report);
+        mTarget.reloadProgram(report);
+    }
 
 private:
     const gl::Texture& mHdr;
-    gl::Program mHistogram;
-    gl::Program mResolve;
+    ReloadableProgram mHistogram;
+    ReloadableProgram mResolve;
     gl::Buffer mExposure;
     FullscreenTarget mTarget;
 };

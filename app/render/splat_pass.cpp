@@ -46,11 +46,10 @@ SplatRadii computeSplatRadii(double surfaceAreaM2, float diagonalM, const Settin
 
 SplatPass::SplatPass(const GBuffer& viewer, const PhotonBuffers& buffers)
     : mViewer(viewer), mBuffers(buffers),
-      mProgram(gl::Program::build(getShaderRoot(),
-                                  {.label = "splat",
-                                   .stages = {{gl::ShaderStage::Vertex, "splat/splat.vert"},
-                                              {gl::ShaderStage::Fragment, "splat/splat.frag"}},
-                                   .defines = getGBufferDefines()})),
+      mProgram(ReloadableProgram({.label = "splat",
+                                  .stages = {{gl::ShaderStage::Vertex, "splat/splat.vert"},
+                                             {gl::ShaderStage::Fragment, "splat/splat.frag"}},
+                                  .defines = getGBufferDefines()})),
       mVertexArray("splat vao") {}
 
 void SplatPass::resize(int width, int height) {

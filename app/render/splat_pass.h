@@ -29,13 +29,14 @@ public:
     const char* getName() const override { return "splat"; }
     void resize(int width, int height) override;
     void execute(const FrameInputs& inputs) override;
+    void reloadPrograms(ShaderReloadReport& report) override { mProgram.reloadIfChanged(report); }
     const gl::Texture& getOutput() const { return mIndirect; }
     void clear() const { mFramebuffer.clearColor(0, glm::vec4(0.0f)); }
 
 private:
     const GBuffer& mViewer;
     const PhotonBuffers& mBuffers;
-    gl::Program mProgram;
+    ReloadableProgram mProgram;
     gl::VertexArray mVertexArray;
     gl::Texture mIndirect;
     gl::Framebuffer mFramebuffer;

@@ -26,20 +26,22 @@ Aabb Mesh::computeBounds() const {
     return bounds;
 }
 
+Aabb transformBounds(const Aabb& box, const glm::mat4& m) {
+    Aabb out;
+    if (box.isEmpty()) return out;
+    for (int corner = 0; corner < kAabbCornerCount; ++corner) {
+        out.extend(glm::vec3(m * glm::vec4(box.getCorner(corner), 1.0f)));
+    }
+    return out;
+}
+
 Aabb Scene::computeWorldBounds() const {
-    // Transforms each mesh's box corners: exact for translations and scales, conservative when
-    // an instance rotates, and cheap enough to call every frame.
-    constexpr int kCornerCount = 8;
+    // Each mesh's box, transformed: cheap enough to call every frame.
     Aabb bounds;
     for (const Instance& instance : instances) {
-        const Aabb local = meshes.at(instance.meshIndex).computeBounds();
-        if (local.isEmpty()) continue;
-        for (int corner = 0; corner < kCornerCount; ++corner) {
-            const glm::vec3 p{(corner & 1) ? local.hi.x : local.lo.x,
-                              (corner & 2) ? local.hi.y : local.lo.y,
-                              (corner & 4) ? local.hi.z : local.lo.z};
-            bounds.extend(glm::vec3(instance.worldFromObject * glm::vec4(p, 1.0f)));
-        }
+        const Aabb world =
+            transformBounds(meshes.at(instance.meshIndex).computeBounds(), instance.worldFromObject);
+        if (!world.isEmpty()) bounds.extend(world);
     }
     return bounds;
 }

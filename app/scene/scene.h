@@ -2,12 +2,14 @@
 // settings the scene overrides. Plain data in metres and SI radiometric units (DESIGN.md); no GL.
 #pragma once
 
+#include "scene/animation.h"
 #include "scene/settings.h"
 
 #include <glm/glm.hpp>
 
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,7 +23,17 @@ struct Aabb {
     bool isEmpty() const { return lo.x > hi.x; }
     glm::vec3 getCenter() const { return 0.5f * (lo + hi); }
     glm::vec3 getExtent() const { return hi - lo; }
+    // Corner i takes x from bit 0, y from bit 1, z from bit 2 of i (0: lo, 1: hi).
+    glm::vec3 getCorner(int i) const {
+        return {(i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z};
+    }
 };
+
+inline constexpr int kAabbCornerCount = 8;
+
+// The box around `box`'s eight corners transformed by `m`: exact for translations and scales,
+// conservative under rotation. An empty box stays empty.
+Aabb transformBounds(const Aabb& box, const glm::mat4& m);
 
 // Pinhole camera as gluLookAt + gluPerspective; the aspect ratio comes from the image size.
 struct Camera {
@@ -55,6 +67,9 @@ struct Light {
     float innerDeg = 0.0f;     // spot half-angles
     float outerDeg = 0.0f;
     float photonShare = -1.0f; // < 0: derived from the light's power
+    // Set for lights that move; position and direction above are then its state at the last
+    // Scene::update. Kept on the light so that adding or removing lights keeps the pairing.
+    std::optional<LightAnimation> animation;
 };
 
 // Spot falloff S(a): 1 inside inner, 0 outside outer, smoothstep in cos space between.
@@ -84,7 +99,14 @@ struct Scene {
     std::vector<Instance> instances;
     std::vector<Light> lights;
     Settings settings; // overrides from the `render` block
+    // Instances that move (Instance stays two fields: it is brace-initialised everywhere).
+    std::vector<InstanceAnimation> instanceAnimations;
 
+    bool isAnimated() const;
+    // Sets every animated instance's transform and light's position/direction for time t
+    // (seconds); the same t always gives the same scene. Callers that rendered the scene tell
+    // the renderer (FrameRunner::updateScene). Defined in animation.cpp.
+    void update(double timeS);
     Aabb computeWorldBounds() const;
     size_t countTriangles() const;
 };

@@ -62,13 +62,14 @@ Light parseLight(const JsonNode& node) {
     const NumberRange nonNegative = NumberRange::getAtLeast(0.0);
     Light light;
     if (type == "point") {
-        node.checkKeys({"type", "position", "intensity", "photon_share"}, "a point light");
+        node.checkKeys({"type", "position", "intensity", "photon_share", "animation"},
+                       "a point light");
         light.type = LightType::Point;
         light.position = node.get("position").readVec3();
         light.intensity = node.get("intensity").readVec3(nonNegative);
     } else if (type == "spot") {
         node.checkKeys({"type", "position", "direction", "intensity", "inner_deg", "outer_deg",
-                        "photon_share"},
+                        "photon_share", "animation"},
                        "a spot light");
         light.type = LightType::Spot;
         light.position = node.get("position").readVec3();
@@ -82,7 +83,8 @@ Light parseLight(const JsonNode& node) {
             inner.failGot(strCat("inner_deg <= outer_deg (", formatFloat(light.outerDeg), ")"));
         }
     } else if (type == "sun") {
-        node.checkKeys({"type", "direction", "irradiance", "photon_share"}, "a sun light");
+        node.checkKeys({"type", "direction", "irradiance", "photon_share", "animation"},
+                       "a sun light");
         light.type = LightType::Sun;
         light.direction = node.get("direction").readDirection();
         light.irradiance = node.get("irradiance").readVec3(nonNegative);
@@ -90,6 +92,13 @@ Light parseLight(const JsonNode& node) {
         typeNode.failGot("a light type: point, spot or sun");
     }
     if (auto share = node.find("photon_share")) light.photonShare = share->readFloat(nonNegative);
+    if (auto animation = node.find("animation")) {
+        const AnimationTarget target = light.type == LightType::Point  ? AnimationTarget::PointLight
+                                       : light.type == LightType::Spot ? AnimationTarget::SpotLight
+                                                                       : AnimationTarget::SunLight;
+        light.animation = LightAnimation{light.position, light.direction,
+                                         parseAnimation(*animation, target, light.position)};
+    }
     return light;
 }
 
@@ -138,6 +147,8 @@ Scene parseScene(const nlohmann::json& doc, const std::string& file, const std::
         }
     }
     if (auto render = root.find("render")) parseRender(*render, scene.settings);
+    // A loaded scene is its state at t = 0 (an oscillation's phase may already move it).
+    if (scene.isAnimated()) scene.update(0.0);
     return scene;
 }
 

@@ -229,12 +229,13 @@ void parseObject(const JsonNode& object, size_t index, ParseContext& context) {
     const JsonNode typeNode = object.get("type");
     const std::string type = typeNode.readString();
     Scene& scene = context.scene;
+    const size_t firstInstance = scene.instances.size();
     Mesh mesh;
     mesh.name = object.has("name") ? object.get("name").readString() : strCat("object_", index);
 
     if (type == "mesh") {
         object.checkKeys({"type", "name", "matrix", "translate", "rotate_deg", "scale", "material",
-                          "triangles", "quads", "obj"},
+                          "triangles", "quads", "obj", "animation"},
                          "a mesh object");
         const glm::mat4 worldFromObject = parseTransform(object);
         parseMesh(object, context, mesh);
@@ -243,7 +244,7 @@ void parseObject(const JsonNode& object, size_t index, ParseContext& context) {
             {static_cast<uint32_t>(scene.meshes.size() - 1), worldFromObject});
     } else if (type == "box") {
         object.checkKeys({"type", "name", "matrix", "translate", "rotate_deg", "scale", "material",
-                          "min", "max"},
+                          "min", "max", "animation"},
                          "a box object");
         const glm::mat4 worldFromObject = parseTransform(object);
         parseBox(object, context, mesh);
@@ -251,21 +252,31 @@ void parseObject(const JsonNode& object, size_t index, ParseContext& context) {
         scene.instances.push_back(
             {static_cast<uint32_t>(scene.meshes.size() - 1), worldFromObject});
     } else if (type == "cornell_box") {
-        object.checkKeys({"type", "name", "matrix", "translate", "rotate_deg", "scale"},
-                         "a cornell_box object");
+        object.checkKeys(
+            {"type", "name", "matrix", "translate", "rotate_deg", "scale", "animation"},
+            "a cornell_box object");
         addCornellBox(scene, parseTransform(object));
         if (object.has("name")) scene.meshes.back().name = mesh.name;
     } else if (type == "box_city") {
         object.checkKeys({"type", "name", "matrix", "translate", "rotate_deg", "scale", "blocks",
                           "block_size", "street_width", "alley_width", "lots_per_block",
                           "building_height", "building_inset", "attachments", "attachment_size",
-                          "seed", "material", "ground_material"},
+                          "seed", "material", "ground_material", "animation"},
                          "a box_city object");
         const glm::mat4 worldFromObject = parseTransform(object);
         addBoxCity(scene, parseBoxCityParams(object, context), worldFromObject);
         if (object.has("name")) scene.meshes.back().name = mesh.name;
     } else {
         typeNode.failGot("an object type: mesh, box, cornell_box or box_city");
+    }
+    if (auto animation = object.find("animation")) {
+        // Every instance the object made moves as one; without a pivot it turns about its origin.
+        const glm::vec3 originW(scene.instances.at(firstInstance).worldFromObject[3]);
+        const Animation parsed = parseAnimation(*animation, AnimationTarget::Object, originW);
+        for (size_t i = firstInstance; i < scene.instances.size(); ++i) {
+            scene.instanceAnimations.push_back(
+                {static_cast<uint32_t>(i), scene.instances[i].worldFromObject, parsed});
+        }
     }
 }
 

@@ -30,4 +30,11 @@ uint32_t resolveMaterial(const JsonNode& node, ParseContext& context);
 
 void parseObject(const JsonNode& object, size_t index, ParseContext& context);
 
+// What an `animation` moves decides which motions it may use (docs/scene-format.md).
+enum class AnimationTarget { Object, PointLight, SpotLight, SunLight };
+
+// An `animation` object. rotate_deg_per_s turns about `defaultPivotW` unless a pivot is given.
+Animation parseAnimation(const JsonNode& node, AnimationTarget target,
+                         const glm::vec3& defaultPivotW);
+
 } // namespace ispm

@@ -19,14 +19,13 @@ constexpr GLuint kUnitSource = 0;
 constexpr float kDisplayGamma = 2.2f; // linear views are encoded like the default tone map
 constexpr int kFullscreenVertices = 3;
 
-gl::Program buildBlitProgram(bool isArray) {
+ReloadableProgram buildBlitProgram(bool isArray) {
     std::vector<std::string> defines;
     if (isArray) defines.emplace_back("TEXTURE_ARRAY");
-    return gl::Program::build(getShaderRoot(),
-                              {.label = isArray ? "viewer blit array" : "viewer blit",
-                               .stages = {{gl::ShaderStage::Vertex, "lib/fullscreen.vert"},
-                                          {gl::ShaderStage::Fragment, "viewer/blit.frag"}},
-                               .defines = defines});
+    return ReloadableProgram({.label = isArray ? "viewer blit array" : "viewer blit",
+                              .stages = {{gl::ShaderStage::Vertex, "lib/fullscreen.vert"},
+                                         {gl::ShaderStage::Fragment, "viewer/blit.frag"}},
+                              .defines = defines});
 }
 
 // Scale and bias that bring a channel's typical values into [0, 1].
@@ -47,6 +46,7 @@ const gl::Texture& selectTexture(const FrameRunner& runner, const DebugView& vie
     case DebugView::Source::LightGBuffer:
         return runner.getLightGBuffer().getChannel(view.channel);
     case DebugView::Source::Aov:
+    case DebugView::Source::Reference: // ReferenceView draws these; `aov` is their total
         break;
     }
     return runner.getAov(view.aov);
@@ -59,6 +59,12 @@ std::vector<DebugView> buildDebugViews() {
                                     {"direct", DebugView::Source::Aov, Aov::Direct, 0},
                                     {"indirect", DebugView::Source::Aov, Aov::Indirect, 0},
                                     {"total", DebugView::Source::Aov, Aov::Total, 0}};
+    views.push_back(
+        {"reference", DebugView::Source::Reference, Aov::Total, 0, ReferenceMode::Reference});
+    views.push_back(
+        {"side by side", DebugView::Source::Reference, Aov::Total, 0, ReferenceMode::SideBySide});
+    views.push_back(
+        {"error heat map", DebugView::Source::Reference, Aov::Total, 0, ReferenceMode::HeatMap});
     const auto channels = getGBufferChannels();
     for (size_t i = 0; i < channels.size(); ++i) {
         views.push_back({"gbuffer " + std::string(channels[i].name),
@@ -96,6 +102,7 @@ void DebugViewDrawer::draw(const FrameRunner& runner, const DebugView& view,
     int regionHeight = height;
     switch (view.source) {
     case DebugView::Source::Aov:
+    case DebugView::Source::Reference:
         if (view.aov != Aov::Display) {
             scale = std::exp2(transform.exposureStops);
             inverseGamma = 1.0f / kDisplayGamma;
@@ -115,7 +122,7 @@ void DebugViewDrawer::draw(const FrameRunner& runner, const DebugView& view,
         break;
     }
     }
-    const gl::Program& program = texture.isArray() ? mProgramArray : mProgram2D;
+    const ReloadableProgram& program = texture.isArray() ? mProgramArray : mProgram2D;
     program.use();
     glUniform4f(kLocationRegion, 0.0f, 0.0f, static_cast<float>(regionWidth),
                 static_cast<float>(regionHeight));

@@ -4,23 +4,28 @@
 #pragma once
 
 #include "gl/objects.h"
-#include "gl/program.h"
 #include "render/frame.h"
+#include "render/reloadable_program.h"
 
 #include <string>
 #include <vector>
 
 namespace ispm {
 
+// The views that need a reference image (ReferenceView draws them).
+enum class ReferenceMode { Reference, SideBySide, HeatMap };
+
 struct DebugView {
-    enum class Source { Aov, ViewerGBuffer, LightGBuffer };
+    enum class Source { Aov, ViewerGBuffer, LightGBuffer, Reference };
     std::string name; // as in the menu and in scripts: "display", "gbuffer normal", ...
     Source source = Source::Aov;
     Aov aov = Aov::Display;
     size_t channel = 0; // G-buffer channel index
+    ReferenceMode referenceMode = ReferenceMode::Reference;
 };
 
-// Display first (the default), then the linear AOVs, then the G-buffer channels.
+// Display first (the default), then the linear AOVs, the reference views and the G-buffer
+// channels.
 std::vector<DebugView> buildDebugViews();
 // Index of `name` in `views`, or -1.
 int findDebugView(const std::vector<DebugView>& views, const std::string& name);
@@ -38,10 +43,14 @@ class DebugViewDrawer {
     // [0, width) x [0, height); applies its own state first, so nothing ImGui left matters.
     void draw(const FrameRunner& runner, const DebugView& view, const ViewTransform& transform,
               int width, int height) const;
+    void reloadPrograms(ShaderReloadReport& report) {
+        mProgram2D.reloadIfChanged(report);
+        mProgramArray.reloadIfChanged(report);
+    }
 
   private:
-    gl::Program mProgram2D;
-    gl::Program mProgramArray;
+    ReloadableProgram mProgram2D;
+    ReloadableProgram mProgramArray;
     gl::VertexArray mVertexArray;
     gl::Sampler mSampler;
 };

@@ -72,6 +72,22 @@ ScriptCommand parseLine(const std::string& command, std::istringstream& in,
         }
     } else if (command == "reset_camera") {
         c.kind = Kind::ResetCamera;
+    } else if (command == "reload_shaders") {
+        c.kind = Kind::ReloadShaders;
+    } else if (command == "wait_file") {
+        c.kind = Kind::WaitFile;
+        c.path = parseWord(in, where, "a file to wait for");
+    } else if (command == "load_reference") {
+        c.kind = Kind::LoadReference;
+        c.path = parseWord(in, where, "a reference image (.pfm or .exr)");
+    } else if (command == "render_reference") {
+        c.kind = Kind::RenderReference;
+        c.text = parseWord(in, where, "on or off");
+        if (c.text != "on" && c.text != "off") {
+            throw InputError(strCat(where, ": expected on or off, got '", c.text, "'"));
+        }
+    } else if (command == "compute_metrics") {
+        c.kind = Kind::ComputeMetrics;
     } else if (command == "write_aov") {
         c.kind = Kind::WriteAov;
         c.text = parseWord(in, where, "an AOV (direct, indirect, total or display)");
@@ -86,9 +102,11 @@ ScriptCommand parseLine(const std::string& command, std::istringstream& in,
         c.kind = Kind::Frames;
         c.frames = parseCount(in, where, "the frames to wait");
     } else {
-        throw InputError(strCat(where, ": unknown command '", command,
-                                "' (expected key, mouse_drag, wheel, set, view, reset_camera, "
-                                "write_aov, screenshot, save_settings or frames)"));
+        throw InputError(strCat(
+            where, ": unknown command '", command,
+            "' (expected key, mouse_drag, wheel, set, view, points, reset_camera, reload_shaders, "
+            "wait_file, load_reference, render_reference, write_aov, screenshot, save_settings, "
+            "compute_metrics or frames)"));
     }
     std::string extra;
     if (c.kind != Kind::View && in >> extra) {
@@ -99,7 +117,8 @@ ScriptCommand parseLine(const std::string& command, std::istringstream& in,
 
 bool isOutput(const ScriptCommand& c) {
     using Kind = ScriptCommand::Kind;
-    return c.kind == Kind::WriteAov || c.kind == Kind::Screenshot || c.kind == Kind::SaveSettings;
+    return c.kind == Kind::WriteAov || c.kind == Kind::Screenshot || c.kind == Kind::SaveSettings ||
+           c.kind == Kind::ComputeMetrics;
 }
 
 } // namespace

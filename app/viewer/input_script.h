@@ -1,14 +1,23 @@
 // Scripted viewer input (`ispm view --script FILE`): one command a line, replayed frame by frame
 // through the same paths as the keyboard, mouse and panels, so tests drive the real viewer.
-//   key K N          hold key K (W A S D Q E) for the next N frames
-//   mouse_drag DX DY drag with the left button by DX, DY window pixels during the next frame
-//   wheel N          scroll N steps (camera speed)
-//   set NAME=VALUE   change a setting as the settings panel does
-//   view NAME        choose the debug view (as in the view menu: display, total, gbuffer normal
-//   ...) reset_camera     back to the scene camera write_aov AOV F  write the current frame's AOV
-//   (direct, indirect, total, display) to F screenshot F     write the window (UI included) as PNG
-//   to F save_settings F  write the current settings as a scene `render` block (the panel's "save")
-//   frames N         let N frames pass
+//   key K N              hold key K (W A S D Q E) for the next N frames
+//   mouse_drag DX DY     drag with the left button by DX, DY window pixels during the next frame
+//   wheel N              scroll N steps (camera speed)
+//   set NAME=VALUE       change a setting as the settings panel does
+//   view NAME            choose the debug view (as in the view menu: display, total,
+//                        gbuffer normal, reference, side by side, error heat map ...)
+//   points P             photon points: none, bounce, result or both
+//   reset_camera         back to the scene camera
+//   reload_shaders       what F5 does: rebuild the programs whose shader files changed
+//   wait_file F          stop until file F exists (another process, e.g. a test, edits shaders
+//                        meanwhile); gives up with an error after a minute
+//   load_reference F     load a reference image (.pfm or .exr), as --reference does
+//   render_reference on|off  path-trace the reference progressively inside the viewer
+//   write_aov AOV F      write the current frame's AOV (direct, indirect, total, display) to F
+//   screenshot F         write the window (UI included) as PNG to F
+//   save_settings F      write the current settings as a scene `render` block (the panel's "save")
+//   compute_metrics      compare the total AOV with the reference (relMSE, SSIM) and print them
+//   frames N             let N frames pass
 // Blank lines and lines starting with '#' are ignored.
 #pragma once
 
@@ -27,14 +36,19 @@ struct ScriptCommand {
         View,
         Points,
         ResetCamera,
+        ReloadShaders,
+        WaitFile,
+        LoadReference,
+        RenderReference,
         WriteAov,
         Screenshot,
         SaveSettings,
+        ComputeMetrics,
         Frames
     };
     Kind kind = Kind::Frames;
-    std::string text;  // key, setting assignment, view, points choice or AOV name
-    std::string path;  // write_aov, screenshot, save_settings
+    std::string text;  // key, setting assignment, view, points choice, AOV name, on/off
+    std::string path;  // write_aov, screenshot, save_settings, load_reference, wait_file
     float x = 0.0f;    // drag dx, wheel steps
     float y = 0.0f;    // drag dy
     int frames = 0;    // frames the command lasts; 0 for instantaneous commands
@@ -47,8 +61,8 @@ std::vector<ScriptCommand> loadInputScript(const std::string& path);
 
 // Hands out the commands frame by frame. A frame takes the next commands up to the first that
 // lasts frames (key, mouse_drag, frames: held for that many frames) or through a run of outputs
-// (write_aov, screenshot, save_settings): commands before an output shape the frame it writes,
-// commands after it start the next frame.
+// (write_aov, screenshot, save_settings, compute_metrics): commands before an output shape the
+// frame it writes, commands after it start the next frame.
 class ScriptPlayer {
   public:
     ScriptPlayer() = default;

@@ -19,17 +19,16 @@ constexpr float kPointSizePx = 2.0f;
 constexpr glm::vec4 kBounceTint{1.0f, 0.85f, 0.2f, kPointSizePx}; // yellow: first bounce
 constexpr glm::vec4 kResultTint{0.2f, 0.8f, 1.0f, kPointSizePx};  // cyan: stored photons
 
-gl::Program buildPointsProgram(bool isResult) {
+ReloadableProgram buildPointsProgram(bool isResult) {
     std::vector<std::string> defines;
     if (isResult) defines.emplace_back("RESULT_PHOTONS");
-    return gl::Program::build(
-        getShaderRoot(), {.label = isResult ? "viewer result photons" : "viewer bounce photons",
-                          .stages = {{gl::ShaderStage::Vertex, "viewer/photon_points.vert"},
-                                     {gl::ShaderStage::Fragment, "viewer/photon_points.frag"}},
-                          .defines = defines});
+    return ReloadableProgram({.label = isResult ? "viewer result photons" : "viewer bounce photons",
+                              .stages = {{gl::ShaderStage::Vertex, "viewer/photon_points.vert"},
+                                         {gl::ShaderStage::Fragment, "viewer/photon_points.frag"}},
+                              .defines = defines});
 }
 
-void drawPoints(const gl::Program& program, const glm::vec4& tint, uint32_t count) {
+void drawPoints(const ReloadableProgram& program, const glm::vec4& tint, uint32_t count) {
     if (count == 0) return;
     program.use();
     glUniform4f(kLocationTint, tint.r, tint.g, tint.b, tint.a);

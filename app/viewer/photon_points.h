@@ -3,8 +3,8 @@
 #pragma once
 
 #include "gl/objects.h"
-#include "gl/program.h"
 #include "render/frame.h"
+#include "render/reloadable_program.h"
 
 namespace ispm {
 
@@ -18,10 +18,14 @@ class PhotonPointsDrawer {
     // photons each buffer holds (PhotonCounts of the same frame).
     void draw(const FrameRunner& runner, const PhotonCounts& counts, PhotonPoints which, int width,
               int height) const;
+    void reloadPrograms(ShaderReloadReport& report) {
+        mBounceProgram.reloadIfChanged(report);
+        mResultProgram.reloadIfChanged(report);
+    }
 
   private:
-    gl::Program mBounceProgram;
-    gl::Program mResultProgram;
+    ReloadableProgram mBounceProgram;
+    ReloadableProgram mResultProgram;
     gl::VertexArray mVertexArray;
 };
 

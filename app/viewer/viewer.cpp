@@ -13,10 +13,12 @@
 #include "render/readback.h"
 #include "scene/input_error.h"
 #include "scene/scene_loader.h"
+#include "viewer/animation_panel.h"
 #include "viewer/debug_view.h"
 #include "viewer/fly_camera.h"
 #include "viewer/imgui_layer.h"
 #include "viewer/photon_points.h"
+#include "viewer/reference_view.h"
 #include "viewer/screenshot.h"
 #include "viewer/settings_panel.h"
 #include "viewer/viewer_panels.h"
@@ -38,6 +40,8 @@ constexpr float kScriptFrameSeconds = 1.0f / 60.0f; // scripted keys move as at 
 constexpr float kMaxFrameSeconds = 0.1f;            // a stall must not fling the camera away
 constexpr float kMaxExposureStops = 20.0f;
 constexpr size_t kPathCapacity = 512;
+constexpr double kWaitFileSeconds = 60.0; // wait_file: the other side is surely stuck by then
+constexpr double kWaitPollSeconds = 0.01;
 constexpr std::array<const char*, 4> kPointsNames = {"none", "bounce", "result", "both"};
 
 struct KeyAxis {
@@ -74,6 +78,8 @@ class Viewer {
     void takeScreenshot(const std::string& path);
     void drawScenePicker();
     void switchScene(const std::string& path);
+    void reloadShaders();
+    void waitForFile(const ScriptCommand& c);
 
     Scene mScene;
     ViewerOptions mOptions;
@@ -85,6 +91,10 @@ class Viewer {
     DebugViewDrawer mDrawer;
     PhotonPointsDrawer mPointsDrawer;
     PhotonPoints mPoints = PhotonPoints::None;
+    ReferenceView mReference;
+    bool mReloadRequested = false; // F5
+    std::string mShaderStatus;     // the last reload's result (its errors stay until fixed)
+    bool mShaderError = false;
     std::vector<DebugView> mViews = buildDebugViews();
     int mViewIndex = 0;
     ViewTransform mTransform;
@@ -103,9 +113,15 @@ class Viewer {
     bool mScreenshotRequested = false; // F12
     int mScreenshotCount = 0;
     LightEdit mLightEdit = LightEdit::None;
+    AnimationClock mClock;
     std::array<char, kPathCapacity> mSavePath{"settings.json"};
     std::string mStatus;
 };
+
+bool isSameCamera(const Camera& a, const Camera& b) {
+    return a.position == b.position && a.target == b.target && a.up == b.up &&
+           a.fovYDeg == b.fovYDeg;
+}
 
 gl::WindowOptions makeWindowOptions(const Scene& scene, const ViewerOptions& options) {
     gl::WindowOptions w;
@@ -128,6 +144,7 @@ Viewer::Viewer(Scene scene, const ViewerOptions& options)
       mImGui(installCallbacks()),
       mFly(mScene.camera, glm::length(mScene.computeWorldBounds().getExtent())),
       mScript(options.script) {
+    if (!options.referencePath.empty()) mReference.load(options.referencePath);
     const std::filesystem::path folder =
         std::filesystem::path(mScene.sourcePath).parent_path().empty()
             ? std::filesystem::path(".")
@@ -158,6 +175,9 @@ void Viewer::onKey(GLFWwindow* window, int key, int scancode, int action, int mo
     if (key == GLFW_KEY_F12 && action == GLFW_PRESS) {
         static_cast<Viewer*>(glfwGetWindowUserPointer(window))->mScreenshotRequested = true;
     }
+    if (key == GLFW_KEY_F5 && action == GLFW_PRESS) {
+        static_cast<Viewer*>(glfwGetWindowUserPointer(window))->mReloadRequested = true;
+    }
 }
 
 void Viewer::onScroll(GLFWwindow* window, double dx, double dy) {
@@ -167,6 +187,24 @@ void Viewer::onScroll(GLFWwindow* window, double dx, double dy) {
 
 void Viewer::applySettings(const Settings& settings) {
     mRunner->setSettings(settings);
+    mReference.restart(); // the path tracer reads the settings once, when it is built
+}
+
+// F5: the frame's passes and the viewer's own programs rebuild what changed on disk; a program
+// that fails keeps running its old version, and the log shows in the panel and on stderr.
+void Viewer::reloadShaders() {
+    ShaderReloadReport report = mRunner->reloadShaders();
+    mDrawer.reloadPrograms(report);
+    mPointsDrawer.reloadPrograms(report);
+    mReference.reloadPrograms(report);
+    mShaderError = !report.errors.empty();
+    mShaderStatus = strCat("shaders: rebuilt ", report.rebuilt, " of ", report.checked, " programs",
+                           mShaderError ? strCat(", ", report.errors.size(), " failed (old kept):")
+                                        : std::string());
+    for (const std::string& error : report.errors)
+        mShaderStatus += "\n" + error;
+    std::fprintf(mShaderError ? stderr : stdout, "%s\n", mShaderStatus.c_str());
+    std::fflush(mShaderError ? stderr : stdout);
 }
 
 // The render region is the window minus the panel column: keep width/height in step with it.
@@ -222,6 +260,19 @@ void Viewer::runScriptCommand(const ScriptCommand& c, CameraInput& input,
     case Kind::ResetCamera:
         mFly.reset(mScene.camera);
         break;
+    case Kind::ReloadShaders:
+        reloadShaders();
+        break;
+    case Kind::WaitFile:
+        waitForFile(c);
+        break;
+    case Kind::LoadReference:
+        mReference.load(c.path);
+        break;
+    case Kind::RenderReference:
+        mReference.setRendering(c.text == "on");
+        break;
+    case Kind::ComputeMetrics:
     case Kind::WriteAov:
     case Kind::Screenshot:
     case Kind::SaveSettings:
@@ -232,9 +283,25 @@ void Viewer::runScriptCommand(const ScriptCommand& c, CameraInput& input,
     }
 }
 
+// Blocks the frame loop (the window stays responsive) until another process created the file.
+void Viewer::waitForFile(const ScriptCommand& c) {
+    const double start = glfwGetTime();
+    while (!std::filesystem::exists(c.path)) {
+        if (glfwGetTime() - start > kWaitFileSeconds) {
+            throw InputError(strCat(c.where, ": gave up waiting for ", c.path));
+        }
+        glfwWaitEventsTimeout(kWaitPollSeconds);
+    }
+}
+
 void Viewer::writeScriptOutput(const ScriptCommand& c) {
     if (c.kind == ScriptCommand::Kind::Screenshot) {
         takeScreenshot(c.path);
+        return;
+    }
+    if (c.kind == ScriptCommand::Kind::ComputeMetrics) {
+        std::printf("reference: %s\n", mReference.computeMetrics(*mRunner).c_str());
+        std::fflush(stdout);
         return;
     }
     if (c.kind == ScriptCommand::Kind::SaveSettings) {
@@ -304,8 +371,19 @@ void Viewer::drawPanels() {
             const int layers = mRunner->getLightGBuffer().getLayers();
             ImGui::SliderInt("light camera", &mTransform.lightLayer, 0, std::max(0, layers - 1));
         }
-        ImGui::TextDisabled("F12: screenshot   drag: look   WASD/QE: fly   wheel: speed");
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        ImGui::TextWrapped("F12: screenshot   F5: reload shaders   drag: look   WASD/QE: fly   "
+                           "wheel: speed");
+        ImGui::PopStyleColor();
+        if (!mShaderStatus.empty()) {
+            const ImVec4 kErrorColour(1.0f, 0.4f, 0.4f, 1.0f);
+            const ImVec4 kOkColour(0.6f, 0.9f, 0.6f, 1.0f);
+            ImGui::PushStyleColor(ImGuiCol_Text, mShaderError ? kErrorColour : kOkColour);
+            ImGui::TextWrapped("%s", mShaderStatus.c_str());
+            ImGui::PopStyleColor();
+        }
     }
+    if (ImGui::CollapsingHeader("Reference")) mReference.drawPanel(*mRunner);
     if (ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen)) {
         float speed = mFly.getSpeed();
         if (ImGui::DragFloat("speed m/s", &speed, speed * 0.01f, 1e-4f, 1e6f, "%.3g")) {
@@ -332,6 +410,7 @@ void Viewer::drawPanels() {
                             glm::length(mScene.computeWorldBounds().getExtent()));
         if (edit != LightEdit::None && mLightEdit != LightEdit::AddedOrRemoved) mLightEdit = edit;
     }
+    if (mScene.isAnimated() && ImGui::CollapsingHeader("Animation")) drawAnimationPanel(mClock);
     if (ImGui::CollapsingHeader("Stats", ImGuiTreeNodeFlags_DefaultOpen)) {
         drawStatsPanel(mTimings, mCounts, mContext.getInfo().renderer,
                        gl::getTimingMethodName(mRunner->getTimingMethod()),
@@ -368,7 +447,8 @@ void Viewer::switchScene(const std::string& path) {
     next.settings.merge(mOptions.commandLine);
     next.settings.set("width", mRunner->getWidth(), "viewer window");
     next.settings.set("height", mRunner->getHeight(), "viewer window");
-    mRunner.reset(); // holds a reference to mScene
+    mReference.restart(); // its path tracer holds a reference to mScene too
+    mRunner.reset();      // holds a reference to mScene
     mScene = std::move(next);
     mRunner = std::make_unique<FrameRunner>(mScene, mScene.settings, mTiming);
     mFly = FlyCamera(mScene.camera, glm::length(mScene.computeWorldBounds().getExtent()));
@@ -394,22 +474,39 @@ int Viewer::run() {
         std::vector<const ScriptCommand*> afterFrame;
         for (const ScriptCommand* c : mScript.advanceFrame())
             runScriptCommand(*c, scripted, afterFrame);
+        if (mReloadRequested) reloadShaders();
+        mReloadRequested = false;
+        const Camera before = mScene.camera;
         mFly.update(scripted, kScriptFrameSeconds, mScene.camera);
         mFly.update(readUserInput(), seconds, mScene.camera);
+        if (!isSameCamera(before, mScene.camera) || mLightEdit != LightEdit::None) {
+            mReference.restart();
+        }
         if (mLightEdit == LightEdit::Values) mRunner->updateScene();
         if (mLightEdit == LightEdit::AddedOrRemoved) mRunner->rebuildScene();
         mLightEdit = LightEdit::None;
+        if (mScene.isAnimated() && advanceAnimationClock(mClock, seconds)) {
+            mScene.update(mClock.timeS);
+            mRunner->updateScene();
+            mReference.restart(); // a path-traced reference of another moment would be stale
+        }
 
         mRunner->renderFrame();
         mTimings.record(mRunner->getLastTimings());
         mCounts = mRunner->readPhotonCounts();
+        mReference.update(mScene, *mRunner);
 
         gl::applyState({});
         gl::bindDefaultFramebuffer(mWindowWidth, mWindowHeight);
         glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT);
-        mDrawer.draw(*mRunner, mViews[static_cast<size_t>(mViewIndex)], mTransform,
-                     mRunner->getWidth(), mRunner->getHeight());
+        const DebugView& view = mViews[static_cast<size_t>(mViewIndex)];
+        if (view.source == DebugView::Source::Reference) {
+            mReference.draw(*mRunner, view.referenceMode, mTransform.exposureStops,
+                            mRunner->getWidth(), mRunner->getHeight());
+        } else {
+            mDrawer.draw(*mRunner, view, mTransform, mRunner->getWidth(), mRunner->getHeight());
+        }
         // Points are placed with the viewer camera: not over a light camera's image.
         if (mViews[static_cast<size_t>(mViewIndex)].source != DebugView::Source::LightGBuffer) {
             mPointsDrawer.draw(*mRunner, mCounts, mPoints, mRunner->getWidth(),
@@ -418,6 +515,9 @@ int Viewer::run() {
         gl::bindDefaultFramebuffer(mWindowWidth, mWindowHeight);
         mImGui.beginFrame();
         drawPanels();
+        if (view.referenceMode == ReferenceMode::HeatMap && mReference.hasReference()) {
+            mReference.drawLegendLabels(mRunner->getHeight());
+        }
         mImGui.endFrame();
 
         for (const ScriptCommand* c : afterFrame)

@@ -14,6 +14,7 @@ namespace ispm {
 struct ViewerOptions {
     int maxFrames = -1;         // < 0: until the window is closed
     std::string screenshotPath; // written from the last frame when maxFrames ends the run
+    std::string referencePath;  // .pfm/.exr for the reference views, or empty
     std::vector<ScriptCommand> script;
     bool visible = true;
     // Layered over a scene picked in the viewer's scene picker, as over the first one.

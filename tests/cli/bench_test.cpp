@@ -139,6 +139,23 @@ TEST_F(BenchTest, PresetAppliesOnlyKnownSettings) {
     EXPECT_EQ(applied.size() + skipped.size(), 4u) << j.dump();
 }
 
+TEST_F(BenchTest, AnimateTimesTheSceneUpdateFirst) {
+    const std::string scene = std::string(ISPM_ASSET_DIR) + "/scenes/dynamic.json";
+    const nlohmann::json still = runJson(scene + kSmallRun);
+    const nlohmann::json moving = runJson(scene + kSmallRun + " --animate");
+    ASSERT_FALSE(still.is_discarded());
+    ASSERT_FALSE(moving.is_discarded());
+    EXPECT_EQ(still["animate"], false);
+    EXPECT_EQ(moving["animate"], true);
+    // The update runs before the passes: its row comes first, and only when animating.
+    EXPECT_NE(still["passes"][0]["name"], "scene update");
+    EXPECT_EQ(moving["passes"][0]["name"], "scene update");
+    EXPECT_EQ(moving["passes"].size(), still["passes"].size() + 1);
+    const RunResult r = run("bench " + mScene + " --animate --csv x.csv", true);
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("--animate"), std::string::npos) << r.output;
+}
+
 TEST_F(BenchTest, BadCountsExitTwoWithOneLine) {
     for (const std::string& args :
          {mScene + " --frames 0", mScene + " --frames abc", mScene + " --frames -3"}) {

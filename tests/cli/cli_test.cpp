@@ -115,6 +115,8 @@ TEST_F(CliTest, BadCommandLineValuesExitTwo) {
     expectBadInput("render " + scene + " -o x.png --set gamma=-1", {"gamma"});
     expectBadInput("render " + scene + " -o x.png --set tonemap=sepia", {"tonemap", "sepia"});
     expectBadInput("render " + scene + " -o x.pfm --aov sideways", {"--aov"});
+    expectBadInput("render " + scene + " -o x.png --time -1", {"--time"});
+    expectBadInput("render " + scene + " -o x.png --time soon", {"--time"});
     expectBadInput("frobnicate", {"frobnicate"});
 }
 

@@ -1,5 +1,6 @@
 // Analytic render tests of direct light: energy and units errors show here before any golden.
 #include "support/gl_fixture.h"
+#include "support/analytic_scenes.h"
 #include "support/render_support.h"
 
 #include "scene/scene_loader.h"
@@ -13,37 +14,13 @@ namespace {
 
 class DirectLightTest : public GlTest {};
 
-// A diffuse plane y = 0 of reflectance rho under a point light of intensity I at height h.
-Scene makePlaneScene(float rho, float intensity, float heightM, float halfSizeM) {
-    Scene scene;
-    scene.sourcePath = "analytic plane";
-    Material m;
-    m.name = "plane";
-    m.diffuse = glm::vec3(rho);
-    scene.materials.push_back(m);
-    Mesh mesh;
-    mesh.name = "plane";
-    const float s = halfSizeM;
-    mesh.positions = {{-s, 0, -s}, {s, 0, -s}, {s, 0, s}, {-s, 0, s}};
-    mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
-    mesh.triangleMaterials = {0, 0};
-    scene.meshes.push_back(mesh);
-    scene.instances.push_back({0, glm::mat4(1.0f)});
-    Light light;
-    light.type = LightType::Point;
-    light.position = {0.0f, heightM, 0.0f};
-    light.intensity = glm::vec3(intensity);
-    scene.lights.push_back(light);
-    return scene;
-}
-
 TEST_F(DirectLightTest, PointLightOverDiffusePlaneMatchesClosedForm) {
     constexpr float kRho = 0.5f;
     constexpr float kIntensity = 10.0f; // W/sr
     constexpr float kHeight = 1.0f;     // m
     constexpr float kPlaneHalf = 10.0f; // much wider than the view: no edge in the image
     constexpr int kSize = 64;
-    Scene scene = makePlaneScene(kRho, kIntensity, kHeight, kPlaneHalf);
+    Scene scene = makeLitPlane(kRho, kIntensity, kHeight, kPlaneHalf);
     scene.camera.position = {0.3f, 3.0f, 0.2f};
     scene.camera.target = {0.3f, 0.0f, 0.2f};
     scene.camera.up = {0.0f, 0.0f, 1.0f};
@@ -53,25 +30,11 @@ TEST_F(DirectLightTest, PointLightOverDiffusePlaneMatchesClosedForm) {
     settings.set("height", kSize, "test");
     const Image image = renderAov(scene, settings, Aov::Direct);
 
-    // Where each pixel centre's ray meets the plane, by the same camera math.
-    float nearM = 0.0f;
-    float farM = 0.0f;
-    computeCameraRange(scene.camera, scene.computeWorldBounds(), nearM, farM);
-    const glm::mat4 worldFromClip = glm::inverse(computeClipFromView(scene.camera, 1.0f, nearM, farM) *
-                                                 computeViewFromWorld(scene.camera));
     int checked = 0;
     for (int y = 0; y < kSize; ++y) {
         for (int x = 0; x < kSize; ++x) {
-            const float size = static_cast<float>(kSize);
-            const glm::vec2 ndc((static_cast<float>(x) + 0.5f) / size * 2.0f - 1.0f,
-                                1.0f - (static_cast<float>(y) + 0.5f) / size * 2.0f);
-            glm::vec4 a = worldFromClip * glm::vec4(ndc, -1.0f, 1.0f);
-            glm::vec4 b = worldFromClip * glm::vec4(ndc, 1.0f, 1.0f);
-            const glm::vec3 p0 = glm::vec3(a) / a.w;
-            const glm::vec3 p1 = glm::vec3(b) / b.w;
-            const glm::vec3 p = p0 + (p1 - p0) * (p0.y / (p0.y - p1.y));
-            const float d = glm::length(glm::vec3(0.0f, kHeight, 0.0f) - p);
-            const float expected = kRho / float(M_PI) * kIntensity * kHeight / (d * d * d);
+            const glm::dvec3 p = projectToGround(scene, kSize, kSize, x + 0.5, y + 0.5);
+            const auto expected = float(computePlaneRadiance(kRho, kIntensity, kHeight, p));
             const glm::vec3 actual = image.at(x, y);
             // 1%: the G-buffer stores positions in 32-bit float and normals in 16-bit float
             // (relative error ~1e-3); the radiometry itself must be exact.
@@ -88,7 +51,7 @@ TEST_F(DirectLightTest, PointLightOverDiffusePlaneMatchesClosedForm) {
 
 TEST_F(DirectLightTest, OccluderCastsFullShadow) {
     // A small box between the light and the plane: the point under it gets no direct light.
-    Scene scene = makePlaneScene(0.5f, 10.0f, 2.0f, 10.0f);
+    Scene scene = makeLitPlane(0.5f, 10.0f, 2.0f, 10.0f);
     Mesh box;
     box.name = "occluder";
     const float s = 0.2f;

@@ -1,6 +1,7 @@
 // Energy of the photon pipeline, against closed forms: photons inside a closed diffuse box, and
 // one splat on a plane.
 #include "support/gl_fixture.h"
+#include "support/analytic_scenes.h"
 #include "support/render_support.h"
 
 #include "render/readback.h"
@@ -85,23 +86,14 @@ TEST_F(PhotonEnergyTest, StoredPowerIsLightPowerTimesGeometricSeries) {
     }
 }
 
-// Pixel footprint on the plane y = 0 for a camera looking straight down: exact, from the
-// corners of the pixel projected onto the plane.
-double computePixelArea(const glm::mat4& worldFromClip, int x, int y, int size) {
-    auto project = [&](float px, float py) {
-        const glm::vec2 ndc(px / float(size) * 2.0f - 1.0f, py / float(size) * 2.0f - 1.0f);
-        const glm::vec4 a = worldFromClip * glm::vec4(ndc, -1.0f, 1.0f);
-        const glm::vec4 b = worldFromClip * glm::vec4(ndc, 1.0f, 1.0f);
-        const glm::dvec3 p0 = glm::dvec3(glm::vec3(a) / a.w);
-        const glm::dvec3 p1 = glm::dvec3(glm::vec3(b) / b.w);
-        return p0 + (p1 - p0) * (p0.y / (p0.y - p1.y));
-    };
-    const float fx = float(x);
-    const float fy = float(y);
-    const glm::dvec3 c00 = project(fx, fy);
-    const glm::dvec3 c10 = project(fx + 1.0f, fy);
-    const glm::dvec3 c01 = project(fx, fy + 1.0f);
-    const glm::dvec3 c11 = project(fx + 1.0f, fy + 1.0f);
+// Pixel footprint on the plane y = 0: exact, from the pixel's corners projected onto the plane.
+double computePixelArea(const Scene& scene, int x, int y, int size) {
+    const double fx = x;
+    const double fy = y;
+    const glm::dvec3 c00 = projectToGround(scene, size, size, fx, fy);
+    const glm::dvec3 c10 = projectToGround(scene, size, size, fx + 1.0, fy);
+    const glm::dvec3 c01 = projectToGround(scene, size, size, fx, fy + 1.0);
+    const glm::dvec3 c11 = projectToGround(scene, size, size, fx + 1.0, fy + 1.0);
     return 0.5 * glm::length(glm::cross(c11 - c00, c01 - c10));
 }
 
@@ -109,17 +101,8 @@ TEST_F(PhotonEnergyTest, OneSplatOnAPlaneIntegratesToBrdfTimesPower) {
     constexpr float kRho = 0.5f;
     constexpr int kSize = 128;
     constexpr float kRadiusM = 0.3f; // ~40 pixels across: the kernel is well resolved
-    Scene scene;
-    scene.sourcePath = "splat plane";
-    Material m;
-    m.diffuse = glm::vec3(kRho);
-    scene.materials.push_back(m);
-    Mesh plane;
-    plane.positions = {{-5, 0, -5}, {5, 0, -5}, {5, 0, 5}, {-5, 0, 5}};
-    plane.triangles = {{0, 1, 2}, {0, 2, 3}};
-    plane.triangleMaterials = {0, 0};
-    scene.meshes.push_back(plane);
-    scene.instances.push_back({0, glm::mat4(1.0f)});
+    // The plane's own light is left out: the frame below stores no photons (bounces = 0).
+    Scene scene = makeLitPlane(kRho, 0.0f, 1.0f, 5.0f);
     // Far and narrow: close to the orthographic camera the closed form assumes; the pixel areas
     // below are exact anyway.
     scene.camera.position = {0.0f, 20.0f, 0.0f};
@@ -156,18 +139,14 @@ TEST_F(PhotonEnergyTest, OneSplatOnAPlaneIntegratesToBrdfTimesPower) {
     splat.execute(runner.getFrameInputs());
     const std::vector<glm::vec4> radiance = splat.getOutput().readRgba();
 
-    float nearM = 0.0f;
-    float farM = 0.0f;
-    computeCameraRange(scene.camera, scene.computeWorldBounds(), nearM, farM);
-    const glm::mat4 worldFromClip = glm::inverse(computeClipFromView(scene.camera, 1.0f, nearM, farM) *
-                                                 computeViewFromWorld(scene.camera));
     glm::dvec3 flux(0.0);
     int covered = 0;
     for (int y = 0; y < kSize; ++y) {
         for (int x = 0; x < kSize; ++x) {
             const glm::vec4 L = radiance[size_t(y * kSize + x)];
             if (L.x > 0.0f) ++covered;
-            flux += glm::dvec3(glm::vec3(L)) * computePixelArea(worldFromClip, x, y, kSize);
+            // GL rows start at the bottom; projectToGround counts rows from the top.
+            flux += glm::dvec3(glm::vec3(L)) * computePixelArea(scene, x, kSize - 1 - y, kSize);
         }
     }
     EXPECT_GT(covered, 1000) << "the splat covers a disc of many pixels";

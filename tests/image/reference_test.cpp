@@ -1,5 +1,6 @@
 // The reference path tracer against closed forms, and ispm's direct light against it.
 #include "support/gl_fixture.h"
+#include "support/analytic_scenes.h"
 #include "support/render_support.h"
 
 #include "render/reference_pass.h"
@@ -98,21 +99,7 @@ TEST_F(ReferenceTest, PointLightOverPlaneMatchesClosedForm) {
     // Radiance changes by ~5% across an edge pixel; the mean of kSpp uniform jitters has a
     // standard deviation of ~0.2% of it, well inside the 1% below.
     constexpr int kSpp = 256;
-    Scene scene;
-    scene.sourcePath = "plane";
-    Material m;
-    m.diffuse = glm::vec3(kRho);
-    scene.materials.push_back(m);
-    Mesh plane;
-    plane.positions = {{-10, 0, -10}, {10, 0, -10}, {10, 0, 10}, {-10, 0, 10}};
-    plane.triangles = {{0, 1, 2}, {0, 2, 3}};
-    plane.triangleMaterials = {0, 0};
-    scene.meshes.push_back(plane);
-    scene.instances.push_back({0, glm::mat4(1.0f)});
-    Light light;
-    light.position = {0.0f, kHeight, 0.0f};
-    light.intensity = glm::vec3(kIntensity);
-    scene.lights.push_back(light);
+    Scene scene = makeLitPlane(kRho, kIntensity, kHeight, 10.0f);
     scene.camera.position = {0.3f, 3.0f, 0.2f};
     scene.camera.target = {0.3f, 0.0f, 0.2f};
     scene.camera.up = {0.0f, 0.0f, 1.0f};
@@ -121,22 +108,10 @@ TEST_F(ReferenceTest, PointLightOverPlaneMatchesClosedForm) {
     settings.set("width", kSize, "test");
     settings.set("height", kSize, "test");
     const Image image = renderReference(scene, settings, kSpp, 0);
-    float nearM = 0.0f;
-    float farM = 0.0f;
-    computeCameraRange(scene.camera, scene.computeWorldBounds(), nearM, farM);
-    const glm::mat4 worldFromClip = glm::inverse(computeClipFromView(scene.camera, 1.0f, nearM, farM) *
-                                                 computeViewFromWorld(scene.camera));
     for (int y = 0; y < kSize; ++y) {
         for (int x = 0; x < kSize; ++x) {
-            const float size = float(kSize);
-            const glm::vec2 ndc((float(x) + 0.5f) / size * 2.0f - 1.0f, 1.0f - (float(y) + 0.5f) / size * 2.0f);
-            const glm::vec4 a = worldFromClip * glm::vec4(ndc, -1.0f, 1.0f);
-            const glm::vec4 b = worldFromClip * glm::vec4(ndc, 1.0f, 1.0f);
-            const glm::vec3 p0 = glm::vec3(a) / a.w;
-            const glm::vec3 p1 = glm::vec3(b) / b.w;
-            const glm::vec3 p = p0 + (p1 - p0) * (p0.y / (p0.y - p1.y));
-            const float d = glm::length(glm::vec3(0.0f, kHeight, 0.0f) - p);
-            const float expected = kRho / glm::pi<float>() * kIntensity * kHeight / (d * d * d);
+            const glm::dvec3 p = projectToGround(scene, kSize, kSize, x + 0.5, y + 0.5);
+            const auto expected = float(computePlaneRadiance(kRho, kIntensity, kHeight, p));
             // 1%: pixels are box filtered while the closed form is taken at the pixel centre; the
             // radiance's curvature across one pixel is ~0.1% here, the jitter noise ~0.2%.
             ASSERT_NEAR(image.at(x, y).x, expected, 0.01f * expected) << x << "," << y;

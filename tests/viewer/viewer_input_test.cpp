@@ -37,6 +37,26 @@ TEST(InputScript, ParsesEveryCommand) {
     EXPECT_EQ(commands[9].frames, 4);
 }
 
+TEST(InputScript, ParsesReloadAndReferenceCommands) {
+    const auto commands = parseInputScript("reload_shaders\nwait_file done\nload_reference r.pfm\n"
+                                           "render_reference on\ncompute_metrics\n",
+                                           "s.txt");
+    ASSERT_EQ(commands.size(), 5u);
+    EXPECT_EQ(commands[0].kind, Kind::ReloadShaders);
+    EXPECT_EQ(commands[1].kind, Kind::WaitFile);
+    EXPECT_EQ(commands[1].path, "done");
+    EXPECT_EQ(commands[2].kind, Kind::LoadReference);
+    EXPECT_EQ(commands[2].path, "r.pfm");
+    EXPECT_EQ(commands[3].kind, Kind::RenderReference);
+    EXPECT_EQ(commands[3].text, "on");
+    EXPECT_EQ(commands[4].kind, Kind::ComputeMetrics);
+    EXPECT_THROW(parseInputScript("render_reference maybe\n", "s.txt"), InputError);
+    // compute_metrics is an output: it ends its frame like write_aov.
+    ScriptPlayer player(parseInputScript("compute_metrics\nreset_camera\n", "s.txt"));
+    EXPECT_EQ(player.advanceFrame().size(), 1u);
+    EXPECT_EQ(player.advanceFrame().size(), 1u);
+}
+
 TEST(InputScript, NamesFileAndLineOnErrors) {
     const char* bad[] = {"jump 3",       "key X 3",    "key W",          "key W -1",
                          "mouse_drag 1", "frames 2 3", "write_aov total"};

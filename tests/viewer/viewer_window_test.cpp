@@ -4,12 +4,12 @@
 #include "image/image_io.h"
 #include "image/metrics.h"
 #include "scene/scene_loader.h"
+#include "viewer/run_ispm.h"
 
 #include <glm/glm.hpp>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <array>
@@ -23,25 +23,6 @@ namespace {
 
 constexpr int kSize = 128; // render region; the panel column is added to the window's width
 const std::string kCornell = std::string(ISPM_ASSET_DIR) + "/scenes/cornell.json";
-
-struct RunResult {
-    int exitCode = -1;
-    std::string output; // stdout and stderr together
-};
-
-RunResult run(const std::string& args) {
-    const std::string command = std::string(ISPM_EXECUTABLE) + " " + args + " 2>&1";
-    RunResult result;
-    FILE* pipe = ::popen(command.c_str(), "r");
-    if (!pipe) return result;
-    std::array<char, 4096> buffer{};
-    while (std::fgets(buffer.data(), static_cast<int>(buffer.size()), pipe)) {
-        result.output += buffer.data();
-    }
-    const int status = ::pclose(pipe);
-    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return result;
-}
 
 // Fraction of pixels in columns [x0, x1) that satisfy `test`.
 double computeFraction(const Image& image, int x0, int x1,

@@ -1,0 +1,183 @@
+// ReferenceView: the reference texture (loaded, or the path tracer's running sum), its three
+// views in one full-screen program, and the metrics read back on request.
+#include "viewer/reference_view.h"
+
+#include "core/strings.h"
+#include "gl/gl.h"
+#include "gl/state.h"
+#include "image/image_io.h"
+#include "image/metrics.h"
+#include "render/readback.h"
+#include "scene/input_error.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+namespace ispm {
+namespace {
+
+// Uniform locations and units of shaders/viewer/reference_view.frag.
+constexpr GLint kLocationRegion = 0;
+constexpr GLint kLocationParams = 1;
+constexpr GLuint kUnitTotal = 0;
+constexpr GLuint kUnitReference = 1;
+constexpr float kDisplayGamma = 2.2f; // as the other linear views (debug_view.cpp)
+constexpr int kFullscreenVertices = 3;
+constexpr float kLegendHeightPx = 12.0f; // the legend bar of reference_view.frag
+// The path tracer restarts only after the camera has been still this long: flying would
+// otherwise rebuild its GPU scene every frame for a single sample.
+constexpr int kStillFramesBeforeRestart = 2;
+constexpr int kMaxSamplesPerFrame = 64;
+// "Follow" refreshes the metrics this often: a read-back of two images and an SSIM per frame
+// would halve the frame rate.
+constexpr int kAutoMetricsFrames = 30;
+constexpr float kMinHeatMax = 0.01f;
+constexpr float kMaxHeatMax = 10.0f;
+
+} // namespace
+
+ReferenceView::ReferenceView()
+    : mProgram({.label = "viewer reference",
+                .stages = {{gl::ShaderStage::Vertex, "lib/fullscreen.vert"},
+                           {gl::ShaderStage::Fragment, "viewer/reference_view.frag"}}}),
+      mVertexArray("viewer reference vao"),
+      mSampler("viewer reference sampler", gl::Filter::Nearest, gl::Wrap::ClampToEdge) {}
+
+void ReferenceView::load(const std::string& path) {
+    Image image = readImage(path); // throws InputError naming the file
+    // Texture rows start at the bottom, Image rows at the top; alpha 1 reads as one sample.
+    std::vector<glm::vec4> texels(image.getPixelCount());
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            texels[static_cast<size_t>((image.height - 1 - y) * image.width + x)] =
+                glm::vec4(image.at(x, y), 1.0f);
+        }
+    }
+    mLoaded = gl::Texture::create2D("viewer loaded reference", gl::Format::RGBA32F, image.width,
+                                    image.height);
+    mLoaded.uploadRgba(texels);
+    mLoadedImage = std::move(image);
+    mLoadedPath = path;
+    mStatus = strCat("loaded ", path, " (", mLoadedImage.width, "x", mLoadedImage.height, ")");
+}
+
+void ReferenceView::setRendering(bool rendering) {
+    mRendering = rendering;
+    if (!rendering) mPass.reset();
+}
+
+void ReferenceView::restart() {
+    mPass.reset();
+    mStillFrames = 0;
+}
+
+void ReferenceView::update(const Scene& scene, const FrameRunner& runner) {
+    if (mRendering && (mPass || ++mStillFrames >= kStillFramesBeforeRestart)) {
+        if (!mPass) {
+            try {
+                mPass = std::make_unique<ReferencePass>(scene, runner.getSettings());
+            } catch (const gl::Error& e) {
+                // Its shader is read anew at every restart: an edit in progress must not end
+                // the session.
+                mStatus = e.what();
+                mRendering = false;
+                return;
+            }
+        }
+        for (int i = 0; i < mSamplesPerFrame; ++i)
+            mPass->addSample();
+    }
+    if (mAutoMetrics && hasReference() && ++mFramesSinceMetrics >= kAutoMetricsFrames) {
+        computeMetrics(runner);
+    }
+}
+
+const gl::Texture* ReferenceView::getSource() const {
+    if (mRendering) return mPass ? &mPass->getAccumulation() : nullptr;
+    return mLoadedImage.isEmpty() ? nullptr : &mLoaded;
+}
+
+std::string ReferenceView::computeMetrics(const FrameRunner& runner) {
+    mFramesSinceMetrics = 0;
+    if (!hasReference()) {
+        mMetricsText = "no reference: load one or render it";
+    } else {
+        const Image total = readTextureImage(runner.getAov(Aov::Total));
+        const Image reference = mRendering ? mPass->readMean() : mLoadedImage;
+        try {
+            const ImageMetrics m = ispm::computeMetrics(total, reference);
+            mMetricsText = strCat("relMSE ", m.relMse, "  SSIM ", m.ssim);
+            if (mRendering) mMetricsText += strCat("  (", mPass->getSampleCount(), " spp)");
+        } catch (const InputError& e) {
+            mMetricsText = e.what(); // another size: names both
+        }
+    }
+    return mMetricsText;
+}
+
+void ReferenceView::draw(const FrameRunner& runner, ReferenceMode mode, float exposureStops,
+                         int width, int height) const {
+    const gl::Texture* source = getSource();
+    if (source == nullptr) return; // the panel says why the region is black
+    gl::applyState({});
+    gl::bindDefaultFramebuffer(width, height);
+    mProgram.use();
+    glUniform4f(kLocationRegion, 0.0f, 0.0f, static_cast<float>(width), static_cast<float>(height));
+    glUniform4f(kLocationParams, std::exp2(exposureStops), 1.0f / kDisplayGamma,
+                static_cast<float>(mode), mHeatMax);
+    runner.getAov(Aov::Total).bindUnit(kUnitTotal);
+    source->bindUnit(kUnitReference);
+    mSampler.bindUnit(kUnitTotal);
+    mSampler.bindUnit(kUnitReference);
+    mVertexArray.bind();
+    gl::drawArrays(gl::Primitive::Triangles, 0, kFullscreenVertices);
+    // Passes bind their own samplers or none: leave the units as they expect them.
+    glBindSampler(kUnitTotal, 0);
+    glBindSampler(kUnitReference, 0);
+}
+
+void ReferenceView::drawLegendLabels(int height) const {
+    ImDrawList* list = ImGui::GetForegroundDrawList();
+    const float y = static_cast<float>(height) - kLegendHeightPx - ImGui::GetTextLineHeight();
+    const std::string label = strCat("0 .. ", mHeatMax, " relative error");
+    list->AddText(ImVec2(2.0f, y), IM_COL32_WHITE, label.c_str());
+}
+
+void ReferenceView::drawPanel(const FrameRunner& runner) {
+    ImGui::InputText("##reference", mPathInput.data(), mPathInput.size());
+    ImGui::SameLine();
+    if (ImGui::Button("load")) {
+        try {
+            load(mPathInput.data());
+            setRendering(false);
+        } catch (const InputError& e) {
+            mStatus = e.what();
+        }
+    }
+    bool rendering = mRendering;
+    if (ImGui::Checkbox("render (path tracer)", &rendering)) setRendering(rendering);
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
+    ImGui::SliderInt("spp/frame", &mSamplesPerFrame, 1, kMaxSamplesPerFrame);
+    if (mRendering) {
+        ImGui::Text("%d samples per pixel%s", mPass ? mPass->getSampleCount() : 0,
+                    mPass ? "" : " (waiting for the camera to stop)");
+    } else if (!mLoadedPath.empty()) {
+        ImGui::Text("file: %s", mLoadedPath.c_str());
+    } else {
+        ImGui::TextDisabled("no reference: load a .pfm/.exr or render one");
+    }
+    ImGui::SliderFloat("heat map max", &mHeatMax, kMinHeatMax, kMaxHeatMax, "%.3g",
+                       ImGuiSliderFlags_Logarithmic);
+    if (ImGui::Button("compute relMSE / SSIM")) computeMetrics(runner);
+    ImGui::SameLine();
+    ImGui::Checkbox("follow", &mAutoMetrics);
+    if (!mMetricsText.empty()) ImGui::TextWrapped("%s", mMetricsText.c_str());
+    if (!mStatus.empty()) ImGui::TextWrapped("%s", mStatus.c_str());
+}
+
+} // namespace ispm

@@ -1,0 +1,20 @@
+// Scenes with closed-form answers, shared by the analytic tests: a diffuse ground plane under a
+// point light, and where a camera ray through an image position meets that plane.
+#pragma once
+
+#include "scene/scene.h"
+
+namespace ispm::test {
+
+// The plane y = 0 (two triangles, half-size halfSizeM), diffuse reflectance rho, under a point
+// light of intensity I (W/sr) at (0, heightM, 0). Camera left at its defaults.
+Scene makeLitPlane(float rho, float intensity, float heightM, float halfSizeM);
+
+// Where the camera ray through image position (px, py) meets y = 0; (px, py) in pixels with
+// (0, 0) at the image's top-left corner, so pixel centres are at +0.5.
+glm::dvec3 projectToGround(const Scene& scene, int width, int height, double px, double py);
+
+// Radiance of a diffuse plane under a point light: rho / pi * I * h / d^3.
+double computePlaneRadiance(float rho, float intensity, float heightM, const glm::dvec3& point);
+
+} // namespace ispm::test
