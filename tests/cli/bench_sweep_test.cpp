@@ -2,6 +2,7 @@
 // tracer checkpoint with finite numbers, tools/plot_bench.py turns it into a PNG, and bad inputs
 // (reference size, unknown setting, missing file) exit 2 with one line before any rendering.
 #include "image/image_io.h"
+#include "support/run_ispm.h"
 
 #include <gtest/gtest.h>
 
@@ -23,27 +24,12 @@
 namespace ispm::test {
 namespace {
 
-struct RunResult {
-    int exitCode = -1;
-    std::string output;
-};
-
-// With `mergeStderr` false, stderr goes to /dev/null so `output` is exactly what stdout got.
 RunResult runCommand(const std::string& command, bool mergeStderr) {
-    RunResult result;
-    FILE* pipe = ::popen((command + (mergeStderr ? " 2>&1" : " 2>/dev/null")).c_str(), "r");
-    if (!pipe) return result;
-    std::array<char, 4096> buffer{};
-    while (std::fgets(buffer.data(), static_cast<int>(buffer.size()), pipe)) {
-        result.output += buffer.data();
-    }
-    const int status = ::pclose(pipe);
-    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1; // -1: killed by a signal
-    return result;
+    return ispm::test::runCommand(command, mergeStderr ? Stderr::Merge : Stderr::Discard);
 }
 
 RunResult runIspm(const std::string& args, bool mergeStderr) {
-    return runCommand(std::string(ISPM_EXECUTABLE) + " " + args, mergeStderr);
+    return ispm::test::runIspm(args, mergeStderr ? Stderr::Merge : Stderr::Discard);
 }
 
 // A closed grey room (floor, ceiling, three walls and a front wall behind the camera) with a

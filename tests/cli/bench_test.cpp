@@ -1,5 +1,7 @@
 // `ispm bench` contract: the table and the JSON report the same passes, --json is one JSON object
 // on stdout, and bad counts exit 2. Tiny images and few frames: these check the report, not speed.
+#include "support/run_ispm.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -16,25 +18,8 @@
 namespace ispm::test {
 namespace {
 
-struct RunResult {
-    int exitCode = -1;
-    std::string output;
-};
-
-// With `mergeStderr` false, stderr goes to /dev/null so `output` is exactly what stdout got.
 RunResult run(const std::string& args, bool mergeStderr) {
-    const std::string command =
-        std::string(ISPM_EXECUTABLE) + " " + args + (mergeStderr ? " 2>&1" : " 2>/dev/null");
-    RunResult result;
-    FILE* pipe = ::popen(command.c_str(), "r");
-    if (!pipe) return result;
-    std::array<char, 4096> buffer{};
-    while (std::fgets(buffer.data(), static_cast<int>(buffer.size()), pipe)) {
-        result.output += buffer.data();
-    }
-    const int status = ::pclose(pipe);
-    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1; // -1: killed by a signal
-    return result;
+    return runIspm(args, mergeStderr ? Stderr::Merge : Stderr::Discard);
 }
 
 constexpr const char* kTinyScene = R"({

@@ -1,6 +1,7 @@
 // The executable's contract with users: bad input gives one line naming the file and the JSON path
 // (or the flag) and exit code 2; good input renders a non-black image.
 #include "image/image_io.h"
+#include "support/run_ispm.h"
 
 #include <gtest/gtest.h>
 
@@ -15,22 +16,7 @@
 namespace ispm::test {
 namespace {
 
-struct RunResult {
-    int exitCode = -1;
-    std::string output; // stdout and stderr together
-};
-
-RunResult run(const std::string& args) {
-    const std::string command = std::string(ISPM_EXECUTABLE) + " " + args + " 2>&1";
-    RunResult result;
-    FILE* pipe = ::popen(command.c_str(), "r");
-    if (!pipe) return result;
-    std::array<char, 4096> buffer{};
-    while (std::fgets(buffer.data(), static_cast<int>(buffer.size()), pipe)) result.output += buffer.data();
-    const int status = ::pclose(pipe);
-    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1; // -1: killed by a signal
-    return result;
-}
+RunResult run(const std::string& args) { return runIspm(args); }
 
 class CliTest : public ::testing::Test {
 protected:

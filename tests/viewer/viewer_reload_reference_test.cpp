@@ -4,7 +4,7 @@
 #include "image/image_io.h"
 #include "image/metrics.h"
 #include "render/shader_root.h"
-#include "viewer/run_ispm.h"
+#include "support/run_ispm.h"
 
 #include <glm/glm.hpp>
 #include <gtest/gtest.h>
@@ -131,8 +131,8 @@ TEST_F(ViewerReloadReferenceTest, ReloadKeepsTheOldProgramOnErrorAndUsesTheFixed
         replaceOnce(tonemap, "outColor = vec4(pow(display", "outColor = vec4(0.5 * pow(display");
         std::ofstream(path("fixed")) << "";
     });
-    const RunResult r = run("view " + kCornell + sizeArgs() + " --frames 10 --script " + script,
-                            "ISPM_SHADER_DIR=" + shaders.string());
+    const RunResult r = runIspm("view " + kCornell + sizeArgs() + " --frames 10 --script " + script,
+                                Stderr::Merge, "ISPM_SHADER_DIR=" + shaders.string());
     stop = true;
     editor.join();
     ASSERT_EQ(r.exitCode, 0) << r.output;
@@ -154,7 +154,7 @@ TEST_F(ViewerReloadReferenceTest, ReloadKeepsTheOldProgramOnErrorAndUsesTheFixed
 TEST_F(ViewerReloadReferenceTest, ReferenceViewsCompareWithTheTotal) {
     // The reference is the same render (relMSE ~0), then twice as bright (relative error 1/2).
     ASSERT_EQ(
-        run("render " + kCornell + sizeArgs() + " -q --aov total -o " + path("same.pfm")).exitCode,
+        runIspm("render " + kCornell + sizeArgs() + " -q --aov total -o " + path("same.pfm")).exitCode,
         0);
     Image bright = readImage(path("same.pfm"));
     for (glm::vec3& p : bright.pixels)
@@ -167,7 +167,7 @@ TEST_F(ViewerReloadReferenceTest, ReferenceViewsCompareWithTheTotal) {
         "\nview total\nscreenshot " + path("total.png") +
         "\nrender_reference on\nview reference\nframes 4\ncompute_metrics\nscreenshot " +
         path("traced.png") + "\n");
-    const RunResult r = run("view " + kCornell + sizeArgs() + " --reference " + path("same.pfm") +
+    const RunResult r = runIspm("view " + kCornell + sizeArgs() + " --reference " + path("same.pfm") +
                             " --frames 12 --script " + script);
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_EQ(r.output.find("OpenGL errors"), std::string::npos) << r.output;

@@ -4,7 +4,7 @@
 #include "image/image_io.h"
 #include "image/metrics.h"
 #include "scene/scene_loader.h"
-#include "viewer/run_ispm.h"
+#include "support/run_ispm.h"
 
 #include <glm/glm.hpp>
 #include <gtest/gtest.h>
@@ -94,9 +94,9 @@ class ViewerWindowTest : public ::testing::Test {
 
 TEST_F(ViewerWindowTest, ScreenshotShowsSceneAndPanels) {
     const RunResult view =
-        run("view " + kCornell + sizeArgs() + " --frames 30 --screenshot " + path("ui.png"));
+        runIspm("view " + kCornell + sizeArgs() + " --frames 30 --screenshot " + path("ui.png"));
     expectClean(view, "view");
-    const RunResult render = run("render " + kCornell + sizeArgs() + " -q -o " + path("scene.png"));
+    const RunResult render = runIspm("render " + kCornell + sizeArgs() + " -q -o " + path("scene.png"));
     expectClean(render, "render");
     const Image ui = readImage(path("ui.png"));
     const Image scene = readImage(path("scene.png"));
@@ -149,7 +149,7 @@ TEST_F(ViewerWindowTest, ScriptedInputMovesTheCameraAndChangesSettings) {
                                            "set bounces=0\n"
                                            "write_aov indirect " +
                                            path("c.pfm") + "\n");
-    expectClean(run("view " + kCornell + sizeArgs() + " --frames 30 --script " + script), "view");
+    expectClean(runIspm("view " + kCornell + sizeArgs() + " --frames 30 --script " + script), "view");
     const Image before = readImage(path("a.png"));
     const Image moved = readImage(path("b.png"));
     // Turning right takes the red (left) wall out of view and brings more of the green (right)
@@ -172,11 +172,11 @@ TEST_F(ViewerWindowTest, ScriptedSettingRendersAsRenderSet) {
                                            "\n"
                                            "save_settings " +
                                            path("saved.json") + "\n");
-    expectClean(run("view " + kCornell + sizeArgs() + " --frames 3 --script " + script), "view");
+    expectClean(runIspm("view " + kCornell + sizeArgs() + " --frames 3 --script " + script), "view");
     const std::string renderArgs = "render " + kCornell + sizeArgs() + " -q --aov total";
-    expectClean(run(renderArgs + " --set photons=20000 --set bounces=2 -o " + path("set.pfm")),
+    expectClean(runIspm(renderArgs + " --set photons=20000 --set bounces=2 -o " + path("set.pfm")),
                 "render --set");
-    expectClean(run(renderArgs + " -o " + path("defaults.pfm")), "render");
+    expectClean(runIspm(renderArgs + " -o " + path("defaults.pfm")), "render");
     const Image view = readImage(path("view.pfm"));
     // Same settings, same seed, same photons: only the order of the float additions in the
     // splat blending and the atomics may differ (observed relMSE ~1e-15). Another seed alone
@@ -213,7 +213,7 @@ TEST_F(ViewerWindowTest, DebugViewsAndPhotonPointsChangeTheSceneRegion) {
                                            "view gbuffer normal\n"
                                            "screenshot " +
                                            path("normal.png") + "\n");
-    expectClean(run("view " + kCornell + sizeArgs() + " --frames 5 --script " + script), "view");
+    expectClean(runIspm("view " + kCornell + sizeArgs() + " --frames 5 --script " + script), "view");
     const Image display = readImage(path("display.png"));
     // Points cover a good part of the box (20k+ result photons over 128 x 128 pixels) ...
     const double kMinPointsChanged = 0.1;
@@ -225,7 +225,7 @@ TEST_F(ViewerWindowTest, DebugViewsAndPhotonPointsChangeTheSceneRegion) {
 
 TEST_F(ViewerWindowTest, BadScriptIsBadInput) {
     const std::string script = writeScript("frames 1\nkey Z 3\n");
-    const RunResult r = run("view " + kCornell + " --frames 1 --script " + script);
+    const RunResult r = runIspm("view " + kCornell + " --frames 1 --script " + script);
     EXPECT_EQ(r.exitCode, 2) << r.output;
     EXPECT_NE(r.output.find("input.txt:2"), std::string::npos) << r.output;
 }
