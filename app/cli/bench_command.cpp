@@ -376,13 +376,7 @@ int runBench(const BenchOptions& options) {
     } else {
         printText(report);
     }
-    const gl::DebugCounts debug = gl::getDebugCounts();
-    if (debug.errors > 0) {
-        std::fprintf(stderr, "ispm: %llu OpenGL errors were reported while benchmarking\n",
-                     static_cast<unsigned long long>(debug.errors));
-        return 1;
-    }
-    return 0;
+    return checkGlErrors("benchmarking");
 }
 
 } // namespace ispm

@@ -4,6 +4,7 @@
 #include "cli/bench_sweep.h"
 
 #include "cli/bench_command.h"
+#include "cli/cli_common.h"
 #include "core/strings.h"
 #include "gl/context.h"
 #include "gl/debug.h"
@@ -550,13 +551,7 @@ int runBenchSweep(const BenchOptions& options, const std::string& scenePath, con
                 options.csvPath.c_str(), results.size(), curve.size(), curve.back().spp);
     printSpeedups(plan, results, curve);
 
-    const gl::DebugCounts debug = gl::getDebugCounts();
-    if (debug.errors > 0) {
-        std::fprintf(stderr, "ispm: %llu OpenGL errors were reported while benchmarking\n",
-                     static_cast<unsigned long long>(debug.errors));
-        return 1;
-    }
-    return 0;
+    return checkGlErrors("benchmarking");
 }
 
 } // namespace ispm

@@ -2,6 +2,7 @@
 #include "cli/cli_common.h"
 
 #include "core/strings.h"
+#include "gl/debug.h"
 #include "scene/input_error.h"
 
 #include <algorithm>
@@ -44,6 +45,14 @@ void printTimings(const FrameRunner& runner, const gl::ContextInfo& info) {
         std::printf("photons: %u emitted, %u after the first bounce, %u stored, %u overflow\n",
                     c.emitted, c.bounced, c.stored, c.overflow);
     }
+}
+
+int checkGlErrors(const char* whileDoing) {
+    const gl::DebugCounts debug = gl::getDebugCounts();
+    if (debug.errors == 0) return 0;
+    std::fprintf(stderr, "ispm: %llu OpenGL errors were reported while %s\n",
+                 static_cast<unsigned long long>(debug.errors), whileDoing);
+    return 1;
 }
 
 } // namespace ispm

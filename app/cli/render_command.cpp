@@ -82,7 +82,7 @@ int runReference(const RenderOptions& options, const Scene& scene, const Setting
         std::printf("path tracing: %.1f ms; whole command: %.1f ms\n",
                     secondsSince(traceStart) * 1e3, secondsSince(start) * 1e3);
     }
-    return gl::getDebugCounts().errors > 0 ? 1 : 0;
+    return checkGlErrors("path tracing");
 }
 
 } // namespace
@@ -127,7 +127,6 @@ int runRender(const RenderOptions& options) {
     runner.renderFrame();
     const Image image = readTextureImage(runner.getAov(kind == OutputKind::Png ? Aov::Display : aov));
     writeImage(options.outputPath, image);
-    const gl::DebugCounts debug = gl::getDebugCounts();
     if (!options.quiet) {
         const double totalMs = std::chrono::duration<double, std::milli>(
                                    std::chrono::steady_clock::now() - start)
@@ -138,12 +137,7 @@ int runRender(const RenderOptions& options) {
         std::printf("whole command: %.1f ms (scene load, context, shader builds, frame, write)\n",
                     totalMs);
     }
-    if (debug.errors > 0) {
-        std::fprintf(stderr, "ispm: %llu OpenGL errors were reported while rendering\n",
-                     static_cast<unsigned long long>(debug.errors));
-        return 1;
-    }
-    return 0;
+    return checkGlErrors("rendering");
 }
 
 } // namespace ispm
