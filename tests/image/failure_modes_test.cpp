@@ -1,0 +1,414 @@
+// Where image-space photon mapping fails, measured: light leaking through a thin wall, energy lost
+// at edges and corners, frame-to-frame flicker between seeds, and pixels no photon reaches. Each
+// test prints its numbers and bounds today's behaviour, so a change that moves them shows up here.
+#include "support/gl_fixture.h"
+#include "support/render_support.h"
+
+#include "image/metrics.h"
+#include "render/readback.h"
+#include "render/reference_pass.h"
+#include "scene/scene_loader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace ispm::test {
+namespace {
+
+class FailureModeTest : public GlTest {};
+
+constexpr int kSize = 48;           // px: small enough for llvmpipe, splats a few pixels wide
+constexpr int kShadowMapSize = 512; // px: shadows sharp enough at 48 px
+constexpr float kOnPlaneM = 1e-3f;  // a G-buffer position this close to a plane lies on it
+
+// What one frame gives the measurements: radiance and the G-buffer under each pixel (row 0 top).
+struct FrameImages {
+    Image direct;
+    Image indirect;
+    Image total;
+    Image position; // world, metres
+    Image normal;   // world, turned toward the camera
+    Image diffuse;  // reflectance; zero where no surface was hit (the scenes have no black walls)
+};
+
+FrameImages renderFrameImages(const Scene& scene, const Settings& settings) {
+    FrameRunner runner(scene, settings, gl::TimingMethod::CpuFinish);
+    runner.renderFrame();
+    const GBuffer& g = runner.getViewerGBuffer();
+    return {readTextureImage(runner.getAov(Aov::Direct)),
+            readTextureImage(runner.getAov(Aov::Indirect)),
+            readTextureImage(runner.getAov(Aov::Total)),
+            readTextureImage(g.getChannel("position")),
+            readTextureImage(g.getChannel("normal")),
+            readTextureImage(g.getChannel("diffuse"))};
+}
+
+bool isSurface(const FrameImages& f, size_t i) {
+    const glm::vec3 d = f.diffuse.pixels[i];
+    return d.x + d.y + d.z > 0.0f;
+}
+
+double computeMeanValue(const glm::vec3& v) {
+    return (double(v.x) + double(v.y) + double(v.z)) / 3.0;
+}
+
+Settings makeCornellSettings(const Scene& scene, int photons, int seed) {
+    Settings s = scene.settings;
+    s.set("width", kSize, "test");
+    s.set("height", kSize, "test");
+    s.set("bounces", 2, "test");
+    s.set("photons", photons, "test");
+    s.set("shadow_map_size", kShadowMapSize, "test");
+    s.set("seed", seed, "test");
+    return s;
+}
+
+Scene loadCornell() {
+    return loadScene(std::string(ISPM_ASSET_DIR) + "/scenes/cornell.json");
+}
+
+// ---------------------------------------------------------------------------------------------
+// 1. Light leak through a thin wall.
+
+constexpr float kRoomHalfM = 1.0f; // each room is a 2 m cube
+constexpr float kWallGapM = 0.02f; // the shared wall: two faces 2 cm apart at x = -+1 cm
+constexpr float kFloorY = -kRoomHalfM;
+
+// Adds the 12 triangles of the box [lo, hi] (two-sided walls) to `mesh`, material 0.
+void addBox(Mesh& mesh, const glm::vec3& lo, const glm::vec3& hi) {
+    const uint32_t first = uint32_t(mesh.positions.size());
+    for (int i = 0; i < kAabbCornerCount; ++i) {
+        mesh.positions.emplace_back((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y,
+                                    (i & 4) ? hi.z : lo.z);
+    }
+    const glm::uvec4 faces[6] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                                 {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    for (const glm::uvec4& f : faces) {
+        mesh.triangles.emplace_back(first + f.x, first + f.y, first + f.z);
+        mesh.triangles.emplace_back(first + f.x, first + f.z, first + f.w);
+        mesh.triangleMaterials.insert(mesh.triangleMaterials.end(), {0u, 0u});
+    }
+}
+
+// Room A (x < 0) holds a point light; room B (x > 0) is sealed from it by a wall 2 cm thick.
+// `inRoomA` puts the camera in A, else in B; the two cameras mirror each other across x = 0 and
+// look at the foot of the shared wall.
+Scene makeTwoRooms(bool inRoomA) {
+    Scene scene;
+    scene.sourcePath = "two rooms";
+    Material m;
+    m.name = "walls";
+    m.diffuse = glm::vec3(0.7f);
+    scene.materials.push_back(m);
+    Mesh mesh;
+    mesh.name = "rooms";
+    const float h = kRoomHalfM;
+    const float g = 0.5f * kWallGapM;
+    addBox(mesh, {-g - 2.0f * h, -h, -h}, {-g, h, h});
+    addBox(mesh, {g, -h, -h}, {g + 2.0f * h, h, h});
+    scene.meshes.push_back(mesh);
+    scene.instances.push_back({0, glm::mat4(1.0f)});
+    Light light;
+    light.type = LightType::Point;
+    light.position = {-g - h, 0.3f, 0.1f}; // room A's centre, a little off so nothing is symmetric
+    light.intensity = glm::vec3(2.0f);
+    scene.lights.push_back(light);
+    const float side = inRoomA ? -1.0f : 1.0f;
+    // From the far side of the room, down at the foot of the shared wall: ~48 pixels of floor
+    // lie within 10 cm of the wall.
+    scene.camera.position = {side * 1.8f, 0.0f, 0.0f};
+    scene.camera.target = {side * 0.2f, -0.8f, 0.0f};
+    return scene;
+}
+
+// Mean indirect radiance over floor pixels whose distance to the shared wall's face is in
+// [nearM, farM), and how many there were.
+double computeFloorStripMean(const FrameImages& f, float nearM, float farM, int& count) {
+    double sum = 0.0;
+    count = 0;
+    for (size_t i = 0; i < f.position.pixels.size(); ++i) {
+        const glm::vec3 p = f.position.pixels[i];
+        if (!isSurface(f, i) || std::abs(p.y - kFloorY) > kOnPlaneM) continue;
+        const float fromWall = std::abs(p.x) - 0.5f * kWallGapM;
+        if (fromWall < nearM || fromWall >= farM) continue;
+        sum += computeMeanValue(f.indirect.pixels[i]);
+        ++count;
+    }
+    return count > 0 ? sum / count : 0.0;
+}
+
+TEST_F(FailureModeTest, LightLeaksThroughThinWall) {
+    constexpr int kPhotons = 20000; // derived splat radii 8-31 cm, all wider than the wall
+    constexpr float kStripM = 0.1f; // the floor next to the wall, where splats could reach across
+    constexpr float kFarM = 0.5f;   // farther than any splat reaches at radius_scale 1
+    const Scene roomA = makeTwoRooms(true);
+    const Scene roomB = makeTwoRooms(false);
+    double leak[2] = {0.0, 0.0};
+    const float scales[2] = {1.0f, 4.0f};
+    for (int k = 0; k < 2; ++k) {
+        Settings settings;
+        settings.set("width", kSize, "test");
+        settings.set("height", kSize, "test");
+        settings.set("bounces", 2, "test");
+        settings.set("photons", kPhotons, "test");
+        settings.set("shadow_map_size", kShadowMapSize, "test");
+        settings.set("radius_scale", scales[k], "test");
+        const FrameImages a = renderFrameImages(roomA, settings);
+        const FrameImages b = renderFrameImages(roomB, settings);
+        if (k == 0) {
+            // Shadow maps keep every bit of direct light in room A.
+            double directB = 0.0;
+            for (const glm::vec3& p : b.direct.pixels)
+                directB = std::max(directB, computeMeanValue(p));
+            EXPECT_EQ(directB, 0.0) << "direct light reached room B";
+        }
+        int countA = 0;
+        int countB = 0;
+        int countFar = 0;
+        const double stripA = computeFloorStripMean(a, 0.0f, kStripM, countA);
+        const double stripB = computeFloorStripMean(b, 0.0f, kStripM, countB);
+        const double farB = computeFloorStripMean(b, kFarM, 2.0f * kRoomHalfM, countFar);
+        ASSERT_GT(countA, 10);
+        ASSERT_GT(countB, 10);
+        ASSERT_GT(stripA, 0.0);
+        leak[k] = stripB / stripA;
+        std::printf("thin wall, radius_scale %.0f: room A floor strip %.4g (%d px), room B strip "
+                    "%.4g (%d px), leak ratio %.3f; room B floor > %.1f m from wall %.3g\n",
+                    double(scales[k]), stripA, countA, stripB, countB, leak[k], double(kFarM),
+                    farB);
+        // Nothing reaches half a metre into room B at radius_scale 1: any light there is not a leak
+        // through the wall but a bug in emission or tracing.
+        if (k == 0) {
+            EXPECT_EQ(farB, 0.0);
+        }
+    }
+    // Measured: 0.300 at radius_scale 1 and 0.763 at 4. The normal test stops splats on the other
+    // face of the wall (its normal faces away), but a photon on room A's floor and a pixel on room
+    // B's floor share a normal and a plane, so every splat wider than the wall's 2 cm reaches
+    // through: room B's floor strip gets 30% of room A's light. The leak is proportional to the
+    // splat radius, so it grows with radius_scale. 0.4 bounds today's leak; a fix (a visibility
+    // test between photon and pixel) would bring both ratios to 0 and still pass.
+    constexpr double kMaxLeakRatio = 0.4;
+    EXPECT_LT(leak[0], kMaxLeakRatio);
+    EXPECT_GE(leak[1], leak[0]);
+}
+
+// ---------------------------------------------------------------------------------------------
+// 2. Edges and corners: a splat that reaches past an edge loses what falls off the surface, and
+// pixels near an edge gather from photons on one side only.
+
+constexpr int kEdgeWindowPx = 6;       // searched for edges around each pixel: ~7 cm at 48 px
+constexpr float kEdgeNormalDot = 0.9f; // neighbours whose normals differ more lie across an edge
+
+// Width of pixel (x, y) on its surface, metres: the distance to a horizontal neighbour on the
+// same surface (the largest footprint in the image when neither neighbour is).
+float computePixelFootprint(const FrameImages& f, int x, int y) {
+    constexpr float kFallbackM = 0.02f; // the widest footprint in the 48 px Cornell view
+    const int w = f.position.width;
+    const size_t i = size_t(y * w + x);
+    for (int nx : {x + 1, x - 1}) {
+        if (nx < 0 || nx >= w) continue;
+        const size_t j = size_t(y * w + nx);
+        if (isSurface(f, j) && glm::dot(f.normal.pixels[i], f.normal.pixels[j]) >= kEdgeNormalDot) {
+            return glm::length(f.position.pixels[i] - f.position.pixels[j]);
+        }
+    }
+    return kFallbackM;
+}
+
+// Per pixel, the world distance to the nearest neighbour (within the window) on another surface:
+// another normal, or no surface at all (the open front of the box). +inf where none is found.
+std::vector<float> computeEdgeDistances(const FrameImages& f) {
+    const int w = f.position.width;
+    const int h = f.position.height;
+    std::vector<float> out(f.position.pixels.size(), std::numeric_limits<float>::infinity());
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            const size_t i = size_t(y * w + x);
+            if (!isSurface(f, i)) continue;
+            const float footprint = computePixelFootprint(f, x, y);
+            for (int dy = -kEdgeWindowPx; dy <= kEdgeWindowPx; ++dy) {
+                for (int dx = -kEdgeWindowPx; dx <= kEdgeWindowPx; ++dx) {
+                    const int nx = x + dx;
+                    const int ny = y + dy;
+                    if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
+                    const size_t j = size_t(ny * w + nx);
+                    float d = 0.0f;
+                    if (!isSurface(f, j)) {
+                        // No position there: the open front of the box. Count pixels, each as
+                        // wide as this one's footprint on its surface.
+                        d = footprint * float(std::max(std::abs(dx), std::abs(dy)));
+                    } else if (glm::dot(f.normal.pixels[i], f.normal.pixels[j]) < kEdgeNormalDot) {
+                        d = glm::length(f.position.pixels[i] - f.position.pixels[j]);
+                    } else {
+                        continue;
+                    }
+                    out[i] = std::min(out[i], d);
+                }
+            }
+        }
+    }
+    return out;
+}
+
+TEST_F(FailureModeTest, CornersAndEdgesLoseIndirectEnergy) {
+    constexpr int kReferenceSpp = 64;
+    constexpr float kCornerM = 0.02f; // about the median splat radius at 50k photons
+    constexpr float kMiddleM = 0.06f; // beyond the largest splat radius (radius_max ~4 cm)
+    const Scene scene = loadCornell();
+    const Settings settings = makeCornellSettings(scene, 50000, 1);
+    Image reference;
+    {
+        ReferencePass withBounces(scene, settings);
+        Settings directOnly = settings;
+        directOnly.set("bounces", 0, "test");
+        ReferencePass direct(scene, directOnly);
+        for (int s = 0; s < kReferenceSpp; ++s) {
+            withBounces.addSample();
+            direct.addSample();
+        }
+        reference = withBounces.readMean();
+        const Image d = direct.readMean();
+        for (size_t i = 0; i < d.pixels.size(); ++i)
+            reference.pixels[i] -= d.pixels[i];
+    }
+    const FrameImages f = renderFrameImages(scene, settings);
+    const std::vector<float> edge = computeEdgeDistances(f);
+    PixelMask corner(edge.size(), 0);
+    PixelMask middle(edge.size(), 0);
+    size_t cornerCount = 0;
+    size_t middleCount = 0;
+    for (size_t i = 0; i < edge.size(); ++i) {
+        if (!isSurface(f, i)) continue;
+        if (edge[i] < kCornerM) {
+            corner[i] = 1;
+            ++cornerCount;
+        } else if (edge[i] > kMiddleM) {
+            middle[i] = 1;
+            ++middleCount;
+        }
+    }
+    ASSERT_GT(cornerCount, 50u);
+    ASSERT_GT(middleCount, 50u);
+    const double cornerRatio =
+        computeMeanValue(glm::vec3(computeMeanRatio(f.indirect, reference, &corner)));
+    const double middleRatio =
+        computeMeanValue(glm::vec3(computeMeanRatio(f.indirect, reference, &middle)));
+    const double allRatio = computeMeanValue(glm::vec3(computeMeanRatio(f.indirect, reference)));
+    std::printf("corners: ispm / reference indirect: within %.0f cm of an edge %.3f (%zu px), "
+                "more than %.0f cm %.3f (%zu px), all %.3f\n",
+                double(kCornerM) * 100.0, cornerRatio, cornerCount, double(kMiddleM) * 100.0,
+                middleRatio, middleCount, allRatio);
+    // Measured at seed 1: corner 0.897, middle 0.945, all 0.934 (seed 2: 0.848, 0.965); pixels 2-4
+    // cm from an edge score 0.88-0.91, beyond 4 cm 0.95-0.97. Mid-wall light is right to 10% (the
+    // rest is splat blur and both images' noise); near edges ispm is 5-12% darker still, which is
+    // the missing half of the splat discs there. Bounds: the middle within 10%, the corners below
+    // both the middle and 0.95.
+    constexpr double kMiddleTolerance = 0.1;
+    constexpr double kMaxCornerRatio = 0.95;
+    EXPECT_NEAR(middleRatio, 1.0, kMiddleTolerance);
+    EXPECT_LT(cornerRatio, middleRatio);
+    EXPECT_LT(cornerRatio, kMaxCornerRatio);
+}
+
+// ---------------------------------------------------------------------------------------------
+// 3. Flicker: two frames that differ only in their seed, as consecutive frames of a still scene
+// do when the seed changes per frame.
+
+double measureSeedFlicker(const Scene& scene, Settings settings, Aov aov) {
+    settings.set("seed", 1, "test");
+    const Image a = renderAov(scene, settings, aov);
+    settings.set("seed", 2, "test");
+    const Image b = renderAov(scene, settings, aov);
+    return computeRelMse(b, a);
+}
+
+TEST_F(FailureModeTest, FlickerBetweenSeeds) {
+    constexpr float kFixedRadiusM = 0.03f; // the derived radius at ~25k photons, held fixed
+    const Scene scene = loadCornell();
+    const int counts[2] = {10000, 50000};
+    double derived[2] = {};
+    double fixed[2] = {};
+    double total[2] = {};
+    for (int k = 0; k < 2; ++k) {
+        Settings s = makeCornellSettings(scene, counts[k], 1);
+        derived[k] = measureSeedFlicker(scene, s, Aov::Indirect);
+        total[k] = measureSeedFlicker(scene, s, Aov::Total);
+        s.set("radius_min", kFixedRadiusM, "test");
+        s.set("radius_max", kFixedRadiusM, "test");
+        fixed[k] = measureSeedFlicker(scene, s, Aov::Indirect);
+        std::printf("flicker, %d photons: indirect relMSE seed 1 vs 2 %.4f (derived radii), "
+                    "%.4f (radius fixed at %.0f cm); total %.4f\n",
+                    counts[k], derived[k], fixed[k], double(kFixedRadiusM) * 100.0, total[k]);
+    }
+    // Measured: at a fixed radius relMSE falls 0.293 -> 0.056 (5.2x for 5x photons: 1/N). With
+    // derived radii it does not fall at all (0.040 -> 0.046): the radius shrinks as 1/sqrt(N) so
+    // each pixel always gathers ~32 photons, and more photons buy sharpness, not stability.
+    // The whole frame (direct light is identical in both) flickers 0.031-0.035.
+    constexpr double kMinFixedRadiusGain = 3.0; // 1/N predicts 5
+    constexpr double kMaxDerivedFlicker = 0.07; // at 50k photons
+    constexpr double kMaxTotalFlicker = 0.05;   // at 50k photons
+    EXPECT_GT(fixed[0] / fixed[1], kMinFixedRadiusGain);
+    EXPECT_LT(derived[1], kMaxDerivedFlicker);
+    EXPECT_LT(total[1], kMaxTotalFlicker);
+}
+
+// ---------------------------------------------------------------------------------------------
+// 4. Sparse photons: surface pixels that no splat reaches stay black in the indirect image.
+
+double measureUncoveredFraction(const Scene& scene, const Settings& settings) {
+    const FrameImages f = renderFrameImages(scene, settings);
+    size_t surface = 0;
+    size_t dark = 0;
+    for (size_t i = 0; i < f.indirect.pixels.size(); ++i) {
+        if (!isSurface(f, i)) continue;
+        ++surface;
+        if (computeMeanValue(f.indirect.pixels[i]) <= 0.0) ++dark;
+    }
+    return surface > 0 ? double(dark) / double(surface) : 1.0;
+}
+
+TEST_F(FailureModeTest, SparsePhotonsLeaveUncoveredPixels) {
+    const Scene scene = loadCornell();
+    const int counts[3] = {2000, 10000, 50000};
+    const float scales[2] = {1.0f, 0.5f};
+    double dark[2][3] = {};
+    for (int r = 0; r < 2; ++r) {
+        for (int k = 0; k < 3; ++k) {
+            Settings s = makeCornellSettings(scene, counts[k], 1);
+            s.set("radius_scale", scales[r], "test");
+            dark[r][k] = measureUncoveredFraction(scene, s);
+        }
+        std::printf(
+            "uncovered surface pixels, radius_scale %.1f: %.4f (2k) %.4f (10k) %.4f (50k)\n",
+            double(scales[r]), dark[r][0], dark[r][1], dark[r][2]);
+    }
+    Settings s = makeCornellSettings(scene, 2000, 1);
+    constexpr double kFixedRadiusM = 0.03; // the derived radius at ~25k photons
+    s.set("radius_min", kFixedRadiusM, "test");
+    s.set("radius_max", kFixedRadiusM, "test");
+    const double fixed2k = measureUncoveredFraction(scene, s);
+    s.set("photons", 50000, "test");
+    const double fixed50k = measureUncoveredFraction(scene, s);
+    std::printf("uncovered, radius fixed at 3 cm: %.4f (2k) %.4f (50k)\n", fixed2k, fixed50k);
+    // Measured: derived radii leave 0, 0, 0.05% of surface pixels dark at 2k, 10k, 50k photons;
+    // radius_scale 0.5 leaves 2.0%, 0.7%, 2.1%. The derived radius keeps the expected photons per
+    // disc constant (32 at scale 1, 8 at 0.5), so more photons do not fill holes by themselves;
+    // only a larger radius does. At a fixed 3 cm radius coverage grows with photons: 40% dark at
+    // 2k, 0.14% at 50k. Bounds sit above each measurement.
+    constexpr double kMaxDarkDerived = 0.005;
+    constexpr double kMaxDarkHalfRadius = 0.05;
+    constexpr double kMinDarkFixed2k = 0.2;
+    constexpr double kMaxDarkFixed50k = 0.01;
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_LT(dark[0][k], kMaxDarkDerived) << counts[k] << " photons";
+        EXPECT_LT(dark[1][k], kMaxDarkHalfRadius) << counts[k] << " photons";
+        EXPECT_GT(dark[1][k], dark[0][k]) << counts[k] << " photons";
+    }
+    EXPECT_GT(fixed2k, kMinDarkFixed2k);
+    EXPECT_LT(fixed50k, kMaxDarkFixed50k);
+}
+
+} // namespace
+} // namespace ispm::test
