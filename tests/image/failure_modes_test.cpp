@@ -258,21 +258,7 @@ TEST_F(FailureModeTest, CornersAndEdgesLoseIndirectEnergy) {
     constexpr float kMiddleM = 0.06f; // beyond the largest splat radius (radius_max ~4 cm)
     const Scene scene = loadCornell();
     const Settings settings = makeCornellSettings(scene, 50000, 1);
-    Image reference;
-    {
-        ReferencePass withBounces(scene, settings);
-        Settings directOnly = settings;
-        directOnly.set("bounces", 0, "test");
-        ReferencePass direct(scene, directOnly);
-        for (int s = 0; s < kReferenceSpp; ++s) {
-            withBounces.addSample();
-            direct.addSample();
-        }
-        reference = withBounces.readMean();
-        const Image d = direct.readMean();
-        for (size_t i = 0; i < d.pixels.size(); ++i)
-            reference.pixels[i] -= d.pixels[i];
-    }
+    const Image reference = renderReferenceIndirect(scene, settings, kReferenceSpp);
     const FrameImages f = renderFrameImages(scene, settings);
     const std::vector<float> edge = computeEdgeDistances(f);
     PixelMask corner(edge.size(), 0);

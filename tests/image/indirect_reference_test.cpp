@@ -30,20 +30,7 @@ TEST_F(IndirectReferenceTest, CornellIndirectWithinMeasuredBound) {
     settings.set("photons", 50000, "test");
     settings.set("shadow_map_size", 512, "test");
 
-    Image referenceIndirect;
-    {
-        ReferencePass withBounces(scene, settings);
-        Settings directOnly = settings;
-        directOnly.set("bounces", 0, "test");
-        ReferencePass direct(scene, directOnly);
-        for (int s = 0; s < kReferenceSpp; ++s) {
-            withBounces.addSample();
-            direct.addSample();
-        }
-        referenceIndirect = withBounces.readMean();
-        const Image d = direct.readMean();
-        for (size_t i = 0; i < d.pixels.size(); ++i) referenceIndirect.pixels[i] -= d.pixels[i];
-    }
+    const Image referenceIndirect = renderReferenceIndirect(scene, settings, kReferenceSpp);
     const Image indirect = renderAov(scene, settings, Aov::Indirect);
 
     const double ispm = computeRelMse(indirect, referenceIndirect, nullptr, kRelMseEpsilon);

@@ -5,6 +5,7 @@
 #include "image/image_diff.h"
 #include "image/image_io.h"
 #include "render/readback.h"
+#include "render/reference_pass.h"
 #include "support/gl_fixture.h"
 
 #include <gtest/gtest.h>
@@ -18,6 +19,21 @@ Image renderAov(const Scene& scene, const Settings& settings, Aov aov) {
     FrameRunner runner(scene, settings, gl::TimingMethod::CpuFinish);
     runner.renderFrame();
     return readTextureImage(runner.getAov(aov));
+}
+
+Image renderReferenceIndirect(const Scene& scene, const Settings& settings, int spp) {
+    ReferencePass withBounces(scene, settings);
+    Settings directOnly = settings;
+    directOnly.set("bounces", 0, "test");
+    ReferencePass direct(scene, directOnly);
+    for (int s = 0; s < spp; ++s) {
+        withBounces.addSample();
+        direct.addSample();
+    }
+    Image indirect = withBounces.readMean();
+    const Image d = direct.readMean();
+    for (size_t i = 0; i < d.pixels.size(); ++i) indirect.pixels[i] -= d.pixels[i];
+    return indirect;
 }
 
 void expectMatchesGolden(const Image& actual, const std::string& name, const GoldenThresholds& t) {

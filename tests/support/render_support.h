@@ -12,6 +12,9 @@ namespace ispm::test {
 
 Image renderAov(const Scene& scene, const Settings& settings, Aov aov);
 
+// The reference path tracer's indirect light: reference(bounces) - reference(0), both at `spp`.
+Image renderReferenceIndirect(const Scene& scene, const Settings& settings, int spp);
+
 struct GoldenThresholds {
     float pixelTolerance;      // a pixel fails when any channel differs by more
     double maxMeanAbsError;    // over all channels
