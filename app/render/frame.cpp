@@ -45,20 +45,18 @@ FrameRunner::FrameRunner(const Scene& scene, const Settings& settings, gl::Timin
     resizePasses();
 }
 
+std::array<Pass*, 8> FrameRunner::getPasses() const {
+    return {mGBuffer.get(), mLightViews.get(), mEmit.get(),    mDirect.get(),
+            mTrace.get(),   mSplat.get(),      mCompose.get(), mTonemap.get()};
+}
+
 void FrameRunner::resizePasses() {
-    for (Pass* pass : std::initializer_list<Pass*>{mGBuffer.get(), mLightViews.get(), mSplat.get(),
-                                                   mDirect.get(), mCompose.get(), mTonemap.get()}) {
-        pass->resize(mWidth, mHeight);
-    }
+    for (Pass* pass : getPasses()) pass->resize(mWidth, mHeight);
 }
 
 ShaderReloadReport FrameRunner::reloadShaders() {
     ShaderReloadReport report;
-    for (Pass* pass : std::initializer_list<Pass*>{mGBuffer.get(), mLightViews.get(), mEmit.get(),
-                                                   mTrace.get(), mSplat.get(), mDirect.get(),
-                                                   mCompose.get(), mTonemap.get()}) {
-        pass->reloadPrograms(report);
-    }
+    for (Pass* pass : getPasses()) pass->reloadPrograms(report);
     return report;
 }
 
@@ -77,30 +75,36 @@ void FrameRunner::setSettings(const Settings& settings) {
     }
 }
 
-void FrameRunner::updateFrameConstants() {
-    const Camera& cam = mScene.camera;
+gpu::FrameConstants computeFrameConstants(const Scene& scene, const GpuScene& gpuScene,
+                                          const Settings& settings, int width, int height) {
+    const Camera& cam = scene.camera;
     float nearM = 0.0f;
     float farM = 0.0f;
-    computeCameraRange(cam, mGpuScene.getBounds(), nearM, farM);
-    const float aspect = static_cast<float>(mWidth) / static_cast<float>(mHeight);
-    mClipFromWorld = computeClipFromView(cam, aspect, nearM, farM) * computeViewFromWorld(cam);
+    computeCameraRange(cam, gpuScene.getBounds(), nearM, farM);
+    const float aspect = static_cast<float>(width) / static_cast<float>(height);
     gpu::FrameConstants fc{};
-    fc.clipFromWorld = mClipFromWorld;
-    fc.worldFromClip = glm::inverse(mClipFromWorld);
+    fc.clipFromWorld = computeClipFromView(cam, aspect, nearM, farM) * computeViewFromWorld(cam);
+    fc.worldFromClip = glm::inverse(fc.clipFromWorld);
     fc.cameraPosition = glm::vec4(cam.position, 1.0f);
-    fc.background = glm::vec4(mScene.background, 0.0f);
-    fc.imageSize = glm::vec4(mWidth, mHeight, 1.0f / static_cast<float>(mWidth),
-                             1.0f / static_cast<float>(mHeight));
-    fc.counts = glm::uvec4(mGpuScene.getLightCount(),
-                           static_cast<uint32_t>(mGpuScene.getLightCameras().size()),
-                           static_cast<uint32_t>(mSettings.getInt("seed")), 0u);
-    fc.shadow = glm::vec4(mSettings.getFloat("shadow_bias"),
-                          static_cast<float>(mGpuScene.getLightResolution()), 0.0f, 0.0f);
-    const float tonemapIndex = static_cast<float>(mSettings.get("tonemap"));
-    fc.tonemap = glm::vec4(tonemapIndex, std::exp2(mSettings.getFloat("exposure")),
-                           1.0f / mSettings.getFloat("gamma"),
-                           mSettings.isSet("luminance_max") ? mSettings.getFloat("luminance_max")
-                                                            : 0.0f);
+    fc.background = glm::vec4(scene.background, 0.0f);
+    fc.imageSize = glm::vec4(width, height, 1.0f / static_cast<float>(width),
+                             1.0f / static_cast<float>(height));
+    fc.counts = glm::uvec4(gpuScene.getLightCount(),
+                           static_cast<uint32_t>(gpuScene.getLightCameras().size()),
+                           static_cast<uint32_t>(settings.getInt("seed")), 0u);
+    fc.shadow = glm::vec4(settings.getFloat("shadow_bias"),
+                          static_cast<float>(gpuScene.getLightResolution()), 0.0f, 0.0f);
+    const float tonemapIndex = static_cast<float>(settings.get("tonemap"));
+    fc.tonemap = glm::vec4(tonemapIndex, std::exp2(settings.getFloat("exposure")),
+                           1.0f / settings.getFloat("gamma"),
+                           settings.isSet("luminance_max") ? settings.getFloat("luminance_max")
+                                                           : 0.0f);
+    return fc;
+}
+
+void FrameRunner::updateFrameConstants() {
+    const gpu::FrameConstants fc = computeFrameConstants(mScene, mGpuScene, mSettings, mWidth, mHeight);
+    mClipFromWorld = fc.clipFromWorld;
     mFrameConstants.upload(0, sizeof(fc), &fc);
 }
 

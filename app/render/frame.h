@@ -11,6 +11,9 @@
 #include "render/shading_passes.h"
 #include "scene/scene.h"
 
+#include <shared/scene_data.h>
+
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -49,6 +52,8 @@ public:
 
     // Linear radiance (Direct, Indirect, Total) or display values (Display), row 0 at the bottom.
     const gl::Texture& getAov(Aov aov) const;
+    // Whether the photon passes run (bounces > 0 and photons > 0).
+    bool hasIndirect() const;
     // Photon counts of the last frame, read back from the GPU (for reports; waits for the GPU).
     PhotonCounts readPhotonCounts() const;
     const PhotonBuffers& getPhotonBuffers() const { return mPhotonBuffers; }
@@ -68,7 +73,8 @@ public:
 private:
     void resizePasses();
     void updateFrameConstants();
-    bool hasIndirect() const;
+    // Every pass in frame order, for resize and shader reload.
+    std::array<Pass*, 8> getPasses() const;
     void runPass(Pass& pass, const FrameInputs& inputs);
 
     const Scene& mScene;
@@ -93,5 +99,10 @@ private:
 
 // Camera clip planes when the scene does not set them: enclose the scene bounds.
 void computeCameraRange(const Camera& camera, const Aabb& bounds, float& nearM, float& farM);
+
+// The per-frame constants of the scene's camera at width x height (shared by the photon mapper
+// and the reference path tracer, so both see the same camera).
+gpu::FrameConstants computeFrameConstants(const Scene& scene, const GpuScene& gpuScene,
+                                          const Settings& settings, int width, int height);
 
 } // namespace ispm

@@ -35,20 +35,7 @@ ReferencePass::ReferencePass(const Scene& scene, const Settings& settings)
       mSeed(static_cast<uint32_t>(settings.getInt("seed"))) {
     mAccumulation = gl::Texture::create2D("reference accumulation", gl::Format::RGBA32F, mWidth, mHeight);
     mAccumulation.clear(glm::vec4(0.0f));
-    float nearM = 0.0f;
-    float farM = 0.0f;
-    computeCameraRange(scene.camera, mGpuScene.getBounds(), nearM, farM);
-    const float aspect = static_cast<float>(mWidth) / static_cast<float>(mHeight);
-    const glm::mat4 clipFromWorld =
-        computeClipFromView(scene.camera, aspect, nearM, farM) * computeViewFromWorld(scene.camera);
-    gpu::FrameConstants fc{};
-    fc.clipFromWorld = clipFromWorld;
-    fc.worldFromClip = glm::inverse(clipFromWorld);
-    fc.cameraPosition = glm::vec4(scene.camera.position, 1.0f);
-    fc.background = glm::vec4(scene.background, 0.0f);
-    fc.imageSize = glm::vec4(mWidth, mHeight, 1.0f / static_cast<float>(mWidth),
-                             1.0f / static_cast<float>(mHeight));
-    fc.counts = glm::uvec4(mGpuScene.getLightCount(), 0u, mSeed, 0u);
+    const gpu::FrameConstants fc = computeFrameConstants(scene, mGpuScene, settings, mWidth, mHeight);
     mFrameConstants.upload(0, sizeof(fc), &fc);
 }
 

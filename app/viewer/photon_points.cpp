@@ -28,11 +28,11 @@ ReloadableProgram buildPointsProgram(bool isResult) {
                               .defines = defines});
 }
 
-void drawPoints(const ReloadableProgram& program, const glm::vec4& tint, uint32_t count) {
-    if (count == 0) return;
+// Draws `capacity` points; the vertex stage drops those past this frame's count.
+void drawPoints(const ReloadableProgram& program, const glm::vec4& tint, uint32_t capacity) {
     program.use();
     glUniform4f(kLocationTint, tint.r, tint.g, tint.b, tint.a);
-    gl::drawArrays(gl::Primitive::Points, 0, static_cast<int>(count));
+    gl::drawArrays(gl::Primitive::Points, 0, static_cast<int>(capacity));
 }
 
 } // namespace
@@ -41,11 +41,11 @@ PhotonPointsDrawer::PhotonPointsDrawer()
     : mBounceProgram(buildPointsProgram(false)), mResultProgram(buildPointsProgram(true)),
       mVertexArray("viewer photon points vao") {}
 
-void PhotonPointsDrawer::draw(const FrameRunner& runner, const PhotonCounts& counts,
-                              PhotonPoints which, int width, int height) const {
+void PhotonPointsDrawer::draw(const FrameRunner& runner, PhotonPoints which, int width,
+                              int height) const {
     const PhotonBuffers& buffers = runner.getPhotonBuffers();
     // No photons this frame (bounces = 0, photons = 0): the buffers may not even exist.
-    if (which == PhotonPoints::None || counts.emitted == 0) return;
+    if (which == PhotonPoints::None || !runner.hasIndirect()) return;
     gl::applyState({.programPointSize = true});
     gl::bindDefaultFramebuffer(width, height);
     runner.getFrameInputs().frameConstants.bindBase(gl::BufferTarget::Uniform,
@@ -54,12 +54,10 @@ void PhotonPointsDrawer::draw(const FrameRunner& runner, const PhotonCounts& cou
     runner.getViewerGBuffer().getChannel("position").bindUnit(kUnitPosition);
     mVertexArray.bind();
     if (which == PhotonPoints::Bounce || which == PhotonPoints::Both) {
-        drawPoints(mBounceProgram, kBounceTint,
-                   std::min(counts.bounced, buffers.getBounceCapacity()));
+        drawPoints(mBounceProgram, kBounceTint, buffers.getBounceCapacity());
     }
     if (which == PhotonPoints::Result || which == PhotonPoints::Both) {
-        drawPoints(mResultProgram, kResultTint,
-                   std::min(counts.stored, buffers.getResultCapacity()));
+        drawPoints(mResultProgram, kResultTint, buffers.getResultCapacity());
     }
 }
 

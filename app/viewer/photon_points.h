@@ -14,10 +14,9 @@ class PhotonPointsDrawer {
   public:
     PhotonPointsDrawer();
     // Draws over the default framebuffer's region [0, width) x [0, height), which must be the
-    // frame's image size (the points use the frame's clipFromWorld). `counts` says how many
-    // photons each buffer holds (PhotonCounts of the same frame).
-    void draw(const FrameRunner& runner, const PhotonCounts& counts, PhotonPoints which, int width,
-              int height) const;
+    // frame's image size (the points use the frame's clipFromWorld). How many photons each
+    // buffer holds is read on the GPU from the frame's counters: no read-back.
+    void draw(const FrameRunner& runner, PhotonPoints which, int width, int height) const;
     void reloadPrograms(ShaderReloadReport& report) {
         mBounceProgram.reloadIfChanged(report);
         mResultProgram.reloadIfChanged(report);

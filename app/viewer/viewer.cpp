@@ -42,6 +42,9 @@ constexpr float kMaxExposureStops = 20.0f;
 constexpr size_t kPathCapacity = 512;
 constexpr double kWaitFileSeconds = 60.0; // wait_file: the other side is surely stuck by then
 constexpr double kWaitPollSeconds = 0.01;
+// Stats-panel read-backs (photon counts, white point) every this many frames: a few times a
+// second at interactive rates, instead of a GPU wait every frame.
+constexpr uint64_t kStatsReadbackFrames = 8;
 constexpr std::array<const char*, 4> kPointsNames = {"none", "bounce", "result", "both"};
 
 struct KeyAxis {
@@ -103,7 +106,9 @@ class Viewer {
     std::string mPendingScenePath;
     ScriptPlayer mScript;
     TimingHistory mTimings;
-    PhotonCounts mCounts;
+    PhotonCounts mCounts;      // of a recent frame (see kStatsReadbackFrames)
+    float mLuminanceMax = 0.0f; // likewise
+    uint64_t mFrameIndex = 0;
     int mWindowWidth = 0;
     int mWindowHeight = 0;
     double mLastTime = 0.0;
@@ -414,7 +419,7 @@ void Viewer::drawPanels() {
     if (ImGui::CollapsingHeader("Stats", ImGuiTreeNodeFlags_DefaultOpen)) {
         drawStatsPanel(mTimings, mCounts, mContext.getInfo().renderer,
                        gl::getTimingMethodName(mRunner->getTimingMethod()),
-                       mRunner->readLuminanceMax());
+                       mLuminanceMax);
     }
     if (!mStatus.empty()) ImGui::TextWrapped("%s", mStatus.c_str());
     ImGui::End();
@@ -493,7 +498,12 @@ int Viewer::run() {
 
         mRunner->renderFrame();
         mTimings.record(mRunner->getLastTimings());
-        mCounts = mRunner->readPhotonCounts();
+        // Counts and the white point are read back for the Stats panel only, every few frames:
+        // a read-back waits for the GPU to finish the frame.
+        if (mFrameIndex++ % kStatsReadbackFrames == 0) {
+            mCounts = mRunner->readPhotonCounts();
+            mLuminanceMax = mRunner->readLuminanceMax();
+        }
         mReference.update(mScene, *mRunner);
 
         gl::applyState({});
@@ -509,8 +519,7 @@ int Viewer::run() {
         }
         // Points are placed with the viewer camera: not over a light camera's image.
         if (mViews[static_cast<size_t>(mViewIndex)].source != DebugView::Source::LightGBuffer) {
-            mPointsDrawer.draw(*mRunner, mCounts, mPoints, mRunner->getWidth(),
-                               mRunner->getHeight());
+            mPointsDrawer.draw(*mRunner, mPoints, mRunner->getWidth(), mRunner->getHeight());
         }
         gl::bindDefaultFramebuffer(mWindowWidth, mWindowHeight);
         mImGui.beginFrame();

@@ -3,9 +3,13 @@
 #include "lib/frame_constants.glsl"
 #include "shared/photon_data.h"
 
+layout(std430, binding = kBindingPhotonCounters) readonly buffer Counters { PhotonCounters counters; };
+
 #ifdef RESULT_PHOTONS
 layout(std430, binding = kBindingResultPhotons) readonly buffer Photons { ResultPhoton photons[]; };
+uint getPhotonCount() { return min(counters.result.x, counters.result.y); }
 #else
+uint getPhotonCount() { return counters.bounce.x; }
 layout(std430, binding = kBindingBouncePhotons) readonly buffer Photons { BouncePhoton photons[]; };
 #endif
 
@@ -18,6 +22,14 @@ const float kTintWeight = 0.5; // half kind (which buffer), half the photon's ow
 const float kTinyPower = 1e-30; // keeps black photons from dividing by zero
 
 void main() {
+    // The draw covers the buffer's capacity; the count of this frame stays on the GPU.
+    if (uint(gl_VertexID) >= getPhotonCount()) {
+        gl_Position = vec4(2.0, 2.0, 2.0, 1.0); // outside the clip volume: dropped
+        gl_PointSize = 1.0;
+        vColor = vec3(0.0);
+        vPositionW = vec3(0.0);
+        return;
+    }
     vec3 positionW = photons[gl_VertexID].positionDistance.xyz;
     vec3 power = photons[gl_VertexID].power.rgb;
     vPositionW = positionW;
