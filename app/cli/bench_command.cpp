@@ -161,6 +161,7 @@ void printJson(const BenchReport& r) {
         out["photons"] = {{"emitted", r.photons->emitted},
                           {"bounced", r.photons->bounced},
                           {"stored", r.photons->stored},
+                          {"stored_in_view", r.photons->inView},
                           {"overflow", r.photons->overflow}};
     }
     out["settings"] = r.settings;
@@ -210,8 +211,10 @@ void printText(const BenchReport& r) {
     std::printf("  %-12s %10.2f %10.2f %10.2f\n", "total", r.total.medianMs, r.total.minMs,
                 r.total.maxMs);
     if (r.photons) {
-        std::printf("photons: emitted %u, after the first bounce %u, stored %u, overflow %u\n",
-                    r.photons->emitted, r.photons->bounced, r.photons->stored, r.photons->overflow);
+        std::printf("photons: emitted %u, after the first bounce %u, stored %u (%u in view), "
+                    "overflow %u\n",
+                    r.photons->emitted, r.photons->bounced, r.photons->stored, r.photons->inView,
+                    r.photons->overflow);
     }
     const std::string rss = r.peakRssMib ? strCat(static_cast<int64_t>(*r.peakRssMib + 0.5), " MiB")
                                          : std::string("unknown");
@@ -267,6 +270,7 @@ void addBenchCommand(CLI::App& app, BenchOptions& options) {
     CLI::App* cmd = app.add_subcommand("bench", "Time every pass over many frames of a scene");
     cmd->add_option("scene", options.scenePath,
                     "scene file (JSON); optional with --preset, which then supplies it");
+    cmd->add_option("--camera", options.cameraName, "view the scene through one of its named `cameras` (docs/scene-format.md)");
     cmd->add_option("--frames", options.frames, "timed frames, >= 1 (default 10)");
     cmd->add_option("--warmup", options.warmup,
                     "untimed frames first, >= 0 (default 2: first use of a program is slow)");
@@ -324,6 +328,7 @@ int runBench(const BenchOptions& options) {
     const Settings commandLine =
         makeCommandLineSettings(options.sets, options.width, options.height);
     Scene scene = loadScene(report.scenePath);
+    selectCamera(scene, options.cameraName);
     Settings settings = scene.settings;
     settings.merge(report.preset.settings);
     settings.merge(commandLine);

@@ -15,6 +15,7 @@ namespace ispm {
 
 struct BenchOptions {
     std::string scenePath; // optional only with a preset, which then supplies the scene
+    std::string cameraName; // --camera: one of the file's `cameras` ("" = `camera`)
     int frames = 10;       // timed frames
     // The first use of a program costs about 60 ms on llvmpipe (DESIGN.md): frames before the
     // timed ones absorb that.

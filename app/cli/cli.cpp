@@ -97,6 +97,14 @@ int runCompare(const std::string& a, const std::string& b, const std::string& ma
     std::printf("relMSE      %.6g\n", m.relMse);
     std::printf("SSIM        %.6f\n", m.ssim);
     std::printf("mean ratio  %.6f %.6f %.6f\n", m.meanRatio.x, m.meanRatio.y, m.meanRatio.z);
+    if (m.litPixelCount > 0) {
+        std::printf("energy        %.6f (mean ratio over the %zu pixels not black in B)\n", m.energy,
+                    m.litPixelCount);
+        std::printf("rel RMSE 4x4  %.6f\n", m.relRmse4);
+        std::printf("rel RMSE 1x1  %.6f\n", m.relRmse1);
+    } else {
+        std::printf("energy, rel RMSE: none (B is black everywhere)\n");
+    }
     if (maxRelMse >= 0.0 && !(m.relMse <= maxRelMse)) {
         std::printf("FAIL: relMSE %.6g > %.6g\n", m.relMse, maxRelMse);
         return kExitCheckFailed;

@@ -42,8 +42,9 @@ void printTimings(const FrameRunner& runner, const gl::ContextInfo& info) {
     std::printf("  %-12s %9.2f ms\n", "frame", total);
     const PhotonCounts c = runner.readPhotonCounts();
     if (c.emitted > 0) {
-        std::printf("photons: %u emitted, %u after the first bounce, %u stored, %u overflow\n",
-                    c.emitted, c.bounced, c.stored, c.overflow);
+        std::printf("photons: %u emitted, %u after the first bounce, %u stored (%u in view), %u "
+                    "overflow\n",
+                    c.emitted, c.bounced, c.stored, c.inView, c.overflow);
     }
 }
 

@@ -28,6 +28,7 @@ void addRenderCommand(CLI::App& app, RenderOptions& options) {
     cmd->add_option("-o,--output", options.outputPath,
                     "output image: .png (tone mapped) or .pfm/.exr (linear radiance)")
         ->required();
+    cmd->add_option("--camera", options.cameraName, "view the scene through one of its named `cameras` (docs/scene-format.md)");
     cmd->add_option("--width", options.width, "image width in pixels (setting `width`)");
     cmd->add_option("--height", options.height, "image height in pixels (setting `height`)");
     cmd->add_option("--set", options.sets, "override a setting: name=value (repeatable)");
@@ -112,6 +113,7 @@ int runRender(const RenderOptions& options) {
     Settings commandLine = makeCommandLineSettings(options.sets, options.width, options.height);
     if (options.bounces) commandLine.set("bounces", *options.bounces, "--bounces");
     Scene scene = loadScene(options.scenePath);
+    selectCamera(scene, options.cameraName);
     if (scene.isAnimated()) scene.update(options.timeS);
     Settings settings = scene.settings;
     settings.merge(commandLine);

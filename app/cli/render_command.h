@@ -13,6 +13,7 @@ namespace ispm {
 
 struct RenderOptions {
     std::string scenePath;
+    std::string cameraName; // --camera: one of the file's `cameras` ("" = `camera`)
     std::string outputPath;
     std::optional<int> width; // unset: from the settings
     std::optional<int> height;

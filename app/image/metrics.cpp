@@ -6,6 +6,7 @@
 #include "core/strings.h"
 #include "scene/input_error.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -86,6 +87,68 @@ glm::dvec3 computeMeanRatio(const Image& test, const Image& reference, const Pix
             computeRatio(testSum.z, referenceSum.z)};
 }
 
+PixelMask selectLitPixels(const Image& test, const Image& reference, const PixelMask* mask) {
+    countIncludedPixels(test, reference, mask);
+    PixelMask lit(test.getPixelCount(), 0);
+    size_t count = 0;
+    for (size_t i = 0; i < lit.size(); ++i) {
+        const glm::vec3& r = reference.pixels[i];
+        if (isIncluded(mask, i) && (r.x > 0.0f || r.y > 0.0f || r.z > 0.0f)) {
+            lit[i] = 1;
+            ++count;
+        }
+    }
+    if (count == 0) {
+        throw InputError(strCat("expected a reference with a pixel that is not black among the ",
+                                test.width, "x", test.height, " compared"));
+    }
+    return lit;
+}
+
+double computeEnergyRatio(const Image& test, const Image& reference, const PixelMask* mask) {
+    const PixelMask lit = selectLitPixels(test, reference, mask);
+    const glm::dvec3 ratio = computeMeanRatio(test, reference, &lit);
+    glm::dvec3 referenceSum(0.0);
+    sumIncluded(test, reference, &lit,
+                [&](const glm::dvec3&, const glm::dvec3& r) { referenceSum += r; });
+    // All channels together: the channel ratios weighted by the reference's channel sums.
+    const double total = referenceSum.x + referenceSum.y + referenceSum.z;
+    return (ratio.x * referenceSum.x + ratio.y * referenceSum.y + ratio.z * referenceSum.z) / total;
+}
+
+double computeRelRmse(const Image& test, const Image& reference, int blockPx,
+                      const PixelMask* mask) {
+    const PixelMask lit = selectLitPixels(test, reference, mask);
+    double squaredSum = 0.0;
+    double blockCount = 0.0;
+    double referenceSum = 0.0;
+    double litCount = 0.0;
+    for (int by = 0; by < test.height; by += blockPx) {
+        for (int bx = 0; bx < test.width; bx += blockPx) {
+            glm::dvec3 testMean(0.0);
+            glm::dvec3 referenceMean(0.0);
+            double n = 0.0;
+            for (int y = by; y < std::min(by + blockPx, test.height); ++y) {
+                for (int x = bx; x < std::min(bx + blockPx, test.width); ++x) {
+                    const size_t i = size_t(y) * size_t(test.width) + size_t(x);
+                    if (!lit[i]) continue;
+                    testMean += glm::dvec3(test.pixels[i]);
+                    referenceMean += glm::dvec3(reference.pixels[i]);
+                    n += 1.0;
+                }
+            }
+            if (n == 0.0) continue;
+            referenceSum += referenceMean.x + referenceMean.y + referenceMean.z;
+            litCount += n;
+            const glm::dvec3 d = (testMean - referenceMean) / n;
+            squaredSum += d.x * d.x + d.y * d.y + d.z * d.z;
+            blockCount += 1.0;
+        }
+    }
+    const double referenceMean = referenceSum / (kChannelCount * litCount);
+    return std::sqrt(squaredSum / (kChannelCount * blockCount)) / referenceMean;
+}
+
 ImageMetrics computeMetrics(const Image& test, const Image& reference, const PixelMask* mask) {
     ImageMetrics metrics;
     metrics.pixelCount = countIncludedPixels(test, reference, mask);
@@ -93,6 +156,15 @@ ImageMetrics computeMetrics(const Image& test, const Image& reference, const Pix
     metrics.relMse = computeRelMse(test, reference, mask);
     metrics.ssim = computeSsim(test, reference, mask);
     metrics.meanRatio = computeMeanRatio(test, reference, mask);
+    for (size_t i = 0; i < reference.getPixelCount(); ++i) {
+        const glm::vec3& r = reference.pixels[i];
+        if (isIncluded(mask, i) && (r.x > 0.0f || r.y > 0.0f || r.z > 0.0f)) ++metrics.litPixelCount;
+    }
+    if (metrics.litPixelCount > 0) {
+        metrics.energy = computeEnergyRatio(test, reference, mask);
+        metrics.relRmse4 = computeRelRmse(test, reference, kRelRmseBlock, mask);
+        metrics.relRmse1 = computeRelRmse(test, reference, 1, mask);
+    }
     return metrics;
 }
 

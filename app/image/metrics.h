@@ -21,7 +21,17 @@ struct ImageMetrics {
     double ssim = 1.0;
     glm::dvec3 meanRatio{1.0};
     size_t pixelCount = 0; // pixels the mask included
+    // DESIGN.md's quality figures, over included pixels where the reference is not black; left
+    // at these values (and litPixelCount 0) when the reference is black everywhere.
+    size_t litPixelCount = 0;
+    double energy = 1.0;    // computeEnergyRatio
+    double relRmse4 = 0.0;  // computeRelRmse, 4x4 blocks
+    double relRmse1 = 0.0;  // computeRelRmse, per pixel
 };
+
+// Side of the pixel blocks of the quality figure "rel RMSE (4x4)" (DESIGN.md): errors are
+// averaged over a block first, so the figure measures blotches, not per-pixel aliasing.
+constexpr int kRelRmseBlock = 4;
 
 // Every function below throws InputError when the sizes differ (naming both), when the mask has
 // another pixel count, or when no pixel is included (there is nothing to compare).
@@ -44,6 +54,19 @@ double computeSsim(const Image& test, const Image& reference, const PixelMask* m
 // reference sum gives 1 if the test sum is zero too, else +inf.
 glm::dvec3 computeMeanRatio(const Image& test, const Image& reference,
                             const PixelMask* mask = nullptr);
+
+// Pixels compared by the quality figures: included by the mask and not black in the reference
+// (some channel above 0). Throws InputError like countIncludedPixels when there are none.
+PixelMask selectLitPixels(const Image& test, const Image& reference, const PixelMask* mask);
+
+// mean(test) / mean(reference) over the lit pixels, all channels together (DESIGN.md "energy").
+double computeEnergyRatio(const Image& test, const Image& reference, const PixelMask* mask = nullptr);
+
+// DESIGN.md's rel RMSE: each channel averaged over the lit pixels of every blockPx x blockPx
+// block (blocks without one are left out), then sqrt(mean over blocks and channels of
+// (test - reference)^2) / mean(reference over lit pixels and channels). blockPx 1 = per pixel.
+double computeRelRmse(const Image& test, const Image& reference, int blockPx,
+                      const PixelMask* mask = nullptr);
 
 ImageMetrics computeMetrics(const Image& test, const Image& reference,
                             const PixelMask* mask = nullptr);

@@ -35,9 +35,12 @@ FrameRunner::FrameRunner(const Scene& scene, const Settings& settings, gl::Timin
       mFrameConstants("frame constants", sizeof(gpu::FrameConstants)) {
     mGBuffer = std::make_unique<GBufferPass>();
     mLightViews = std::make_unique<LightViewPass>();
-    mEmit = std::make_unique<PhotonEmitPass>(mLightViews->getGBuffer(), mPhotonBuffers);
+    mImportance = std::make_unique<ImportancePass>(mGBuffer->getGBuffer(), mLightViews->getGBuffer());
+    mEmit = std::make_unique<PhotonEmitPass>(mLightViews->getGBuffer(), mImportance->getCdf(),
+                                             mPhotonBuffers);
     mTrace = std::make_unique<PhotonTracePass>(mPhotonBuffers);
-    mSplat = std::make_unique<SplatPass>(mGBuffer->getGBuffer(), mPhotonBuffers);
+    mDensity = std::make_unique<PhotonDensityPass>(mPhotonBuffers);
+    mSplat = std::make_unique<SplatPass>(mGBuffer->getGBuffer(), mPhotonBuffers, mDensity->getClip());
     mDirect = std::make_unique<DirectPass>(mGBuffer->getGBuffer(), mLightViews->getGBuffer());
     mCompose = std::make_unique<ComposePass>(mGBuffer->getGBuffer(), mDirect->getOutput(),
                                              mSplat->getOutput());
@@ -45,9 +48,10 @@ FrameRunner::FrameRunner(const Scene& scene, const Settings& settings, gl::Timin
     resizePasses();
 }
 
-std::array<Pass*, 8> FrameRunner::getPasses() const {
-    return {mGBuffer.get(), mLightViews.get(), mEmit.get(),    mDirect.get(),
-            mTrace.get(),   mSplat.get(),      mCompose.get(), mTonemap.get()};
+std::array<Pass*, 10> FrameRunner::getPasses() const {
+    return {mGBuffer.get(), mLightViews.get(), mImportance.get(), mEmit.get(),
+            mDirect.get(),  mTrace.get(),      mDensity.get(),    mSplat.get(),
+            mCompose.get(), mTonemap.get()};
 }
 
 void FrameRunner::resizePasses() {
@@ -125,10 +129,14 @@ void FrameRunner::renderFrame() {
     const FrameInputs inputs = getFrameInputs();
     runPass(*mGBuffer, inputs);
     runPass(*mLightViews, inputs);
-    if (hasIndirect()) runPass(*mEmit, inputs);
+    if (hasIndirect()) {
+        runPass(*mImportance, inputs);
+        runPass(*mEmit, inputs);
+    }
     runPass(*mDirect, inputs);
     if (hasIndirect()) {
         runPass(*mTrace, inputs);
+        if (mSettings.getEnum("radius_mode") == "density") runPass(*mDensity, inputs);
         runPass(*mSplat, inputs);
     } else {
         // bounces = 0 or no photons: the image is direct light only.
@@ -164,7 +172,9 @@ size_t FrameRunner::getGpuBytes() const {
     constexpr size_t kBytesRgba8 = 4;
     constexpr size_t kFullResolutionRgba32F = 3; // direct, indirect, total
     const size_t pixels = static_cast<size_t>(mWidth) * static_cast<size_t>(mHeight);
-    return mGpuScene.getGpuBytes() + mPhotonBuffers.getGpuBytes() + mGBuffer->getGBuffer().getGpuBytes() +
+    return mGpuScene.getGpuBytes() + mPhotonBuffers.getGpuBytes() + mImportance->getGpuBytes() +
+           mDensity->getGpuBytes() +
+           mGBuffer->getGBuffer().getGpuBytes() +
            mLightViews->getGBuffer().getGpuBytes() +
            pixels * (kFullResolutionRgba32F * kBytesRgba32F + kBytesRgba8);
 }

@@ -5,6 +5,8 @@
 #include "gl/timer.h"
 #include "render/gbuffer_pass.h"
 #include "render/gpu_scene.h"
+#include "render/importance_pass.h"
+#include "render/photon_density_pass.h"
 #include "render/photon_emit_pass.h"
 #include "render/photon_trace_pass.h"
 #include "render/splat_pass.h"
@@ -65,6 +67,7 @@ public:
     FrameInputs getFrameInputs() const;
     const GBuffer& getViewerGBuffer() const { return mGBuffer->getGBuffer(); }
     const GBuffer& getLightGBuffer() const { return mLightViews->getGBuffer(); }
+    const ImportancePass& getImportance() const { return *mImportance; }
     float readLuminanceMax() const { return mTonemap->readLuminanceMax(); }
     int getWidth() const { return mWidth; }
     int getHeight() const { return mHeight; }
@@ -74,7 +77,7 @@ private:
     void resizePasses();
     void updateFrameConstants();
     // Every pass in frame order, for resize and shader reload.
-    std::array<Pass*, 8> getPasses() const;
+    std::array<Pass*, 10> getPasses() const;
     void runPass(Pass& pass, const FrameInputs& inputs);
 
     const Scene& mScene;
@@ -88,9 +91,11 @@ private:
     glm::mat4 mClipFromWorld{1.0f};
     std::unique_ptr<GBufferPass> mGBuffer;
     std::unique_ptr<LightViewPass> mLightViews;
+    std::unique_ptr<ImportancePass> mImportance;
     PhotonBuffers mPhotonBuffers;
     std::unique_ptr<PhotonEmitPass> mEmit;
     std::unique_ptr<PhotonTracePass> mTrace;
+    std::unique_ptr<PhotonDensityPass> mDensity;
     std::unique_ptr<SplatPass> mSplat;
     std::unique_ptr<DirectPass> mDirect;
     std::unique_ptr<ComposePass> mCompose;

@@ -28,6 +28,7 @@ PhotonCounts PhotonBuffers::readCounts(uint32_t emitted) const {
     counts.bounced = c.bounce.x;
     counts.stored = std::min(c.result.x, c.result.y);
     counts.overflow = c.result.z;
+    counts.inView = c.densityDispatch.w;
     return counts;
 }
 

@@ -15,6 +15,7 @@ struct PhotonCounts {
     uint32_t bounced = 0;  // survivors of the first bounce, in the bounce buffer
     uint32_t stored = 0;   // result photons kept
     uint32_t overflow = 0; // result photons dropped for want of capacity
+    uint32_t inView = 0;   // stored photons whose splat reaches the view (density radii only)
 };
 
 class PhotonBuffers {

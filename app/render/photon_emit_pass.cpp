@@ -7,6 +7,7 @@
 #include "render/shader_root.h"
 #include "scene/settings.h"
 
+#include <shared/importance_data.h>
 #include <shared/scene_data.h>
 
 #include <cstddef>
@@ -23,8 +24,9 @@ constexpr GLint kLocationResolution = 4;
 
 } // namespace
 
-PhotonEmitPass::PhotonEmitPass(const GBuffer& lightGBuffer, PhotonBuffers& buffers)
-    : mLightGBuffer(lightGBuffer), mBuffers(buffers),
+PhotonEmitPass::PhotonEmitPass(const GBuffer& lightGBuffer, const gl::Buffer& importanceCdf,
+                               PhotonBuffers& buffers)
+    : mLightGBuffer(lightGBuffer), mImportanceCdf(importanceCdf), mBuffers(buffers),
       mProgram(ReloadableProgram(
           {.label = "photon emit",
            .stages = {{gl::ShaderStage::Vertex, "photon/photon_emit.vert"},
@@ -53,6 +55,7 @@ void PhotonEmitPass::execute(const FrameInputs& inputs) {
     scene.bind();
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
     mLightGBuffer.bindTextures(gpu::kUnitLightGBufferFirst);
+    mImportanceCdf.bindBase(gl::BufferTarget::Storage, gpu::kBindingImportanceCdf);
     const glm::uvec2 seedMode(static_cast<uint32_t>(inputs.settings.getInt("seed")),
                               static_cast<uint32_t>(inputs.settings.get("rng")));
     glUniform2ui(kLocationSeedMode, seedMode.x, seedMode.y);

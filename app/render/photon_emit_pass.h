@@ -12,7 +12,9 @@ namespace ispm {
 
 class PhotonEmitPass final : public Pass {
 public:
-    PhotonEmitPass(const GBuffer& lightGBuffer, PhotonBuffers& buffers);
+    // `importanceCdf`: the light views' sampling tables (ImportancePass), read by the geometry stage.
+    PhotonEmitPass(const GBuffer& lightGBuffer, const gl::Buffer& importanceCdf,
+                   PhotonBuffers& buffers);
     const char* getName() const override { return "emit"; }
     void execute(const FrameInputs& inputs) override;
     void reloadPrograms(ShaderReloadReport& report) override { mProgram.reloadIfChanged(report); }
@@ -22,6 +24,7 @@ public:
 
 private:
     const GBuffer& mLightGBuffer;
+    const gl::Buffer& mImportanceCdf;
     PhotonBuffers& mBuffers;
     ReloadableProgram mProgram;
     gl::VertexArray mVertexArray;

@@ -8,6 +8,7 @@
 
 #include <shared/photon_data.h>
 #include <shared/scene_data.h>
+#include <shared/splat_clip.h>
 
 #include <glm/gtc/constants.hpp>
 
@@ -44,8 +45,8 @@ SplatRadii computeSplatRadii(double surfaceAreaM2, float diagonalM, const Settin
     return r;
 }
 
-SplatPass::SplatPass(const GBuffer& viewer, const PhotonBuffers& buffers)
-    : mViewer(viewer), mBuffers(buffers),
+SplatPass::SplatPass(const GBuffer& viewer, const PhotonBuffers& buffers, const gl::Buffer& clip)
+    : mViewer(viewer), mBuffers(buffers), mClip(clip),
       mProgram(ReloadableProgram({.label = "splat",
                                   .stages = {{gl::ShaderStage::Vertex, "splat/splat.vert"},
                                              {gl::ShaderStage::Fragment, "splat/splat.frag"}},
@@ -71,14 +72,16 @@ void SplatPass::execute(const FrameInputs& inputs) {
     mProgram.use();
     mVertexArray.bind();
     mBuffers.bind();
+    mClip.bindBase(gl::BufferTarget::Storage, gpu::kBindingSplatClip);
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
     mViewer.bindTextures(gpu::kUnitGBufferFirst);
     const SplatRadii r =
         computeSplatRadii(inputs.scene.getSurfaceArea(),
                           glm::length(inputs.scene.getBounds().getExtent()), inputs.settings);
     glUniform4f(kLocationRadius, r.radiusMinM, r.radiusMaxM, r.distMinM, r.distMaxM);
-    glUniform4f(kLocationShape, static_cast<float>(inputs.settings.get("radius_mode")),
-                cullInRasteriser ? 0.0f : 1.0f, inputs.settings.getFloat("squash"), 0.0f);
+    const auto radiusMode = static_cast<uint32_t>(inputs.settings.get("radius_mode"));
+    glUniform4f(kLocationShape, static_cast<float>(radiusMode), cullInRasteriser ? 0.0f : 1.0f,
+                inputs.settings.getFloat("squash"), radiusMode == gpu::kRadiusDensity ? 1.0f : 0.0f);
     const auto passes = static_cast<GLuint>(inputs.settings.getInt("splat_passes"));
     for (GLuint p = 0; p < passes; ++p) {
         glUniform2ui(kLocationPass, p, passes);

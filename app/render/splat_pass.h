@@ -25,7 +25,8 @@ SplatRadii computeSplatRadii(double surfaceAreaM2, float diagonalM, const Settin
 
 class SplatPass final : public Pass {
 public:
-    SplatPass(const GBuffer& viewer, const PhotonBuffers& buffers);
+    // `clip`: the density pass's clip distances, used when radius_mode is density.
+    SplatPass(const GBuffer& viewer, const PhotonBuffers& buffers, const gl::Buffer& clip);
     const char* getName() const override { return "splat"; }
     void resize(int width, int height) override;
     void execute(const FrameInputs& inputs) override;
@@ -36,6 +37,7 @@ public:
 private:
     const GBuffer& mViewer;
     const PhotonBuffers& mBuffers;
+    const gl::Buffer& mClip;
     ReloadableProgram mProgram;
     gl::VertexArray mVertexArray;
     gl::Texture mIndirect;

@@ -11,6 +11,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace ispm {
@@ -93,6 +94,8 @@ struct Instance {
 struct Scene {
     std::string sourcePath; // the file it was loaded from, for messages
     Camera camera;
+    // Further views the file names (`cameras`), chosen with selectCamera / --camera NAME.
+    std::vector<std::pair<std::string, Camera>> namedCameras;
     glm::vec3 background{0.0f};
     std::vector<Material> materials;
     std::vector<Mesh> meshes;
@@ -110,6 +113,10 @@ struct Scene {
     Aabb computeWorldBounds() const;
     size_t countTriangles() const;
 };
+
+// Makes the named camera of the file's `cameras` the scene's camera; an empty name keeps
+// `camera`. An unknown name throws InputError naming the file and /cameras.
+void selectCamera(Scene& scene, const std::string& name);
 
 // Camera matrices (OpenGL clip conventions, right-handed, -z forward in view space).
 glm::mat4 computeViewFromWorld(const Camera& camera);

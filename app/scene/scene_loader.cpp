@@ -119,10 +119,25 @@ void parseRender(const JsonNode& node, Settings& settings) {
 
 } // namespace
 
+void selectCamera(Scene& scene, const std::string& name) {
+    if (name.empty()) return;
+    std::string known;
+    for (const auto& [cameraName, camera] : scene.namedCameras) {
+        if (cameraName == name) {
+            scene.camera = camera;
+            return;
+        }
+        known += (known.empty() ? "" : ", ") + cameraName;
+    }
+    throwInputError(scene.sourcePath, "/cameras",
+                    strCat("a camera named '", name, "' (named: ", known.empty() ? "none" : known, ")"));
+}
+
 Scene parseScene(const nlohmann::json& doc, const std::string& file, const std::string& baseDir) {
     const JsonNode root(doc, "", file);
     root.checkKeys(
-        {"name", "description", "camera", "background", "materials", "objects", "lights", "render"},
+        {"name", "description", "camera", "cameras", "background", "materials", "objects", "lights",
+         "render"},
         "a scene");
     Scene scene;
     scene.sourcePath = file;
@@ -133,6 +148,12 @@ Scene parseScene(const nlohmann::json& doc, const std::string& file, const std::
 
     if (auto materials = root.find("materials")) parseMaterials(*materials, context);
     scene.camera = parseCamera(root.get("camera"));
+    if (auto cameras = root.find("cameras")) {
+        cameras->requireObject("named cameras: name -> camera");
+        for (const auto& [name, node] : cameras->getMembers()) {
+            scene.namedCameras.emplace_back(name, parseCamera(node));
+        }
+    }
     if (auto background = root.find("background")) {
         scene.background = background->readVec3(NumberRange::getAtLeast(0.0));
     }

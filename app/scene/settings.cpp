@@ -37,20 +37,31 @@ const std::vector<SettingDesc>& table() {
          "photon budget of the frame, shared among the lights (photon_share, else by power)", {}},
         {"bounces", SettingType::Int, 3, 0, 16, "",
          "indirect light that reflected 1..bounces times is kept (0: direct light only)", {}},
+        {"importance", SettingType::Float, 0.75, 0, 1, "",
+         "share of each light view's photons aimed at what the viewer sees (its importance map); "
+         "the rest follow the light's power alone (0: the thesis's uniform grid)",
+         {}},
+        {"importance_samples", SettingType::Int, 8192, 0, 1048576, "",
+         "viewer pixels per frame that build the importance maps (each also casts one bounce ray)",
+         {}},
         {"rng", SettingType::Enum, 0, 0, 1, "",
          "random numbers: pcg (stateless hash of photon, bounce and seed) or lcg (the thesis's "
          "linear congruential generator)",
          {"pcg", "lcg"}},
-        {"radius_mode", SettingType::Enum, 0, 0, 1, "",
-         "splat radius from travel distance (travel, the thesis) or from path density "
-         "(path_density, McGuire and Luebke 2009)",
-         {"travel", "path_density"}},
+        {"radius_mode", SettingType::Enum, 2, 0, 2, "",
+         "splat radius from travel distance (travel, the thesis), from path density "
+         "(path_density, McGuire and Luebke 2009) or from the local density of stored photons "
+         "(density: each disc holds about splat_neighbours photons)",
+         {"travel", "path_density", "density"}},
+        {"splat_neighbours", SettingType::Int, 0, 1, 4096, "",
+         "radius_mode density: photons a splat disc holds; derived: 32", {}, true},
         {"radius_min", SettingType::Float, 0, 1e-6, 1e6, "m",
-         "splat radius at dist_min or less; derived: r0 / 2, where `photons` discs of radius r0 "
-         "cover the scene's surface area 32 times", {},
+         "travel modes: splat radius at dist_min or less; derived: r0 / 2, where `photons` discs "
+         "of radius r0 cover the scene's surface area 32 times; density: a floor when set", {},
          true},
         {"radius_max", SettingType::Float, 0, 1e-6, 1e6, "m",
-         "splat radius at dist_max or more; derived: 2 r0", {},
+         "travel modes: splat radius at dist_max or more; derived: 2 r0; density: a ceiling when "
+         "set", {},
          true},
         {"dist_min", SettingType::Float, 0, 0, 1e9, "m",
          "travel distance where the radius starts to grow; derived: 0", {}, true},

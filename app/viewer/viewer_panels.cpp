@@ -82,6 +82,7 @@ void drawStatsPanel(const TimingHistory& timings, const PhotonCounts& counts,
     ImGui::Text("photons emitted  %u", counts.emitted);
     ImGui::Text("after bounce 1   %u", counts.bounced);
     ImGui::Text("stored           %u", counts.stored);
+    ImGui::Text("stored in view   %u", counts.inView);
     ImGui::Text("overflow         %u", counts.overflow);
     ImGui::Text("luminance max    %.4g W/(m^2 sr)", static_cast<double>(luminanceMax));
 }

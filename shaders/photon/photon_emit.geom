@@ -1,11 +1,13 @@
-// Photon emission, geometry stage: reads the light camera's G-buffer at the grid point, gives the
-// photon the power of its grid cell (intensity x falloff x cell solid angle, or irradiance x cell
-// area for the sun), makes the first bounce by Russian roulette and writes the surviving photon
-// to the bounce buffer through transform feedback. Nothing is rasterised.
+// Photon emission, geometry stage: warps the grid point through the light view's importance map
+// (lib/importance.glsl), reads the light camera's G-buffer there, gives the photon the power of
+// the part of the view it stands for (intensity x falloff x solid angle, or irradiance x area for
+// the sun, divided by the map's pdf), makes the first bounce by Russian roulette and writes the
+// surviving photon to the bounce buffer through transform feedback. Nothing is rasterised.
 #include "lib/scene_buffers.glsl"
 #include "lib/frame_constants.glsl"
 #include "lib/light_gbuffer.glsl"
 #include "lib/lights.glsl"
+#include "lib/importance.glsl"
 #include "shared/photon_data.h"
 #include "shared/photon_scatter.h"
 
@@ -24,41 +26,16 @@ out vec4 outPositionDistance;
 out vec4 outDirectionDensity;
 out vec4 outPower;
 
-// Solid angle of the image-plane rectangle [0,x] x [0,y] at unit distance from the eye.
-float computeCornerSolidAngle(float x, float y) { return atan(x * y, sqrt(1.0 + x * x + y * y)); }
-
-// Solid angle of the image-plane cell [p0, p1] at unit distance from the eye. Large cells: the
-// exact corner formula. Small cells: its four terms nearly cancel in float (absolute error
-// ~1e-7 sr whatever the cell), so integrate (1 + x^2 + y^2)^(-3/2) over the cell with 3x3
-// Gauss-Legendre instead, whose error falls as the cell's size to the sixth power.
-const float kExactCellSize = 0.25; // image-plane units; 1e-7 / (0.25^2 cos^3) < 1e-5 relative
-float computeCellSolidAngle(vec2 p0, vec2 p1) {
-    vec2 size = p1 - p0;
-    if (max(size.x, size.y) > kExactCellSize) {
-        return abs(computeCornerSolidAngle(p1.x, p1.y) - computeCornerSolidAngle(p0.x, p1.y) -
-                   computeCornerSolidAngle(p1.x, p0.y) + computeCornerSolidAngle(p0.x, p0.y));
-    }
-    const float nodes[3] = float[3](-0.774596669241483, 0.0, 0.774596669241483);
-    const float weights[3] = float[3](0.555555555555556, 0.888888888888889, 0.555555555555556);
-    vec2 centre = 0.5 * (p0 + p1);
-    float sum = 0.0;
-    for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) {
-            vec2 p = centre + 0.5 * size * vec2(nodes[i], nodes[j]);
-            float r2 = 1.0 + dot(p, p);
-            sum += weights[i] * weights[j] / (r2 * sqrt(r2));
-        }
-    }
-    return sum * 0.25 * size.x * size.y;
-}
-
 void main() {
     uint index = vGridIndex[0];
     uvec2 cell = uvec2(index % uGridSize.x, index / uGridSize.x);
-    vec2 cellSize = 1.0 / vec2(uGridSize);
-    vec2 uv0 = vec2(cell) * cellSize;
-    vec2 uv1 = uv0 + cellSize;
-    vec2 uv = uv0 + 0.5 * cellSize;
+    // The grid point, warped to where the importance map sends it; the photon stands for
+    // 1 / (count x pdf) of the view's unit square.
+    float pdf;
+    vec2 jitter = computeGridJitter(uView, uSeedMode.x);
+    vec2 uv = warpByImportance(uView, frame.counts.y, (vec2(cell) + jitter) / vec2(uGridSize), pdf);
+    if (!(pdf > 0.0)) return;
+    float share = 1.0 / (float(uGridSize.x * uGridSize.y) * pdf);
     ivec2 texel = min(ivec2(uv * float(uResolution)), ivec2(uResolution - 1));
     ivec3 at = ivec3(texel, int(uView));
     vec4 position = texelFetch(uLightPosition, at, 0);
@@ -71,17 +48,19 @@ void main() {
     vec3 dir;
     float travelled;
     if (view.info.y == 1u) {
-        // Orthographic (sun): the view spans texelSize * resolution metres.
+        // Orthographic (sun): the view spans texelSize * resolution metres. Travel counts from
+        // the first hit (the thesis, 5.2.1.a), not from a plane that depends on the scene.
         float widthM = view.axisTexel.w * float(uResolution);
-        power = light.power.rgb * (widthM * cellSize.x) * (widthM * cellSize.y);
+        power = light.power.rgb * (widthM * widthM * share);
         dir = axis;
-        travelled = dot(position.xyz - view.originAxis.xyz, axis);
+        travelled = 0.0;
     } else {
-        // Perspective: the image plane at unit distance spans [-t, t]^2, t = tan(fov / 2).
+        // Perspective: the image plane at unit distance spans [-t, t]^2, t = tan(fov / 2); the
+        // solid angle per unit of the view's square is (2t)^2 / (1 + x^2 + y^2)^(3/2).
         float t = 0.5 * view.axisTexel.w * float(uResolution);
-        vec2 p0 = (uv0 * 2.0 - 1.0) * t;
-        vec2 p1 = (uv1 * 2.0 - 1.0) * t;
-        float solidAngle = computeCellSolidAngle(p0, p1);
+        vec2 p = (uv * 2.0 - 1.0) * t;
+        float r2 = 1.0 + dot(p, p);
+        float solidAngle = 4.0 * t * t / (r2 * sqrt(r2)) * share;
         vec3 toSurface = position.xyz - view.originAxis.xyz;
         travelled = length(toSurface);
         dir = toSurface / travelled;

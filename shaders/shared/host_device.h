@@ -18,6 +18,7 @@
 ISPM_NAMESPACE_BEGIN
 // The GLSL built-ins shared functions use, from glm.
 using glm::abs;
+using glm::asin;
 using glm::clamp;
 using glm::cos;
 using glm::cross;

@@ -22,7 +22,8 @@ struct ResultPhoton {
     vec4 positionDistance; // xyz hit position (m); w = distance travelled from the light (m)
     vec4 normalDensity;    // xyz unit normal on the side the photon arrived from; w = path density
     vec4 incoming;         // xyz unit direction of travel; w = reflections before this hit
-    vec4 power;            // rgb incoming power (W)
+    vec4 power;            // rgb incoming power (W); w = splat radius (m) from the local photon
+                           // density (photon_density.comp), 0 before that pass
 };
 ISPM_STATIC_ASSERT_SIZE(ResultPhoton, 64);
 
@@ -33,8 +34,10 @@ struct PhotonCounters {
                          // z = overflow (appends dropped), w = bounce capacity
     uvec4 traceDispatch; // glDispatchComputeIndirect arguments (x, y, z)
     uvec4 splatDraw;     // glDrawArraysIndirect: count, instanceCount, first, baseInstance
+    uvec4 densityDispatch; // glDispatchComputeIndirect over the stored result photons (xyz);
+                           // w = photons whose splat lies in the view frustum (density radii)
 };
-ISPM_STATIC_ASSERT_SIZE(PhotonCounters, 64);
+ISPM_STATIC_ASSERT_SIZE(PhotonCounters, 80);
 
 ISPM_CONST uint kTraceGroupSize = 64u;
 ISPM_CONST uint kMaxSplatPasses = 64u;
@@ -45,6 +48,17 @@ ISPM_CONST int kBindingBouncePhotons = 11;
 ISPM_CONST int kBindingResultPhotons = 12;
 ISPM_CONST int kBindingPhotonCounters = 13;
 ISPM_CONST int kBindingSplatDraws = 14; // uvec4 draw commands, one per splat pass
+ISPM_CONST int kBindingDensityCells = 17; // photon_density.comp's hashed grid: 4 uints a slot
+
+// Splat radius modes (setting radius_mode, checked against the table in splat_pass.cpp).
+ISPM_CONST uint kRadiusTravel = 0u;
+ISPM_CONST uint kRadiusPathDensity = 1u;
+ISPM_CONST uint kRadiusDensity = 2u;
+
+// Local photon density: result photons are counted in hashed grids of cubic cells, one grid per
+// level, each level's cells twice the size of the one below.
+ISPM_CONST uint kDensityLevels = 12u;
+ISPM_CONST uint kDensityProbes = 32u; // open addressing gives up after this many slots
 
 ISPM_NAMESPACE_END
 

@@ -5,6 +5,8 @@
 #include "lib/frame_constants.glsl"
 #include "lib/brdf.glsl"
 #include "shared/photon_data.h"
+#include "shared/photon_scatter.h"
+#include "shared/splat_clip.h"
 
 layout(std430, binding = kBindingResultPhotons) readonly buffer ResultBuffer { ResultPhoton photons[]; };
 layout(location = 2) uniform vec4 uSplatShape; // y = 1: drop front faces here; z = squash
@@ -16,6 +18,7 @@ layout(binding = kUnitGBufferFirst + GBUFFER_SPECULAR) uniform sampler2D uSpecul
 
 flat in uint vPhoton;
 flat in float vRadius;
+flat in vec4 vClip;
 
 layout(location = 0) out vec4 outRadiance;
 
@@ -34,9 +37,23 @@ void main() {
     float s2 = dot(inPlane, inPlane) / (vRadius * vRadius);
     float z = along / (vRadius * uSplatShape.z);
     if (s2 + z * z > 1.0) discard;
+    // Beyond a clip line lies another surface (a wall the disc would climb or pass through).
+    vec3 t;
+    vec3 b;
+    buildSplatBasis(pn, t, b);
+    float st = dot(inPlane, t);
+    float sb = dot(inPlane, b);
+    if (st > vClip.x || -st > vClip.y || sb > vClip.z || -sb > vClip.w) discard;
+    // Gather-style renormalisation: the pixel's own disc (radius r, centred on it) is cut by the
+    // same lines; dividing by the part of it that lies on the surface keeps a uniform irradiance
+    // uniform up to the wall, and the photon's power on the surfaces it reached.
+    // A clip distance of the full radius means no wall was hit that way: no line there.
+    vec4 toLines = mix(vClip - vec4(st, -st, sb, -sb), vec4(2.0 * vRadius),
+                       greaterThanEqual(vClip, vec4(vRadius)));
+    float keptMass = computeKeptMass(toLines, vRadius);
     float kernel = 2.0 * kInvPi / (vRadius * vRadius) * (1.0 - s2);
     vec3 wi = -photon.incoming.xyz;
     vec3 wo = normalize(frame.cameraPosition.xyz - position.xyz);
     vec3 f = evaluateBrdf(texelFetch(uDiffuse, pixel, 0).rgb, texelFetch(uSpecular, pixel, 0), n, wi, wo);
-    outRadiance = vec4(f * photon.power.rgb * kernel, 1.0);
+    outRadiance = vec4(f * photon.power.rgb * (kernel / keptMass), 1.0);
 }

@@ -4,15 +4,18 @@
 #include "lib/frame_constants.glsl"
 #include "shared/photon_data.h"
 #include "shared/photon_scatter.h"
+#include "shared/splat_clip.h"
 #include "splat/splat_radius.glsl"
 
 layout(std430, binding = kBindingResultPhotons) readonly buffer ResultBuffer { ResultPhoton photons[]; };
 layout(std430, binding = kBindingPhotonCounters) readonly buffer CounterBuffer { PhotonCounters counters; };
+layout(std430, binding = kBindingSplatClip) readonly buffer SplatClip { vec4 splatClip[]; };
 
 layout(location = 0) uniform uvec2 uPass; // x = this pass, y = pass count
 
 flat out uint vPhoton;
 flat out float vRadius;
+flat out vec4 vClip; // free distances along +t, -t, +b, -b (m)
 
 // Unit cube corners and its 12 triangles, counter-clockwise seen from outside.
 const vec3 kCorners[8] = vec3[8](vec3(-1, -1, -1), vec3(1, -1, -1), vec3(-1, 1, -1), vec3(1, 1, -1),
@@ -27,11 +30,17 @@ void main() {
     vec3 n = photon.normalDensity.xyz;
     vec3 t;
     vec3 b;
-    buildBasis(n, t, b);
-    float radius = computeSplatRadius(photon.positionDistance.w, photon.normalDensity.w);
+    buildSplatBasis(n, t, b);
+    float radius = computeSplatRadius(photon);
+    // Without clip distances (travel radii) the lines lie on the disc's rim: nothing is cut.
+    vClip = uSplatShape.w > 0.5 ? min(splatClip[id], vec4(radius)) : vec4(radius);
+    // The box spans the disc cut by the clip lines; a photon culled by the density pass
+    // (radius 0) collapses to a point and draws nothing.
     vec3 c = kCorners[kIndices[gl_VertexID]];
+    float alongT = c.x > 0.0 ? vClip.x : vClip.y;
+    float alongB = c.y > 0.0 ? vClip.z : vClip.w;
     vec3 world = photon.positionDistance.xyz +
-                 radius * (t * c.x + b * c.y + n * (c.z * uSplatShape.z));
+                 (t * (c.x * alongT) + b * (c.y * alongB) + n * (c.z * radius * uSplatShape.z));
     vPhoton = id;
     vRadius = radius;
     gl_Position = frame.clipFromWorld * vec4(world, 1.0);

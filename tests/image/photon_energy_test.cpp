@@ -115,6 +115,7 @@ TEST_F(PhotonEnergyTest, OneSplatOnAPlaneIntegratesToBrdfTimesPower) {
     settings.set("bounces", 0, "test"); // the frame itself stores no photons
     settings.set("radius_min", kRadiusM, "test");
     settings.set("radius_max", kRadiusM, "test");
+    settings.setEnum("radius_mode", "travel", "test"); // the radius set above, not the density's
     FrameRunner runner(scene, settings, gl::TimingMethod::CpuFinish);
     runner.renderFrame();
 
@@ -134,7 +135,8 @@ TEST_F(PhotonEnergyTest, OneSplatOnAPlaneIntegratesToBrdfTimesPower) {
     const glm::uvec4 draw(gpu::kSplatCubeVertices, 1, 0, 0);
     buffers.getSplatDraws().upload(0, sizeof(draw), &draw);
 
-    SplatPass splat(runner.getViewerGBuffer(), buffers);
+    const gl::Buffer noClip; // travel radii: the splat reads no clip distances
+    SplatPass splat(runner.getViewerGBuffer(), buffers, noClip);
     splat.resize(kSize, kSize);
     splat.execute(runner.getFrameInputs());
     const std::vector<glm::vec4> radiance = splat.getOutput().readRgba();

@@ -219,5 +219,29 @@ TEST(ImageDiffTest, FalseColourSpansTheRampAndSurvivesNan) {
     }
 }
 
+TEST(QualityMetrics, EnergyAndBlockRelRmseByHand) {
+    // Reference: 8x4, left half 1, right half black (left out); test: the left 4x4 block is 1.5
+    // everywhere and the right half anything.
+    Image reference(8, 4);
+    Image test(8, 4, glm::vec3(7.0f));
+    for (int y = 0; y < 4; ++y) {
+        for (int x = 0; x < 4; ++x) {
+            reference.at(x, y) = glm::vec3(1.0f);
+            test.at(x, y) = glm::vec3(1.5f);
+        }
+    }
+    EXPECT_NEAR(computeEnergyRatio(test, reference), 1.5, kTolerance);
+    EXPECT_NEAR(computeRelRmse(test, reference, kRelRmseBlock), 0.5, kTolerance);
+    // Noise that averages out within a block counts per pixel, not per block.
+    for (int y = 0; y < 4; ++y) {
+        for (int x = 0; x < 4; ++x) test.at(x, y) = glm::vec3((x + y) % 2 == 0 ? 1.2f : 0.8f);
+    }
+    EXPECT_NEAR(computeRelRmse(test, reference, kRelRmseBlock), 0.0, 1e-7);
+    EXPECT_NEAR(computeRelRmse(test, reference, 1), 0.2, 1e-7);
+    EXPECT_NEAR(computeEnergyRatio(test, reference), 1.0, 1e-7);
+    // A black reference has nothing to compare.
+    EXPECT_THROW(computeEnergyRatio(test, Image(8, 4)), InputError);
+}
+
 } // namespace
 } // namespace ispm

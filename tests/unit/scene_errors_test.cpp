@@ -70,8 +70,8 @@ std::vector<ErrorCase> getErrorCases() {
         {"EmptyFile", [] { return std::string(); }, {"valid JSON"}},
         {"TopLevelNotObject", [] { return std::string("[1, 2]"); }, {"a scene"}},
         {"UnknownTopLevelKey",
-         mutate([](json& d) { d["cameras"] = 1; }),
-         {"/cameras", "'cameras'"}},
+         mutate([](json& d) { d["views"] = 1; }),
+         {"/views", "'views'"}},
         {"UnknownCameraKey",
          mutate([](json& d) {
              d["camera"]["positon"] = {0, 0, 0};

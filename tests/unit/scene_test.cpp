@@ -134,13 +134,35 @@ TEST(SceneLoader, MatrixWithTrsIsRejected) {
 }
 
 TEST(SceneLoader, ShippedScenesLoad) {
-    for (const char* name : {"cornell.json", "box_city.json"}) {
+    for (const char* name : {"cornell.json", "box_city.json", "courtyard.json", "dynamic.json"}) {
         SCOPED_TRACE(name);
         const Scene scene = loadScene(std::string(ISPM_ASSET_DIR) + "/scenes/" + name);
         EXPECT_FALSE(scene.meshes.empty());
         EXPECT_GT(scene.countTriangles(), 0u);
         EXPECT_FALSE(scene.lights.empty());
         EXPECT_FALSE(scene.computeWorldBounds().isEmpty());
+    }
+}
+
+TEST(SceneLoader, NamedCamerasAreChosenByName) {
+    Scene scene = loadScene(std::string(ISPM_ASSET_DIR) + "/scenes/courtyard.json");
+    const glm::vec3 outside = scene.camera.position;
+    selectCamera(scene, ""); // no name: the file's `camera`
+    EXPECT_EQ(scene.camera.position, outside);
+    selectCamera(scene, "room");
+    EXPECT_NE(scene.camera.position, outside);
+    // The room camera stands inside the room (x, z in [-2, 2], under its 3 m roof).
+    EXPECT_LT(std::abs(scene.camera.position.x), 2.0f);
+    EXPECT_LT(std::abs(scene.camera.position.z), 2.0f);
+    EXPECT_LT(scene.camera.position.y, 3.0f);
+    try {
+        selectCamera(scene, "attic");
+        FAIL() << "an unknown camera name was accepted";
+    } catch (const InputError& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("courtyard.json: /cameras"), std::string::npos) << message;
+        EXPECT_NE(message.find("'attic'"), std::string::npos) << message;
+        EXPECT_NE(message.find("room"), std::string::npos) << message;
     }
 }
 

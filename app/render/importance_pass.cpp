@@ -1,0 +1,78 @@
+// Importance: gather (viewer samples -> per-view hit maps), then tables (maps -> CDFs).
+#include "render/importance_pass.h"
+
+#include "gl/state.h"
+#include "render/gpu_scene.h"
+#include "scene/settings.h"
+
+#include <shared/importance_data.h>
+#include <shared/scene_data.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace ispm {
+namespace {
+
+// A visible point lit directly matters less than one a bounce away: the photon that lands on it
+// shows only after a further bounce, while a photon landing one bounce away lights it directly.
+constexpr float kVisibleWeight = 0.5f;
+constexpr float kBounceWeight = 1.0f;
+
+size_t computeCdfFloats(size_t views) {
+    return views * (gpu::kImportanceTexels + gpu::kImportanceSize);
+}
+
+} // namespace
+
+ImportancePass::ImportancePass(const GBuffer& viewer, const GBuffer& lights)
+    : mViewer(viewer), mLights(lights),
+      mGather(ReloadableProgram(
+          {.label = "importance gather",
+           .stages = {{gl::ShaderStage::Compute, "importance/importance_gather.comp"}},
+           .defines = getGBufferDefines()})),
+      mCdf(ReloadableProgram({.label = "importance tables",
+                              .stages = {{gl::ShaderStage::Compute, "importance/importance_cdf.comp"}},
+                              .defines = getGBufferDefines()})),
+      mParams("importance parameters", sizeof(gpu::ImportanceParams)) {}
+
+void ImportancePass::execute(const FrameInputs& inputs) {
+    const size_t views = inputs.scene.getLightCameras().size();
+    if (views == 0) return;
+    if (views != mViewCount) {
+        mHits = gl::Buffer("importance hits", views * gpu::kImportanceTexels * sizeof(uint32_t));
+        mCdfTables = gl::Buffer("importance tables", computeCdfFloats(views) * sizeof(float));
+        mViewCount = views;
+    }
+    // Gather samples on a grid of the image's aspect, at most one per pixel.
+    const double samples = inputs.settings.getInt("importance_samples");
+    const double aspect = double(inputs.width) / double(inputs.height);
+    const auto across = uint32_t(std::clamp(std::lround(std::sqrt(samples * aspect)), 1L, long(inputs.width)));
+    const auto down = uint32_t(std::clamp(std::lround(samples / across), 1L, long(inputs.height)));
+    const float share = inputs.settings.getFloat("importance");
+    gpu::ImportanceParams params{};
+    params.counts = glm::uvec4(across, down, uint32_t(views), uint32_t(inputs.settings.getInt("seed")));
+    params.weights = glm::vec4(share, kVisibleWeight, kBounceWeight, inputs.scene.getRayEpsilon());
+    mParams.upload(0, sizeof(params), &params);
+
+    inputs.scene.bind();
+    inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
+    mParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingImportanceParams);
+    mHits.bindBase(gl::BufferTarget::Storage, gpu::kBindingImportanceHits);
+    mCdfTables.bindBase(gl::BufferTarget::Storage, gpu::kBindingImportanceCdf);
+    mViewer.bindTextures(gpu::kUnitGBufferFirst);
+    mLights.bindTextures(gpu::kUnitLightGBufferFirst);
+    mHits.clearToZero();
+    if (share > 0.0f && samples > 0.0) {
+        mGather.use();
+        const uint32_t count = across * down;
+        gl::dispatchCompute((count + gpu::kImportanceGroupSize - 1) / gpu::kImportanceGroupSize);
+        gl::memoryBarrier(gl::Barrier::Storage);
+    }
+    mCdf.use();
+    gl::dispatchCompute(uint32_t(views));
+    // The emit pass's geometry stage reads the tables.
+    gl::memoryBarrier(gl::Barrier::Storage);
+}
+
+} // namespace ispm

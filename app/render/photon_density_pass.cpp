@@ -1,0 +1,99 @@
+// Density radii: clear the hashed grid, count the result photons into it, then set each radius.
+#include "render/photon_density_pass.h"
+
+#include "gl/gl.h"
+#include "gl/state.h"
+#include "render/gpu_scene.h"
+#include "scene/settings.h"
+
+#include <shared/photon_data.h>
+#include <shared/scene_data.h>
+#include <shared/splat_clip.h>
+
+#include <glm/gtc/constants.hpp>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <limits>
+
+namespace ispm {
+namespace {
+
+// Uniform locations of shaders/photon/photon_density.comp.
+constexpr GLint kLocationStage = 0;
+constexpr GLint kLocationGrid = 1;
+constexpr GLint kLocationTableMask = 2;
+constexpr GLint kLocationRadiusScale = 3;
+constexpr GLint kLocationEpsilon = 4;
+constexpr GLuint kStageCount = 0;
+constexpr GLuint kStageRadius = 1;
+
+// Photons a splat disc holds by default: enough that one photon's noise averages out over its
+// neighbours' (relative noise ~ 1 / sqrt(k)), few enough to keep detail and the splat's cost,
+// which grows with k (every lit pixel is covered by about k discs).
+constexpr int kDefaultNeighbours = 32;
+// The finest cell is this fraction of the evenly-spread radius (see computeDensityCellSize).
+constexpr float kFinestCellFraction = 1.0f / 16.0f;
+// Hashed slots per stored photon: each photon lands in one cell per level, distinct at the
+// finest few levels; 8 slots keep the table under 70% full at capacity.
+constexpr uint32_t kSlotsPerPhoton = 8;
+constexpr size_t kUintsPerSlot = 4; // key, count, power, padding (16-byte slots)
+
+} // namespace
+
+int computeSplatNeighbours(const Settings& settings) {
+    return settings.isSet("splat_neighbours") ? settings.getInt("splat_neighbours")
+                                              : kDefaultNeighbours;
+}
+
+float computeDensityCellSize(double surfaceAreaM2, int photons, int neighbours) {
+    const double evenRadius = std::sqrt(double(neighbours) * surfaceAreaM2 /
+                                        (glm::pi<double>() * std::max(photons, 1)));
+    return std::max(float(evenRadius) * kFinestCellFraction, std::numeric_limits<float>::min());
+}
+
+PhotonDensityPass::PhotonDensityPass(PhotonBuffers& buffers)
+    : mBuffers(buffers),
+      mProgram(ReloadableProgram(
+          {.label = "photon density",
+           .stages = {{gl::ShaderStage::Compute, "photon/photon_density.comp"}}})) {}
+
+void PhotonDensityPass::execute(const FrameInputs& inputs) {
+    const uint32_t slots = std::bit_ceil(std::max(mBuffers.getResultCapacity(), 1u) * kSlotsPerPhoton);
+    if (slots != mSlots) {
+        mCells = gl::Buffer("photon density cells", size_t(slots) * kUintsPerSlot * sizeof(uint32_t));
+        mSlots = slots;
+    }
+    const size_t clipBytes = size_t(std::max(mBuffers.getResultCapacity(), 1u)) * sizeof(glm::vec4);
+    if (mClip.getSize() != clipBytes) mClip = gl::Buffer("splat clip distances", clipBytes);
+    mCells.clearToZero();
+    const int neighbours = computeSplatNeighbours(inputs.settings);
+    const float scale = inputs.settings.getFloat("radius_scale");
+    const float radiusMin = inputs.settings.isSet("radius_min") ? inputs.settings.getFloat("radius_min") * scale : 0.0f;
+    const float radiusMax = inputs.settings.isSet("radius_max") ? inputs.settings.getFloat("radius_max") * scale
+                                                                 : std::numeric_limits<float>::max();
+    const float cell = computeDensityCellSize(inputs.scene.getSurfaceArea(),
+                                              inputs.settings.getInt("photons"), neighbours);
+
+    mBuffers.bind();
+    inputs.scene.bind();
+    inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
+    mCells.bindBase(gl::BufferTarget::Storage, gpu::kBindingDensityCells);
+    mClip.bindBase(gl::BufferTarget::Storage, gpu::kBindingSplatClip);
+    mProgram.use();
+    glUniform4f(kLocationGrid, cell, float(neighbours), radiusMin, radiusMax);
+    glUniform1ui(kLocationTableMask, slots - 1);
+    glUniform1f(kLocationRadiusScale, scale);
+    glUniform1f(kLocationEpsilon, inputs.scene.getRayEpsilon());
+    const size_t dispatchOffset = offsetof(gpu::PhotonCounters, densityDispatch);
+    glUniform1ui(kLocationStage, kStageCount);
+    gl::dispatchComputeIndirect(mBuffers.getCounters(), dispatchOffset);
+    gl::memoryBarrier(gl::Barrier::Storage);
+    glUniform1ui(kLocationStage, kStageRadius);
+    gl::dispatchComputeIndirect(mBuffers.getCounters(), dispatchOffset);
+    // The splat's vertex stage reads the radii.
+    gl::memoryBarrier(gl::Barrier::Storage);
+}
+
+} // namespace ispm

@@ -1,0 +1,37 @@
+// PhotonDensityPass (radius_mode = density): after tracing, every result photon gets the radius of
+// the disc that holds about `splat_neighbours` photons around it, estimated on the GPU from the
+// result photons themselves (hashed grids of cells at several sizes, photon_density.comp). Dense
+// places splat small and sharp, sparse ones large enough that discs still overlap.
+#pragma once
+
+#include "render/pass.h"
+#include "render/photon_buffers.h"
+
+namespace ispm {
+
+// The neighbour count k when `splat_neighbours` is not set, and the finest grid cell (m) for a
+// scene of `surfaceAreaM2` lit by `photons`: a sixteenth of the radius that k photons would have
+// if the whole budget were spread evenly, so that photons aimed at a small part of the scene
+// still find their level (the 12 levels reach 128 times that radius for sparse places).
+int computeSplatNeighbours(const Settings& settings);
+float computeDensityCellSize(double surfaceAreaM2, int photons, int neighbours);
+
+class PhotonDensityPass final : public Pass {
+public:
+    explicit PhotonDensityPass(PhotonBuffers& buffers);
+    const char* getName() const override { return "density"; }
+    void execute(const FrameInputs& inputs) override;
+    void reloadPrograms(ShaderReloadReport& report) override { mProgram.reloadIfChanged(report); }
+    // Per result photon: the four free distances of its disc (shared/splat_clip.h).
+    const gl::Buffer& getClip() const { return mClip; }
+    size_t getGpuBytes() const { return mCells.getSize() + mClip.getSize(); }
+
+private:
+    PhotonBuffers& mBuffers;
+    ReloadableProgram mProgram;
+    gl::Buffer mCells;
+    gl::Buffer mClip;
+    uint32_t mSlots = 0;
+};
+
+} // namespace ispm

@@ -1,0 +1,94 @@
+// Importance tables: one workgroup per light view, one invocation per map row. Each texel's
+// probability is a mix of the power the light sends through it (the uniform floor: every texel the
+// light reaches keeps a share) and that power times the gathered importance:
+//   p = (1 - a) base / sum(base) + a base imp / sum(base imp),  a = importance share,
+// base = solid angle x spot falloff (perspective) or 1 (orthographic). Texels the light sends
+// nothing through (outside a spot's outer cone) get no photon at all. Writes the conditional CDF
+// of every row and the marginal CDF of the rows (layout in shared/importance_data.h).
+#include "lib/scene_buffers.glsl"
+#include "lib/frame_constants.glsl"
+#include "lib/lights.glsl"
+#include "shared/importance_data.h"
+
+layout(local_size_x = kImportanceSize) in;
+
+layout(std140, binding = kBindingImportanceParams) uniform ImportanceParamsBlock {
+    ImportanceParams params;
+};
+layout(std430, binding = kBindingImportanceHits) readonly buffer ImportanceHits { uint importanceHits[]; };
+layout(std430, binding = kBindingImportanceCdf) writeonly buffer ImportanceCdf { float importanceCdf[]; };
+
+shared float sRowBase[kImportanceSize];
+shared float sRowWeighted[kImportanceSize];
+shared float sRowMass[kImportanceSize];
+
+// Power the light sends through map texel (column, row), up to a factor common to the view.
+// Spot falloff is taken as its largest value at the texel's centre and corners, so a texel the cone
+// touches anywhere keeps a probability (the photon's own power uses the exact falloff).
+float computeBase(GpuLightView view, GpuLight light, uint column, uint row) {
+    if (view.info.y == 1u) return 1.0; // orthographic: equal areas, equal power
+    float t = 0.5 * view.axisTexel.w * frame.shadow.y;
+    vec2 uv = (vec2(column, row) + 0.5) / float(kImportanceSize);
+    vec2 p = (uv * 2.0 - 1.0) * t;
+    float r2 = 1.0 + dot(p, p);
+    float solidAngle = 1.0 / (r2 * sqrt(r2)); // per image-plane area, at unit distance
+    if (uint(light.positionType.w + 0.5) != kLightSpot) return solidAngle;
+    float halfTexel = t / float(kImportanceSize);
+    float falloff = 0.0;
+    for (int i = 0; i < 5; ++i) {
+        vec2 corner = i == 4 ? vec2(0.0) : vec2((i & 1) == 0 ? -1.0 : 1.0, (i & 2) == 0 ? -1.0 : 1.0);
+        vec2 q = p + corner * halfTexel;
+        float cosAngle = 1.0 / sqrt(1.0 + dot(q, q));
+        falloff = max(falloff, computeSpotFalloff(cosAngle, light.power.w, light.directionCos.w));
+    }
+    return solidAngle * falloff;
+}
+
+void main() {
+    uint viewIndex = gl_WorkGroupID.x;
+    uint row = gl_LocalInvocationID.x;
+    GpuLightView view = lightViews[viewIndex];
+    GpuLight light = lights[view.info.x];
+    uint first = viewIndex * kImportanceTexels + row * kImportanceSize;
+    float rowBase = 0.0;
+    float rowWeighted = 0.0;
+    for (uint c = 0u; c < kImportanceSize; ++c) {
+        float base = computeBase(view, light, c, row);
+        rowBase += base;
+        rowWeighted += base * float(importanceHits[first + c]);
+    }
+    sRowBase[row] = rowBase;
+    sRowWeighted[row] = rowWeighted;
+    barrier();
+    float totalBase = 0.0;
+    float totalWeighted = 0.0;
+    for (uint r = 0u; r < kImportanceSize; ++r) {
+        totalBase += sRowBase[r];
+        totalWeighted += sRowWeighted[r];
+    }
+    // Without gathered importance (nothing of it visible) the floor takes everything.
+    float share = totalWeighted > 0.0 ? params.weights.x : 0.0;
+    float baseScale = totalBase > 0.0 ? (1.0 - share) / totalBase : 0.0;
+    float weightedScale = totalWeighted > 0.0 ? share / totalWeighted : 0.0;
+
+    // Conditional CDF of this row; a row of no mass gets a uniform one (it is never chosen).
+    float rowMass = baseScale * rowBase + weightedScale * rowWeighted;
+    float running = 0.0;
+    for (uint c = 0u; c < kImportanceSize; ++c) {
+        float base = computeBase(view, light, c, row);
+        float p = base * (baseScale + weightedScale * float(importanceHits[first + c]));
+        running += rowMass > 0.0 ? p / rowMass : 1.0 / float(kImportanceSize);
+        importanceCdf[first + c] = c + 1u == kImportanceSize ? 1.0 : min(running, 1.0);
+    }
+    sRowMass[row] = rowMass;
+    barrier();
+    if (row != 0u) return;
+    uint marginal = params.counts.z * kImportanceTexels + viewIndex * kImportanceSize;
+    float total = 0.0;
+    for (uint r = 0u; r < kImportanceSize; ++r) total += sRowMass[r];
+    running = 0.0;
+    for (uint r = 0u; r < kImportanceSize; ++r) {
+        running += total > 0.0 ? sRowMass[r] / total : 1.0 / float(kImportanceSize);
+        importanceCdf[marginal + r] = r + 1u == kImportanceSize ? 1.0 : min(running, 1.0);
+    }
+}

@@ -1,0 +1,78 @@
+// Importance gather: where do this frame's photons matter? Samples of the viewer's G-buffer (one
+// jittered pixel per cell of a coarse grid over the image) add importance to the light-view texels
+// that light them: the visible point itself where a light sees it, and the point one cosine-sampled
+// bounce away (a short ray through the BVH) where a light sees that one. Each hit is splatted
+// bilinearly into the light view's coarse map (shared/importance_data.h).
+#include "lib/scene_buffers.glsl"
+#include "lib/frame_constants.glsl"
+#include "lib/lights.glsl"
+#include "lib/bvh.glsl"
+#include "shared/importance_data.h"
+#include "shared/photon_scatter.h"
+
+layout(local_size_x = kImportanceGroupSize) in;
+
+layout(std140, binding = kBindingImportanceParams) uniform ImportanceParamsBlock {
+    ImportanceParams params;
+};
+layout(std430, binding = kBindingImportanceHits) buffer ImportanceHits { uint importanceHits[]; };
+
+layout(binding = kUnitGBufferFirst + GBUFFER_POSITION) uniform sampler2D uPosition;
+layout(binding = kUnitGBufferFirst + GBUFFER_NORMAL) uniform sampler2D uNormal;
+
+// Adds `weight` to the map texels around light-view coordinate `uv` (in [0,1]^2), bilinearly.
+void addImportance(uint view, vec2 uv, float weight) {
+    vec2 at = uv * float(kImportanceSize) - 0.5;
+    ivec2 lo = ivec2(floor(at));
+    vec2 f = at - vec2(lo);
+    for (int dy = 0; dy <= 1; ++dy) {
+        for (int dx = 0; dx <= 1; ++dx) {
+            ivec2 t = clamp(lo + ivec2(dx, dy), ivec2(0), ivec2(int(kImportanceSize) - 1));
+            float w = (dx == 1 ? f.x : 1.0 - f.x) * (dy == 1 ? f.y : 1.0 - f.y) * weight;
+            uint index = view * kImportanceTexels + uint(t.y) * kImportanceSize + uint(t.x);
+            atomicAdd(importanceHits[index], uint(w * kImportanceFixedPoint + 0.5));
+        }
+    }
+}
+
+// For every light that sees the surface point (p, n) directly, adds `weight` where its camera
+// sees it. n may face either way: it is turned towards the light first.
+void addLitPoint(vec3 p, vec3 n, float weight) {
+    for (uint i = 0u; i < frame.counts.x; ++i) {
+        GpuLight light = lights[i];
+        LightSample s = sampleLight(light, p);
+        if (all(equal(s.irradiance, vec3(0.0)))) continue;
+        vec3 facing = dot(n, s.wi) >= 0.0 ? n : -n;
+        uint view = selectLightView(light, p);
+        vec4 clip = lightViews[view].clipFromWorld * vec4(p, 1.0);
+        if (clip.w <= 0.0) continue;
+        vec2 ndc = clip.xy / clip.w;
+        if (any(greaterThan(abs(ndc), vec2(1.0)))) continue;
+        if (computeVisibility(light, p, facing) < 0.5) continue;
+        addImportance(view, ndc * 0.5 + 0.5, weight);
+    }
+}
+
+void main() {
+    uint index = gl_GlobalInvocationID.x;
+    uvec2 grid = params.counts.xy;
+    if (index >= grid.x * grid.y) return;
+    uvec2 cell = uvec2(index % grid.x, index / grid.x);
+    uint rng = seedRandom(index, 0u, params.counts.w);
+    vec2 jitter = vec2(nextRandom(rng, kRngPcg), nextRandom(rng, kRngPcg));
+    vec2 imageSize = frame.imageSize.xy;
+    ivec2 pixel = ivec2((vec2(cell) + jitter) * imageSize / vec2(grid));
+    pixel = clamp(pixel, ivec2(0), ivec2(imageSize) - 1);
+    vec4 position = texelFetch(uPosition, pixel, 0);
+    if (position.w < 0.5) return;
+    vec3 n = normalize(texelFetch(uNormal, pixel, 0).xyz);
+    addLitPoint(position.xyz, n, params.weights.y);
+
+    // One bounce towards the surfaces that light this one.
+    vec3 dir = sampleCosine(n, nextRandom(rng, kRngPcg), nextRandom(rng, kRngPcg));
+    RayHit hit;
+    if (!traceRay(position.xyz + n * params.weights.w, dir, 3.0e38, hit)) return;
+    vec3 q = position.xyz + n * params.weights.w + dir * hit.t;
+    vec3 nq = computeHitNormal(hit);
+    addLitPoint(q, dot(nq, dir) < 0.0 ? nq : -nq, params.weights.z);
+}

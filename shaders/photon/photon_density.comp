@@ -1,0 +1,169 @@
+// Splat radii from the local density of result photons. Stage 0 counts every stored photon, and
+// sums its power, into a hashed grid of cubic cells at each level (cell size h0 * 2^level).
+// Stage 1 finds, per photon, the finest level whose 2x2x2 block of cells around it holds at least
+// k photons and takes the local power density E = power / area from that block (a plane through
+// it cuts about (2h)^2). The photon's disc gets the radius at which its own power is 1/k of what
+// lands there, r = sqrt(k P / (pi E)): with equal powers, the disc that holds k photons; a photon
+// k times stronger than its neighbours (importance sampling's floor, another light) spreads
+// wider instead of making a bright spot. Times radius_scale, clamped.
+//
+// Stage 1 also culls photons whose disc lies outside the view frustum (radius 0: the splat skips
+// them) and casts the four in-plane rays that clip each disc (shared/splat_clip.h).
+#include "lib/scene_buffers.glsl"
+#include "lib/bvh.glsl"
+#include "lib/frame_constants.glsl"
+#include "shared/photon_data.h"
+#include "shared/photon_scatter.h"
+#include "shared/splat_clip.h"
+
+layout(local_size_x = kTraceGroupSize) in;
+
+layout(std430, binding = kBindingResultPhotons) buffer ResultBuffer { ResultPhoton photons[]; };
+layout(std430, binding = kBindingPhotonCounters) buffer CounterBuffer { PhotonCounters counters; };
+layout(std430, binding = kBindingSplatClip) writeonly buffer SplatClip { vec4 splatClip[]; };
+// Slot s: key at 4s (0 = empty), photon count at 4s + 1, power (float bits) at 4s + 2.
+layout(std430, binding = kBindingDensityCells) buffer DensityCells { uint cells[]; };
+
+layout(location = 0) uniform uint uStage;     // 0: count, 1: radii
+layout(location = 1) uniform vec4 uGrid;      // x = finest cell (m), y = neighbours k,
+                                              // z = radius min (m), w = radius max (m)
+layout(location = 2) uniform uint uTableMask; // slots - 1 (a power of two)
+layout(location = 3) uniform float uRadiusScale;
+layout(location = 4) uniform float uEpsilonM; // ray offset off a surface (m)
+
+// The clip rays run this far above the surface, as a fraction of the radius: steps lower than
+// that do not clip a disc, walls do.
+const float kClipLift = 0.02;
+
+// Whether a sphere lies entirely outside one of the view frustum's planes (Gribb and Hartmann:
+// the planes are sums and differences of the rows of clipFromWorld).
+bool isOutsideView(vec3 centre, float radius) {
+    mat4 m = transpose(frame.clipFromWorld);
+    for (int i = 0; i < 6; ++i) {
+        vec4 plane = m[3] + ((i & 1) == 0 ? 1.0 : -1.0) * m[i / 2];
+        if (dot(plane.xyz, centre) + plane.w < -radius * length(plane.xyz)) return true;
+    }
+    return false;
+}
+
+// How far the photon's surface plane is free along `dir`, up to `radius`.
+float traceClip(vec3 origin, vec3 dir, float radius) {
+    RayHit hit;
+    return traceRay(origin, dir, radius, hit) ? hit.t : radius;
+}
+
+const float kPi = 3.14159265358979;
+
+// Photons are counted apart by the side they face (the major axis of the normal and its sign):
+// the two faces of a thin wall, or a floor and the wall it meets, do not share a density.
+uint getFacing(vec3 n) {
+    vec3 a = abs(n);
+    uint axis = a.x >= a.y && a.x >= a.z ? 0u : (a.y >= a.z ? 1u : 2u);
+    return 2u * axis + (n[axis] < 0.0 ? 1u : 0u);
+}
+
+uint hashCell(ivec3 c, uint level, uint facing) {
+    return hashPcg(uint(c.x) ^ hashPcg(uint(c.y) ^ hashPcg(uint(c.z) ^ hashPcg(level * 8u + facing))));
+}
+
+// Float addition by compare-and-swap (core GLSL has no float atomics).
+void addFloat(uint index, float value) {
+    uint seen = cells[index];
+    for (;;) {
+        uint previous = atomicCompSwap(cells[index], seen, floatBitsToUint(uintBitsToFloat(seen) + value));
+        if (previous == seen) return;
+        seen = previous;
+    }
+}
+
+void insertCell(ivec3 c, uint level, uint facing, float power) {
+    uint h = hashCell(c, level, facing);
+    uint key = h | 1u;
+    uint slot = hashPcg(h) & uTableMask;
+    for (uint i = 0u; i < kDensityProbes; ++i) {
+        uint previous = atomicCompSwap(cells[4u * slot], 0u, key);
+        if (previous == 0u || previous == key) {
+            atomicAdd(cells[4u * slot + 1u], 1u);
+            addFloat(4u * slot + 2u, power);
+            return;
+        }
+        slot = (slot + 1u) & uTableMask;
+    }
+}
+
+// (photon count, power) of a cell.
+vec2 findCell(ivec3 c, uint level, uint facing) {
+    uint h = hashCell(c, level, facing);
+    uint key = h | 1u;
+    uint slot = hashPcg(h) & uTableMask;
+    for (uint i = 0u; i < kDensityProbes; ++i) {
+        uint k = cells[4u * slot];
+        if (k == key) return vec2(float(cells[4u * slot + 1u]), uintBitsToFloat(cells[4u * slot + 2u]));
+        if (k == 0u) return vec2(0.0);
+        slot = (slot + 1u) & uTableMask;
+    }
+    return vec2(0.0);
+}
+
+float getCellSize(uint level) { return uGrid.x * exp2(float(level)); }
+
+// (photon count, power) of the 2x2x2 cells nearest to p (a cube of side 2h around it).
+vec2 sumBlock(vec3 p, uint level, uint facing) {
+    ivec3 first = ivec3(floor(p / getCellSize(level) - 0.5));
+    vec2 sum = vec2(0.0);
+    for (int i = 0; i < 8; ++i) sum += findCell(first + ivec3(i & 1, (i >> 1) & 1, i >> 2), level, facing);
+    return sum;
+}
+
+// The photon's power as one number: the mean over RGB, so saturated colours count.
+float getPhotonPower(uint index) { return max(computeMean(photons[index].power.rgb), 1e-30); }
+
+void main() {
+    uint index = gl_GlobalInvocationID.x;
+    if (index >= counters.splatDraw.y) return;
+    vec3 p = photons[index].positionDistance.xyz;
+    float power = getPhotonPower(index);
+    uint facing = getFacing(photons[index].normalDensity.xyz);
+    if (uStage == 0u) {
+        for (uint level = 0u; level < kDensityLevels; ++level) {
+            insertCell(ivec3(floor(p / getCellSize(level))), level, facing, power);
+        }
+        return;
+    }
+    // Counts grow with the level: binary search for the finest one that holds k.
+    float k = uGrid.y;
+    uint lo = 0u;
+    uint hi = kDensityLevels - 1u;
+    vec2 block = sumBlock(p, hi, facing);
+    if (block.x >= k) {
+        while (lo < hi) {
+            uint mid = (lo + hi) / 2u;
+            vec2 b = sumBlock(p, mid, facing);
+            if (b.x >= k) {
+                hi = mid;
+                block = b;
+            } else {
+                lo = mid + 1u;
+            }
+        }
+    }
+    float side = 2.0 * getCellSize(hi);
+    float powerDensity = max(block.y, power) / (side * side);
+    float radius = sqrt(k * power / (kPi * powerDensity)) * uRadiusScale;
+    // Never wider than the coarsest block: a lone photon in an empty scene stays finite.
+    radius = min(radius, 2.0 * getCellSize(kDensityLevels - 1u));
+    radius = clamp(radius, uGrid.z, uGrid.w);
+    if (isOutsideView(p, radius)) {
+        photons[index].power.w = 0.0;
+        return;
+    }
+    atomicAdd(counters.densityDispatch.w, 1u); // photons in view, for reports
+    photons[index].power.w = radius;
+    vec3 n = photons[index].normalDensity.xyz;
+    vec3 t;
+    vec3 b;
+    buildSplatBasis(n, t, b);
+    vec3 origin = p + n * max(4.0 * uEpsilonM, kClipLift * radius);
+    splatClip[index] = vec4(traceClip(origin, t, radius), traceClip(origin, -t, radius),
+                            traceClip(origin, b, radius), traceClip(origin, -b, radius));
+}

@@ -1,0 +1,50 @@
+// Importance-driven emission, shared by C++ and GLSL: every light view gets a coarse map of where
+// its photons matter to the viewer this frame, built on the GPU from the viewer's G-buffer, and the
+// emission grid is warped through the map's inverse CDF (DESIGN.md "Where photons should go").
+#ifndef ISPM_IMPORTANCE_DATA_H
+#define ISPM_IMPORTANCE_DATA_H
+
+#include "host_device.h"
+#include "photon_scatter.h"
+
+ISPM_NAMESPACE_BEGIN
+
+// Map texels across (and down) one light view. 64 keeps the map's CDF build one workgroup of 64
+// rows per view and a door of a 30 m yard two texels wide; finer maps gather fewer hits a texel.
+ISPM_CONST uint kImportanceSize = 64u;
+ISPM_CONST uint kImportanceTexels = kImportanceSize * kImportanceSize;
+
+// Gathered importance is summed with integer atomics in these units per hit (fixed point), so a
+// map texel holds up to 2^32 / 256 = 16 million hits.
+ISPM_CONST float kImportanceFixedPoint = 256.0f;
+
+ISPM_CONST uint kImportanceGroupSize = 64u;
+
+// Per map texel and light view: the gathered importance (uint, fixed point; view-major), and the
+// sampling tables built from it: for view v, conditional CDFs of the columns within each row at
+// [v * texels + row * size + column] (inclusive, the row's last entry 1), then the marginal CDF of
+// the rows at [views * texels + v * size + row] (inclusive, last 1).
+ISPM_CONST int kBindingImportanceHits = 15;
+ISPM_CONST int kBindingImportanceCdf = 16;
+
+// Where in its cell each grid point of a light view sits this frame ([0,1)^2, the same for every
+// cell of the view): a random shift of the whole grid by the frame seed keeps it stratified and
+// makes every frame an unbiased estimate, so frames with other seeds sample other first hits.
+ISPM_INLINE vec2 computeGridJitter(uint view, uint frameSeed) {
+    uint state = seedRandom(view, 0xffffffffu, frameSeed);
+    float x = nextRandom(state, kRngPcg);
+    return vec2(x, nextRandom(state, kRngPcg));
+}
+
+// Parameters of the importance passes (std140 uniform block).
+struct ImportanceParams {
+    uvec4 counts;   // x = gather samples across, y = down, z = light view count, w = frame seed
+    vec4 weights;   // x = importance share (1 - uniform floor), y = weight of a visible point,
+                    // z = weight of a point one bounce away, w = ray offset (m)
+};
+ISPM_STATIC_ASSERT_SIZE(ImportanceParams, 32);
+ISPM_CONST int kBindingImportanceParams = 1; // uniform buffer
+
+ISPM_NAMESPACE_END
+
+#endif
