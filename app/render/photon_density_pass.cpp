@@ -33,8 +33,9 @@ constexpr GLuint kStageRadius = 1;
 // neighbours' (relative noise ~ 1 / sqrt(k)), few enough to keep detail and the splat's cost,
 // which grows with k (every lit pixel is covered by about k discs).
 constexpr int kDefaultNeighbours = 32;
-// The finest cell is this fraction of the evenly-spread radius (see computeDensityCellSize).
+// Fractions of the evenly-spread radius (computeEvenRadius): the finest cell, the largest radius.
 constexpr float kFinestCellFraction = 1.0f / 16.0f;
+constexpr float kMaxRadiusFactor = 4.0f;
 // Hashed slots per stored photon: each photon lands in one cell per level, distinct at the
 // finest few levels; 8 slots keep the table under 70% full at capacity.
 constexpr uint32_t kSlotsPerPhoton = 8;
@@ -47,10 +48,10 @@ int computeSplatNeighbours(const Settings& settings) {
                                               : kDefaultNeighbours;
 }
 
-float computeDensityCellSize(double surfaceAreaM2, int photons, int neighbours) {
+float computeEvenRadius(double surfaceAreaM2, int photons, int neighbours) {
     const double evenRadius = std::sqrt(double(neighbours) * surfaceAreaM2 /
                                         (glm::pi<double>() * std::max(photons, 1)));
-    return std::max(float(evenRadius) * kFinestCellFraction, std::numeric_limits<float>::min());
+    return std::max(float(evenRadius), std::numeric_limits<float>::min());
 }
 
 PhotonDensityPass::PhotonDensityPass(PhotonBuffers& buffers)
@@ -65,16 +66,18 @@ void PhotonDensityPass::execute(const FrameInputs& inputs) {
         mCells = gl::Buffer("photon density cells", size_t(slots) * kUintsPerSlot * sizeof(uint32_t));
         mSlots = slots;
     }
-    const size_t clipBytes = size_t(std::max(mBuffers.getResultCapacity(), 1u)) * sizeof(glm::vec4);
+    const size_t clipBytes = size_t(std::max(mBuffers.getResultCapacity(), 1u)) * gpu::kClipRays *
+                             sizeof(glm::vec2);
     if (mClip.getSize() != clipBytes) mClip = gl::Buffer("splat clip distances", clipBytes);
     mCells.clearToZero();
     const int neighbours = computeSplatNeighbours(inputs.settings);
     const float scale = inputs.settings.getFloat("radius_scale");
     const float radiusMin = inputs.settings.isSet("radius_min") ? inputs.settings.getFloat("radius_min") * scale : 0.0f;
-    const float radiusMax = inputs.settings.isSet("radius_max") ? inputs.settings.getFloat("radius_max") * scale
-                                                                 : std::numeric_limits<float>::max();
-    const float cell = computeDensityCellSize(inputs.scene.getSurfaceArea(),
-                                              inputs.settings.getInt("photons"), neighbours);
+    const float even = computeEvenRadius(inputs.scene.getSurfaceArea(),
+                                         inputs.settings.getInt("photons"), neighbours);
+    const float radiusMax = (inputs.settings.isSet("radius_max") ? inputs.settings.getFloat("radius_max")
+                                                                 : kMaxRadiusFactor * even) * scale;
+    const float cell = kFinestCellFraction * even;
 
     mBuffers.bind();
     inputs.scene.bind();

@@ -9,12 +9,13 @@
 
 namespace ispm {
 
-// The neighbour count k when `splat_neighbours` is not set, and the finest grid cell (m) for a
-// scene of `surfaceAreaM2` lit by `photons`: a sixteenth of the radius that k photons would have
-// if the whole budget were spread evenly, so that photons aimed at a small part of the scene
-// still find their level (the 12 levels reach 128 times that radius for sparse places).
+// The neighbour count k when `splat_neighbours` is not set.
 int computeSplatNeighbours(const Settings& settings);
-float computeDensityCellSize(double surfaceAreaM2, int photons, int neighbours);
+// The radius of a disc holding k photons if all `photons` were spread evenly over the scene's
+// surface. The finest grid cell is a sixteenth of it, so that photons aimed at a small part of
+// the scene still find their level; radii stop at 4 times it (radius_max's derived value), so a
+// photon alone in a dark place splats wide but not across the scene.
+float computeEvenRadius(double surfaceAreaM2, int photons, int neighbours);
 
 class PhotonDensityPass final : public Pass {
 public:

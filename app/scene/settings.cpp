@@ -60,8 +60,8 @@ const std::vector<SettingDesc>& table() {
          "of radius r0 cover the scene's surface area 32 times; density: a floor when set", {},
          true},
         {"radius_max", SettingType::Float, 0, 1e-6, 1e6, "m",
-         "travel modes: splat radius at dist_max or more; derived: 2 r0; density: a ceiling when "
-         "set", {},
+         "travel modes: splat radius at dist_max or more; derived: 2 r0; density: the largest "
+         "radius, derived: 4 r0 with r0 for splat_neighbours discs", {},
          true},
         {"dist_min", SettingType::Float, 0, 0, 1e9, "m",
          "travel distance where the radius starts to grow; derived: 0", {}, true},

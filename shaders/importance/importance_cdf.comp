@@ -44,6 +44,35 @@ float computeBase(GpuLightView view, GpuLight light, uint column, uint row) {
     return solidAngle * falloff;
 }
 
+// The gathered importance around a texel at two scales: a tent over 5 x 5 texels (a few gather
+// hits mark a region, not single texels) plus half a tent over 13 x 13 texels, so that the
+// surroundings of what the gather found (a yard seen through a door, hit by a few rays) get
+// photons of moderate power instead of the floor's rare, strong ones.
+float filterImportance(uint viewIndex, ivec2 texel, int radius) {
+    float sum = 0.0;
+    float weights = 0.0;
+    for (int dy = -radius; dy <= radius; ++dy) {
+        for (int dx = -radius; dx <= radius; ++dx) {
+            ivec2 at = texel + ivec2(dx, dy);
+            if (any(lessThan(at, ivec2(0))) || any(greaterThanEqual(at, ivec2(kImportanceSize)))) continue;
+            float w = float((radius + 1 - abs(dx)) * (radius + 1 - abs(dy)));
+            sum += w * float(importanceHits[viewIndex * kImportanceTexels + uint(at.y) * kImportanceSize + uint(at.x)]);
+            weights += w;
+        }
+    }
+    return sum / weights;
+}
+
+const int kSharpRadius = 2;
+const int kWideRadius = 6;
+const float kWideWeight = 0.5;
+
+float getImportance(uint viewIndex, uint column, uint row) {
+    ivec2 texel = ivec2(column, row);
+    return filterImportance(viewIndex, texel, kSharpRadius) +
+           kWideWeight * filterImportance(viewIndex, texel, kWideRadius);
+}
+
 void main() {
     uint viewIndex = gl_WorkGroupID.x;
     uint row = gl_LocalInvocationID.x;
@@ -55,7 +84,7 @@ void main() {
     for (uint c = 0u; c < kImportanceSize; ++c) {
         float base = computeBase(view, light, c, row);
         rowBase += base;
-        rowWeighted += base * float(importanceHits[first + c]);
+        rowWeighted += base * getImportance(viewIndex, c, row);
     }
     sRowBase[row] = rowBase;
     sRowWeighted[row] = rowWeighted;
@@ -76,7 +105,7 @@ void main() {
     float running = 0.0;
     for (uint c = 0u; c < kImportanceSize; ++c) {
         float base = computeBase(view, light, c, row);
-        float p = base * (baseScale + weightedScale * float(importanceHits[first + c]));
+        float p = base * (baseScale + weightedScale * getImportance(viewIndex, c, row));
         running += rowMass > 0.0 ? p / rowMass : 1.0 / float(kImportanceSize);
         importanceCdf[first + c] = c + 1u == kImportanceSize ? 1.0 : min(running, 1.0);
     }

@@ -8,7 +8,7 @@
 // wider instead of making a bright spot. Times radius_scale, clamped.
 //
 // Stage 1 also culls photons whose disc lies outside the view frustum (radius 0: the splat skips
-// them) and casts the four in-plane rays that clip each disc (shared/splat_clip.h).
+// them) and casts the in-plane rays that clip each disc (shared/splat_clip.h).
 #include "lib/scene_buffers.glsl"
 #include "lib/bvh.glsl"
 #include "lib/frame_constants.glsl"
@@ -21,6 +21,7 @@ layout(local_size_x = kTraceGroupSize) in;
 layout(std430, binding = kBindingResultPhotons) buffer ResultBuffer { ResultPhoton photons[]; };
 layout(std430, binding = kBindingPhotonCounters) buffer CounterBuffer { PhotonCounters counters; };
 layout(std430, binding = kBindingSplatClip) writeonly buffer SplatClip { vec4 splatClip[]; };
+const uint kClipVec4s = kClipRays / 2u;
 // Slot s: key at 4s (0 = empty), photon count at 4s + 1, power (float bits) at 4s + 2.
 layout(std430, binding = kBindingDensityCells) buffer DensityCells { uint cells[]; };
 
@@ -46,10 +47,14 @@ bool isOutsideView(vec3 centre, float radius) {
     return false;
 }
 
-// How far the photon's surface plane is free along `dir`, up to `radius`.
-float traceClip(vec3 origin, vec3 dir, float radius) {
+// The clip line of the surface that ray i meets within `radius` (its pole), or (0, 0).
+vec2 traceClip(vec3 origin, vec3 t, vec3 b, uint i, float radius) {
+    vec2 ray2 = getClipDirection(i);
+    vec3 dir = t * ray2.x + b * ray2.y;
     RayHit hit;
-    return traceRay(origin, dir, radius, hit) ? hit.t : radius;
+    if (!traceRay(origin, dir, radius, hit)) return vec2(0.0);
+    vec3 normal = computeHitNormal(hit);
+    return computeClipPole(ray2 * hit.t, vec2(dot(normal, t), dot(normal, b)), ray2);
 }
 
 const float kPi = 3.14159265358979;
@@ -164,6 +169,8 @@ void main() {
     vec3 b;
     buildSplatBasis(n, t, b);
     vec3 origin = p + n * max(4.0 * uEpsilonM, kClipLift * radius);
-    splatClip[index] = vec4(traceClip(origin, t, radius), traceClip(origin, -t, radius),
-                            traceClip(origin, b, radius), traceClip(origin, -b, radius));
+    for (uint i = 0u; i < kClipVec4s; ++i) {
+        splatClip[index * kClipVec4s + i] = vec4(traceClip(origin, t, b, 2u * i, radius),
+                                                 traceClip(origin, t, b, 2u * i + 1u, radius));
+    }
 }

@@ -1,8 +1,10 @@
-// Splats clipped where the photon's surface meets another: the density pass casts four short rays
-// in the photon's surface plane, along the axes of the splat basis, and keeps how far each got
-// (at most the radius). The splat draws only the part of its disc inside those four lines, so it
-// neither leaks through a thin wall nor climbs a corner, and divides each pixel's share by the
-// kernel mass that the pixel's own disc keeps inside the lines (splat.frag).
+// Splats clipped where the photon's surface meets another: the density pass casts kClipRays short
+// rays in the photon's surface plane (evenly around it, the first along the splat basis's t) and
+// keeps, for each that hit a surface within the radius, the line where that surface cuts the
+// plane. The splat draws only the pixels on the photon's side of every line, so it neither leaks
+// through a thin wall, nor climbs a corner, nor reaches round a wall's end into the next room,
+// and divides each pixel's share by the kernel mass that the pixel's own disc keeps inside the
+// lines (splat.frag), so a uniform irradiance stays uniform up to a wall.
 #ifndef ISPM_SPLAT_CLIP_H
 #define ISPM_SPLAT_CLIP_H
 
@@ -10,21 +12,46 @@
 
 ISPM_NAMESPACE_BEGIN
 
-// Per result photon: distances (m) free of obstacles along +t, -t, +b, -b (buildSplatBasis).
+// Per result photon kClipRays / 2 vec4s, two lines each. A line is its pole: the point of the
+// line nearest the photon, in the plane's (t, b) coordinates (m); the photon's side is
+// { x : dot(x, pole) < dot(pole, pole) }. (0, 0): that ray hit nothing.
 ISPM_CONST int kBindingSplatClip = 18;
+ISPM_CONST uint kClipRays = 8u;
 
 // A kept mass below this is taken as this: a pixel in a slot narrower than the disc keeps a
 // finite weight (it may then lose some light).
 ISPM_CONST float kMinKeptMass = 0.25f;
+// Two poles closer than this fraction of the radius are one wall (several rays hit it).
+ISPM_CONST float kSameLineFraction = 0.02f;
 
 // The in-plane basis of a splat: built from the world axis least aligned with n, so that on the
-// axis-aligned walls of box scenes t and b follow the walls and a clip line is exactly a wall.
+// axis-aligned walls of box scenes t and b follow the walls.
 ISPM_INLINE void buildSplatBasis(vec3 n, ISPM_OUT(vec3) t, ISPM_OUT(vec3) b) {
     vec3 a = abs(n);
     vec3 axis = a.x <= a.y && a.x <= a.z ? vec3(1.0f, 0.0f, 0.0f)
                                           : (a.y <= a.z ? vec3(0.0f, 1.0f, 0.0f) : vec3(0.0f, 0.0f, 1.0f));
     t = normalize(cross(n, axis));
     b = cross(n, t);
+}
+
+// Direction of clip ray i in the plane's (t, b) coordinates.
+ISPM_INLINE vec2 getClipDirection(uint i) {
+    const float kStep = 6.28318530717958f / float(kClipRays);
+    return vec2(cos(kStep * float(i)), sin(kStep * float(i)));
+}
+
+// The pole of the line where a surface with in-plane normal component `normal2` (any length,
+// either sign), hit at in-plane offset `hit2`, cuts the plane. A surface almost parallel to the
+// plane (a step's top) gives a line across the ray instead.
+ISPM_INLINE vec2 computeClipPole(vec2 hit2, vec2 normal2, vec2 ray2) {
+    const float kParallel = 0.1f; // |in-plane normal| below this: nearly parallel
+    vec2 n = dot(normal2, normal2) > kParallel * kParallel ? normalize(normal2) : ray2;
+    float c = dot(hit2, n);
+    if (c < 0.0f) {
+        n = -n;
+        c = -c;
+    }
+    return n * c;
 }
 
 // Mass of the splat kernel 2 / (pi r^2) (1 - s^2 / r^2) beyond a chord at distance u r from the
@@ -38,11 +65,30 @@ ISPM_INLINE float computeKernelMassBeyond(float u) {
     return max(0.0f, 8.0f / (3.0f * kPi) * integral);
 }
 
-// Kernel mass inside the four clip lines (the corners two lines cut off together are small and
-// counted twice; the floor keeps the result positive).
-ISPM_INLINE float computeKeptMass(vec4 clipM, float radiusM) {
-    float lost = computeKernelMassBeyond(clipM.x / radiusM) + computeKernelMassBeyond(clipM.y / radiusM) +
-                 computeKernelMassBeyond(clipM.z / radiusM) + computeKernelMassBeyond(clipM.w / radiusM);
+// Whether in-plane offset x lies beyond the line of `pole` (none: a zero pole).
+ISPM_INLINE bool isBeyondLine(vec2 x, vec2 pole) {
+    float p2 = dot(pole, pole);
+    return p2 > 0.0f && dot(x, pole) > p2;
+}
+
+// Kernel mass that the disc of radius r around in-plane offset x keeps on the photon's side of
+// the lines (each wall once; the corners two walls cut off together are counted twice, and the
+// floor keeps the result positive).
+ISPM_INLINE float computeKeptMass(vec2 x, const vec2 poles[kClipRays], float radiusM) {
+    float lost = 0.0f;
+    for (uint i = 0u; i < kClipRays; ++i) {
+        vec2 p = poles[i];
+        float p2 = dot(p, p);
+        if (p2 <= 0.0f) continue;
+        bool repeated = false;
+        for (uint j = 0u; j < i; ++j) {
+            vec2 d = poles[j] - p;
+            repeated = repeated || dot(d, d) < kSameLineFraction * kSameLineFraction * radiusM * radiusM;
+        }
+        if (repeated) continue;
+        float toLine = (p2 - dot(x, p)) / sqrt(p2);
+        lost += computeKernelMassBeyond(toLine / radiusM);
+    }
     return max(1.0f - lost, kMinKeptMass);
 }
 

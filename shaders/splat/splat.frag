@@ -18,7 +18,7 @@ layout(binding = kUnitGBufferFirst + GBUFFER_SPECULAR) uniform sampler2D uSpecul
 
 flat in uint vPhoton;
 flat in float vRadius;
-flat in vec4 vClip;
+flat in vec4 vClip[kClipRays / 2u];
 
 layout(location = 0) out vec4 outRadiance;
 
@@ -41,16 +41,19 @@ void main() {
     vec3 t;
     vec3 b;
     buildSplatBasis(pn, t, b);
-    float st = dot(inPlane, t);
-    float sb = dot(inPlane, b);
-    if (st > vClip.x || -st > vClip.y || sb > vClip.z || -sb > vClip.w) discard;
+    vec2 x = vec2(dot(inPlane, t), dot(inPlane, b));
+    vec2 poles[kClipRays];
+    for (uint i = 0u; i < kClipRays / 2u; ++i) {
+        poles[2u * i] = vClip[i].xy;
+        poles[2u * i + 1u] = vClip[i].zw;
+    }
+    for (uint i = 0u; i < kClipRays; ++i) {
+        if (isBeyondLine(x, poles[i])) discard;
+    }
     // Gather-style renormalisation: the pixel's own disc (radius r, centred on it) is cut by the
     // same lines; dividing by the part of it that lies on the surface keeps a uniform irradiance
     // uniform up to the wall, and the photon's power on the surfaces it reached.
-    // A clip distance of the full radius means no wall was hit that way: no line there.
-    vec4 toLines = mix(vClip - vec4(st, -st, sb, -sb), vec4(2.0 * vRadius),
-                       greaterThanEqual(vClip, vec4(vRadius)));
-    float keptMass = computeKeptMass(toLines, vRadius);
+    float keptMass = computeKeptMass(x, poles, vRadius);
     float kernel = 2.0 * kInvPi / (vRadius * vRadius) * (1.0 - s2);
     vec3 wi = -photon.incoming.xyz;
     vec3 wo = normalize(frame.cameraPosition.xyz - position.xyz);

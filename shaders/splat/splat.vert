@@ -15,7 +15,7 @@ layout(location = 0) uniform uvec2 uPass; // x = this pass, y = pass count
 
 flat out uint vPhoton;
 flat out float vRadius;
-flat out vec4 vClip; // free distances along +t, -t, +b, -b (m)
+flat out vec4 vClip[kClipRays / 2u]; // clip lines, two poles a vec4 (shared/splat_clip.h)
 
 // Unit cube corners and its 12 triangles, counter-clockwise seen from outside.
 const vec3 kCorners[8] = vec3[8](vec3(-1, -1, -1), vec3(1, -1, -1), vec3(-1, 1, -1), vec3(1, 1, -1),
@@ -32,13 +32,27 @@ void main() {
     vec3 b;
     buildSplatBasis(n, t, b);
     float radius = computeSplatRadius(photon);
-    // Without clip distances (travel radii) the lines lie on the disc's rim: nothing is cut.
-    vClip = uSplatShape.w > 0.5 ? min(splatClip[id], vec4(radius)) : vec4(radius);
-    // The box spans the disc cut by the clip lines; a photon culled by the density pass
-    // (radius 0) collapses to a point and draws nothing.
+    // Without clip lines (travel radii) nothing is cut. The box shrinks to the lines across the
+    // basis axes (a box scene's walls); a photon culled by the density pass (radius 0) collapses
+    // to a point and draws nothing.
+    vec4 extent = vec4(radius); // along +t, -t, +b, -b
+    for (uint i = 0u; i < kClipRays / 2u; ++i) {
+        vClip[i] = uSplatShape.w > 0.5 ? splatClip[id * (kClipRays / 2u) + i] : vec4(0.0);
+        for (uint k = 0u; k < 2u; ++k) {
+            vec2 pole = k == 0u ? vClip[i].xy : vClip[i].zw;
+            float c = length(pole);
+            if (c <= 0.0) continue;
+            vec2 axis = pole / c;
+            const float kAlong = 0.999; // a line across an axis, not a slanted one
+            if (axis.x > kAlong) extent.x = min(extent.x, c);
+            if (-axis.x > kAlong) extent.y = min(extent.y, c);
+            if (axis.y > kAlong) extent.z = min(extent.z, c);
+            if (-axis.y > kAlong) extent.w = min(extent.w, c);
+        }
+    }
     vec3 c = kCorners[kIndices[gl_VertexID]];
-    float alongT = c.x > 0.0 ? vClip.x : vClip.y;
-    float alongB = c.y > 0.0 ? vClip.z : vClip.w;
+    float alongT = c.x > 0.0 ? extent.x : extent.y;
+    float alongB = c.y > 0.0 ? extent.z : extent.w;
     vec3 world = photon.positionDistance.xyz +
                  (t * (c.x * alongT) + b * (c.y * alongB) + n * (c.z * radius * uSplatShape.z));
     vPhoton = id;

@@ -287,7 +287,7 @@ TEST_F(FailureModeTest, CornersAndEdgesLoseIndirectEnergy) {
                 middleRatio, middleCount, allRatio);
     // Unclipped splats lost the part of their disc past an edge: corner 0.897 against middle 0.945
     // (seed 1; seed 2 0.848 and 0.965). Clipped at walls and renormalised per pixel
-    // (shared/splat_clip.h), seed 1 measures corner 0.976, middle 0.975, all 0.979. Mid-wall
+    // (shared/splat_clip.h), seed 1 measures corner 0.985, middle 0.965, all 0.970. Mid-wall
     // light is right to 10% (splat blur and both images' noise); the corners are held to the
     // middle within 4%, which the unclipped splats (5-12% darker at corners) fail.
     constexpr double kMiddleTolerance = 0.1;
@@ -326,10 +326,10 @@ TEST_F(FailureModeTest, FlickerBetweenSeeds) {
                     "%.4f (radius fixed at %.0f cm); total %.4f\n",
                     counts[k], derived[k], fixed[k], double(kFixedRadiusM) * 100.0, total[k]);
     }
-    // Measured: at a fixed radius relMSE falls 0.293 -> 0.056 (5.2x for 5x photons: 1/N). With
-    // derived radii it does not fall at all (0.040 -> 0.046): the radius shrinks as 1/sqrt(N) so
-    // each pixel always gathers ~32 photons, and more photons buy sharpness, not stability.
-    // The whole frame (direct light is identical in both) flickers 0.031-0.035.
+    // Measured: at a fixed radius relMSE falls 0.183 -> 0.028 (6.5x for 5x photons: 1/N). With
+    // density radii it hardly falls (0.048 -> 0.034): each disc holds ~32 photons whatever the
+    // budget, so more photons buy sharpness more than stability (travel radii, the same:
+    // 0.040 -> 0.046). The whole frame (direct light is identical in both) flickers 0.028-0.040.
     constexpr double kMinFixedRadiusGain = 3.0; // 1/N predicts 5
     constexpr double kMaxDerivedFlicker = 0.07; // at 50k photons
     constexpr double kMaxTotalFlicker = 0.05;   // at 50k photons
@@ -386,13 +386,13 @@ TEST_F(FailureModeTest, SparsePhotonsLeaveUncoveredPixels) {
     s.set("photons", 50000, "test");
     const double fixed50k = measureUncoveredFraction(scene, s);
     std::printf("uncovered, radius fixed at 3 cm: %.4f (2k) %.4f (50k)\n", fixed2k, fixed50k);
-    // Measured: travel radii leave 0, 0, 0 of surface pixels dark at 2k, 10k, 50k photons;
-    // radius_scale 0.5 leaves 0, 0.38%, 0.33% (2.0%, 0.7%, 2.1% before photons were aimed at the
-    // view). The derived radius keeps the expected photons per
+    // Measured: travel radii leave 0, 0, 0.05% of surface pixels dark at 2k, 10k, 50k photons;
+    // radius_scale 0.5 leaves 0.14%, 0.33%, 0.8% (2.0%, 0.7%, 2.1% before photons were aimed at
+    // the view). The derived radius keeps the expected photons per
     // disc constant (32 at scale 1, 8 at 0.5), so more photons do not fill holes by themselves;
-    // only a larger radius does. Density radii grow where photons are sparse: none dark even at
-    // half the radius. At a fixed 3 cm radius coverage grows with photons: 22-40% dark at 2k,
-    // 0.05-0.14% at 50k. Bounds sit above each measurement.
+    // only a larger radius does. Density radii grow where photons are sparse: at half the radius
+    // 0.14%, 0, 0.33% dark. At a fixed 3 cm radius coverage grows with photons: 21-40% dark at
+    // 2k, 0.05-0.19% at 50k. Bounds sit above each measurement.
     constexpr double kMaxDarkDerived = 0.005;
     constexpr double kMaxDarkHalfRadius = 0.05;
     constexpr double kMinDarkFixed2k = 0.2;

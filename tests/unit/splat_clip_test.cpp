@@ -40,15 +40,44 @@ TEST(SplatClip, KernelMassBeyondAChordMatchesIntegration) {
     }
 }
 
-TEST(SplatClip, KeptMassOfACornerCountsBothLines) {
-    // A corner: walls at x = 0.3 and y = -0.5 (unit radius); nothing on the other sides.
+TEST(SplatClip, KeptMassOfACornerCountsEachWallOnce) {
+    // A corner: walls at x = 0.3 and y = -0.5 (unit radius), the first hit by three rays.
     const double kept = integrateKernel([](double x, double y) { return x < 0.3 && y > -0.5; });
-    const float computed = gpu::computeKeptMass(glm::vec4(0.3f, 1.0f, 1.0f, 0.5f), 1.0f);
+    gpu::vec2 poles[gpu::kClipRays] = {};
+    poles[0] = {0.3f, 0.0f};
+    poles[1] = {0.3f, 0.0f};
+    poles[7] = {0.3f, 0.001f}; // the same wall within round-off
+    poles[6] = {0.0f, -0.5f};
+    const float computed = gpu::computeKeptMass(gpu::vec2(0.0f), poles, 1.0f);
     // The corner region both lines cut off is counted twice: measured 0.617 against 0.643, so
-    // 0.03 allows it and still fails a formula that ignores one line (it is off by 0.17).
+    // 0.03 allows it and still fails a formula that ignores a wall (off by 0.17) or counts the
+    // first wall three times (off by 0.4).
     EXPECT_NEAR(computed, kept, 0.03);
-    EXPECT_FLOAT_EQ(gpu::computeKeptMass(glm::vec4(1.0f), 1.0f), 1.0f);
-    EXPECT_FLOAT_EQ(gpu::computeKeptMass(glm::vec4(0.0f), 1.0f), gpu::kMinKeptMass);
+    // The pixel's own disc: at x = 0.2 the first wall is 0.1 away and the doubly counted corner
+    // grows (measured 0.458 against 0.508); 0.06 still fails a missing wall (off by 0.17).
+    const double keptNearWall =
+        integrateKernel([](double x, double y) { return x + 0.2 < 0.3 && y > -0.5; });
+    EXPECT_NEAR(gpu::computeKeptMass(gpu::vec2(0.2f, 0.0f), poles, 1.0f), keptNearWall, 0.06);
+    const gpu::vec2 none[gpu::kClipRays] = {};
+    EXPECT_FLOAT_EQ(gpu::computeKeptMass(gpu::vec2(0.0f), none, 1.0f), 1.0f);
+    EXPECT_FALSE(gpu::isBeyondLine(gpu::vec2(0.29f, 0.0f), poles[0]));
+    EXPECT_TRUE(gpu::isBeyondLine(gpu::vec2(0.31f, 0.5f), poles[0]));
+    EXPECT_FALSE(gpu::isBeyondLine(gpu::vec2(5.0f, 5.0f), none[0]));
+}
+
+TEST(SplatClip, PoleIsTheWallsNearestPointOnThePhotonsSide) {
+    // A wall x = 0.4 hit by a ray at 45 degrees: whichever way its normal points, the line is
+    // x = 0.4 (pole (0.4, 0)).
+    const gpu::vec2 ray(std::sqrt(0.5f), std::sqrt(0.5f));
+    const gpu::vec2 hit = ray * (0.4f / ray.x);
+    for (float sign : {1.0f, -1.0f}) {
+        const gpu::vec2 pole = gpu::computeClipPole(hit, gpu::vec2(sign * 0.9f, 0.0f), ray);
+        EXPECT_NEAR(pole.x, 0.4f, 1e-6f);
+        EXPECT_NEAR(pole.y, 0.0f, 1e-6f);
+    }
+    // A surface parallel to the plane (a step's top): the line runs across the ray at the hit.
+    const gpu::vec2 across = gpu::computeClipPole(hit, gpu::vec2(0.0f), ray);
+    EXPECT_NEAR(glm::length(across), glm::length(hit), 1e-6f);
 }
 
 TEST(SplatClip, BasisIsOrthonormalAndFollowsAxes) {
