@@ -263,6 +263,10 @@ void VertexArray::setFloatAttribute(GLuint location, const Buffer& buffer, int c
     glEnableVertexArrayAttrib(getId(), location);
 }
 
+void VertexArray::setElementBuffer(const Buffer& buffer) {
+    glVertexArrayElementBuffer(getId(), buffer.getId());
+}
+
 void VertexArray::bind() const { glBindVertexArray(getId()); }
 
 // ---- Query ----

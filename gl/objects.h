@@ -156,6 +156,8 @@ public:
     // Float vertex attribute `location` read from `buffer` with the given stride and offset.
     void setFloatAttribute(GLuint location, const Buffer& buffer, int components, size_t stride,
                            size_t offsetBytes);
+    // The element (index) buffer indexed draws read: 32-bit indices.
+    void setElementBuffer(const Buffer& buffer);
     void bind() const;
     GLuint getId() const { return mHandle.get(); }
 

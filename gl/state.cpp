@@ -53,6 +53,13 @@ void drawArraysIndirect(Primitive primitive, const Buffer& arguments, size_t off
     Buffer::unbind(BufferTarget::DrawIndirect);
 }
 
+void drawElementsIndirect(Primitive primitive, const Buffer& arguments, size_t offsetBytes) {
+    arguments.bind(BufferTarget::DrawIndirect);
+    glDrawElementsIndirect(static_cast<GLenum>(primitive), GL_UNSIGNED_INT,
+                           reinterpret_cast<const void*>(static_cast<uintptr_t>(offsetBytes)));
+    Buffer::unbind(BufferTarget::DrawIndirect);
+}
+
 void dispatchCompute(unsigned groupsX, unsigned groupsY, unsigned groupsZ) {
     glDispatchCompute(groupsX, groupsY, groupsZ);
 }

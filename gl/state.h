@@ -45,6 +45,9 @@ void drawArrays(Primitive primitive, int first, int count);
 void drawArraysInstanced(Primitive primitive, int first, int count, int instances);
 // Arguments {count, instanceCount, first, baseInstance} at offsetBytes in `arguments`.
 void drawArraysIndirect(Primitive primitive, const Buffer& arguments, size_t offsetBytes);
+// 32-bit indexed draw with arguments {count, instanceCount, firstIndex, baseVertex, baseInstance}
+// at offsetBytes in `arguments`, from the bound vertex array's element buffer.
+void drawElementsIndirect(Primitive primitive, const Buffer& arguments, size_t offsetBytes);
 void dispatchCompute(unsigned groupsX, unsigned groupsY = 1, unsigned groupsZ = 1);
 // Group counts {x, y, z} at offsetBytes in `arguments`, written on the GPU.
 void dispatchComputeIndirect(const Buffer& arguments, size_t offsetBytes);

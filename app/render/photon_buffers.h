@@ -40,7 +40,8 @@ private:
     gl::Buffer mBounce;
     gl::Buffer mResult;
     gl::Buffer mCounters{"photon counters", sizeof(gpu::PhotonCounters)};
-    gl::Buffer mSplatDraws{"splat draw commands", gpu::kMaxSplatPasses * sizeof(glm::uvec4)};
+    gl::Buffer mSplatDraws{"splat draw commands",
+                           gpu::kMaxSplatPasses * gpu::kSplatDrawUvec4s * sizeof(glm::uvec4)};
     uint32_t mBounceCapacity = 0;
     uint32_t mResultCapacity = 0;
 };

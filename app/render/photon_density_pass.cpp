@@ -66,8 +66,8 @@ void PhotonDensityPass::execute(const FrameInputs& inputs) {
         mCells = gl::Buffer("photon density cells", size_t(slots) * kUintsPerSlot * sizeof(uint32_t));
         mSlots = slots;
     }
-    const size_t clipBytes = size_t(std::max(mBuffers.getResultCapacity(), 1u)) * gpu::kClipRays *
-                             sizeof(glm::vec2);
+    const size_t clipBytes = size_t(std::max(mBuffers.getResultCapacity(), 1u)) * gpu::kClipVec4s *
+                             sizeof(glm::vec4);
     if (mClip.getSize() != clipBytes) mClip = gl::Buffer("splat clip distances", clipBytes);
     mCells.clearToZero();
     const int neighbours = computeSplatNeighbours(inputs.settings);

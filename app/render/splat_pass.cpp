@@ -12,6 +12,7 @@
 
 #include <glm/gtc/constants.hpp>
 
+#include <array>
 #include <cmath>
 
 namespace ispm {
@@ -21,6 +22,12 @@ namespace {
 constexpr GLint kLocationPass = 0;
 constexpr GLint kLocationRadius = 1;
 constexpr GLint kLocationShape = 2;
+
+// The unit cube's 12 triangles over its 8 corners (splat.vert: corner i has x from bit 0, y from
+// bit 1, z from bit 2, each -1 or +1), counter-clockwise seen from outside.
+constexpr std::array<uint32_t, gpu::kSplatCubeVertices> kCubeIndices = {
+    0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4,
+    2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5};
 
 // How many discs cover a point on average with the derived base radius: enough overlap that
 // one photon's noise is averaged with its neighbours', few enough to keep detail.
@@ -51,7 +58,11 @@ SplatPass::SplatPass(const GBuffer& viewer, const PhotonBuffers& buffers, const 
                                   .stages = {{gl::ShaderStage::Vertex, "splat/splat.vert"},
                                              {gl::ShaderStage::Fragment, "splat/splat.frag"}},
                                   .defines = getGBufferDefines()})),
-      mVertexArray("splat vao") {}
+      mVertexArray("splat vao"),
+      mCubeIndices(gl::Buffer::fromSpan<uint32_t>("splat cube indices", kCubeIndices)) {
+    // Indexed: the vertex stage runs once per cube corner (8), not per triangle corner (36).
+    mVertexArray.setElementBuffer(mCubeIndices);
+}
 
 void SplatPass::resize(int width, int height) {
     if (mIndirect.getWidth() == width && mIndirect.getHeight() == height) return;
@@ -85,8 +96,8 @@ void SplatPass::execute(const FrameInputs& inputs) {
     const auto passes = static_cast<GLuint>(inputs.settings.getInt("splat_passes"));
     for (GLuint p = 0; p < passes; ++p) {
         glUniform2ui(kLocationPass, p, passes);
-        gl::drawArraysIndirect(gl::Primitive::Triangles, mBuffers.getSplatDraws(),
-                               p * sizeof(glm::uvec4));
+        gl::drawElementsIndirect(gl::Primitive::Triangles, mBuffers.getSplatDraws(),
+                                 p * gpu::kSplatDrawUvec4s * sizeof(glm::uvec4));
     }
     gl::applyState({});
 }

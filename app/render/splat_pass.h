@@ -40,6 +40,7 @@ private:
     const gl::Buffer& mClip;
     ReloadableProgram mProgram;
     gl::VertexArray mVertexArray;
+    gl::Buffer mCubeIndices;
     gl::Texture mIndirect;
     gl::Framebuffer mFramebuffer;
 };

@@ -129,3 +129,69 @@ vec3 computeHitNormal(RayHit hit) {
     vec3 n = cross(positions[t.y].xyz - p0, positions[t.z].xyz - p0);
     return normalize(transpose(mat3(instances[hit.instance].objectFromWorld)) * n);
 }
+
+// Whether the bounds of any triangle overlap the world-space box [loW, hiW] (conservative: a
+// triangle's bounds, not the triangle). Stops at the first one.
+bool overlapsBox(vec3 aLo, vec3 aHi, vec3 bLo, vec3 bHi) {
+    return all(lessThanEqual(aLo, bHi)) && all(lessThanEqual(bLo, aHi));
+}
+
+bool overlapsInstanceTriangles(uint instanceIndex, vec3 loW, vec3 hiW) {
+    GpuInstance inst = instances[instanceIndex];
+    // The world box's corners in object space, boxed again.
+    vec3 lo = vec3(3.0e38);
+    vec3 hi = vec3(-3.0e38);
+    for (int i = 0; i < 8; ++i) {
+        vec3 corner = vec3((i & 1) != 0 ? hiW.x : loW.x, (i & 2) != 0 ? hiW.y : loW.y,
+                           (i & 4) != 0 ? hiW.z : loW.z);
+        vec3 p = (inst.objectFromWorld * vec4(corner, 1.0)).xyz;
+        lo = min(lo, p);
+        hi = max(hi, p);
+    }
+    uint stack[kBvhStackSize];
+    int top = 0;
+    stack[top++] = inst.range.z;
+    while (top > 0) {
+        GpuBvhNode node = blasNodes[stack[--top]];
+        if (!overlapsBox(lo, hi, node.lo.xyz, node.hi.xyz)) continue;
+        uint a = floatBitsToUint(node.lo.w);
+        uint b = floatBitsToUint(node.hi.w);
+        if ((b & kBvhLeafFlag) != 0u) {
+            uint count = b & kBvhCountMask;
+            for (uint i = a; i < a + count; ++i) {
+                uvec4 t = triangles[blasTriangleOrder[i]];
+                vec3 p0 = positions[t.x].xyz;
+                vec3 p1 = positions[t.y].xyz;
+                vec3 p2 = positions[t.z].xyz;
+                if (overlapsBox(lo, hi, min(p0, min(p1, p2)), max(p0, max(p1, p2)))) return true;
+            }
+        } else if (top + 2 <= kBvhStackSize) {
+            stack[top++] = a;
+            stack[top++] = b;
+        }
+    }
+    return false;
+}
+
+bool overlapsTriangles(vec3 loW, vec3 hiW) {
+    if (tlasNodes.length() == 0) return false;
+    uint stack[kBvhStackSize];
+    int top = 0;
+    stack[top++] = 0u;
+    while (top > 0) {
+        GpuBvhNode node = tlasNodes[stack[--top]];
+        if (!overlapsBox(loW, hiW, node.lo.xyz, node.hi.xyz)) continue;
+        uint a = floatBitsToUint(node.lo.w);
+        uint b = floatBitsToUint(node.hi.w);
+        if ((b & kBvhLeafFlag) != 0u) {
+            uint count = b & kBvhCountMask;
+            for (uint i = a; i < a + count; ++i) {
+                if (overlapsInstanceTriangles(tlasInstanceOrder[i], loW, hiW)) return true;
+            }
+        } else if (top + 2 <= kBvhStackSize) {
+            stack[top++] = a;
+            stack[top++] = b;
+        }
+    }
+    return false;
+}

@@ -21,7 +21,6 @@ layout(local_size_x = kTraceGroupSize) in;
 layout(std430, binding = kBindingResultPhotons) buffer ResultBuffer { ResultPhoton photons[]; };
 layout(std430, binding = kBindingPhotonCounters) buffer CounterBuffer { PhotonCounters counters; };
 layout(std430, binding = kBindingSplatClip) writeonly buffer SplatClip { vec4 splatClip[]; };
-const uint kClipVec4s = kClipRays / 2u;
 // Slot s: key at 4s (0 = empty), photon count at 4s + 1, power (float bits) at 4s + 2.
 layout(std430, binding = kBindingDensityCells) buffer DensityCells { uint cells[]; };
 
@@ -169,8 +168,17 @@ void main() {
     vec3 b;
     buildSplatBasis(n, t, b);
     vec3 origin = p + n * max(4.0 * uEpsilonM, kClipLift * radius);
-    for (uint i = 0u; i < kClipVec4s; ++i) {
-        splatClip[index * kClipVec4s + i] = vec4(traceClip(origin, t, b, 2u * i, radius),
-                                                 traceClip(origin, t, b, 2u * i + 1u, radius));
+    vec2 poles[kClipRays];
+    // Rays only where some triangle's bounds reach the square they sweep (most photons lie in
+    // the open, one box query instead of kClipRays rays).
+    vec3 sweep = (abs(t) + abs(b)) * radius;
+    bool nearSurface = overlapsTriangles(origin - sweep, origin + sweep);
+    for (uint i = 0u; i < kClipRays; ++i) {
+        poles[i] = nearSurface ? traceClip(origin, t, b, i, radius) : vec2(0.0);
     }
+    removeRepeatedLines(poles, radius);
+    for (uint i = 0u; i < kClipRays / 2u; ++i) {
+        splatClip[index * kClipVec4s + i] = vec4(poles[2u * i], poles[2u * i + 1u]);
+    }
+    splatClip[index * kClipVec4s + kClipRays / 2u] = computeClipExtent(poles, radius);
 }

@@ -1,6 +1,6 @@
 // Between passes, on the GPU: after emission, turn the bounce count into the trace dispatch and
 // reset the result counters; after tracing, split the result photons into the splat passes' draw
-// commands (glDrawArraysIndirect: count, instanceCount, first, baseInstance).
+// commands (glDrawElementsIndirect: count, instanceCount, firstIndex, baseVertex, baseInstance).
 #include "shared/photon_data.h"
 
 layout(local_size_x = 1) in;
@@ -27,6 +27,7 @@ void main() {
         uint begin = stored * p / uSplatPasses;
         uint end = stored * (p + 1u) / uSplatPasses;
         // baseInstance is left 0: the vertex stage adds the pass's first photon itself.
-        splatDraws[p] = uvec4(kSplatCubeVertices, end - begin, 0u, 0u);
+        splatDraws[kSplatDrawUvec4s * p] = uvec4(kSplatCubeVertices, end - begin, 0u, 0u);
+        splatDraws[kSplatDrawUvec4s * p + 1u] = uvec4(0u);
     }
 }

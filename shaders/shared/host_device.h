@@ -15,6 +15,8 @@
 #define ISPM_INLINE inline
 #define ISPM_INOUT(T) T&
 #define ISPM_OUT(T) T&
+// An array parameter the function writes (C++ passes arrays as pointers already).
+#define ISPM_INOUT_ARRAY(T, name, n) T name[n]
 ISPM_NAMESPACE_BEGIN
 // The GLSL built-ins shared functions use, from glm.
 using glm::abs;
@@ -47,6 +49,7 @@ ISPM_NAMESPACE_END
 #define ISPM_INLINE
 #define ISPM_INOUT(T) inout T
 #define ISPM_OUT(T) out T
+#define ISPM_INOUT_ARRAY(T, name, n) inout T name[n]
 #endif
 
 #endif

@@ -41,13 +41,17 @@ ISPM_STATIC_ASSERT_SIZE(PhotonCounters, 80);
 
 ISPM_CONST uint kTraceGroupSize = 64u;
 ISPM_CONST uint kMaxSplatPasses = 64u;
-ISPM_CONST uint kSplatCubeVertices = 36u; // 12 triangles
+ISPM_CONST uint kSplatCubeVertices = 36u; // 12 triangles, indices into the cube's 8 corners
+ISPM_CONST uint kSplatCubeCorners = 8u;
+// A splat pass's glDrawElementsIndirect command {count, instanceCount, firstIndex, baseVertex,
+// baseInstance} takes two uvec4s of the draw buffer (the second holds baseInstance).
+ISPM_CONST uint kSplatDrawUvec4s = 2u;
 
 // Binding points (storage buffers), after the BVH's.
 ISPM_CONST int kBindingBouncePhotons = 11;
 ISPM_CONST int kBindingResultPhotons = 12;
 ISPM_CONST int kBindingPhotonCounters = 13;
-ISPM_CONST int kBindingSplatDraws = 14; // uvec4 draw commands, one per splat pass
+ISPM_CONST int kBindingSplatDraws = 14; // indexed draw commands, kSplatDrawUvec4s per splat pass
 ISPM_CONST int kBindingDensityCells = 17; // photon_density.comp's hashed grid: 4 uints a slot
 
 // Splat radius modes (setting radius_mode, checked against the table in splat_pass.cpp).
@@ -57,7 +61,7 @@ ISPM_CONST uint kRadiusDensity = 2u;
 
 // Local photon density: result photons are counted in hashed grids of cubic cells, one grid per
 // level, each level's cells twice the size of the one below.
-ISPM_CONST uint kDensityLevels = 12u;
+ISPM_CONST uint kDensityLevels = 8u;
 ISPM_CONST uint kDensityProbes = 32u; // open addressing gives up after this many slots
 
 ISPM_NAMESPACE_END

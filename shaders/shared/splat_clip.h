@@ -12,11 +12,13 @@
 
 ISPM_NAMESPACE_BEGIN
 
-// Per result photon kClipRays / 2 vec4s, two lines each. A line is its pole: the point of the
-// line nearest the photon, in the plane's (t, b) coordinates (m); the photon's side is
-// { x : dot(x, pole) < dot(pole, pole) }. (0, 0): that ray hit nothing.
+// Per result photon kClipVec4s vec4s: kClipRays / 2 with two lines each, then the box extents
+// along +t, -t, +b, -b (m). A line is its pole: the point of the line nearest the photon, in the
+// plane's (t, b) coordinates (m); the photon's side is { x : dot(x, pole) < dot(pole, pole) }.
+// (0, 0): no line (the ray hit nothing, or a wall another ray had found).
 ISPM_CONST int kBindingSplatClip = 18;
 ISPM_CONST uint kClipRays = 8u;
+ISPM_CONST uint kClipVec4s = kClipRays / 2u + 1u;
 
 // A kept mass below this is taken as this: a pixel in a slot narrower than the disc keeps a
 // finite weight (it may then lose some light).
@@ -55,14 +57,12 @@ ISPM_INLINE vec2 computeClipPole(vec2 hit2, vec2 normal2, vec2 ray2) {
 }
 
 // Mass of the splat kernel 2 / (pi r^2) (1 - s^2 / r^2) beyond a chord at distance u r from the
-// centre (u in [0, 1]): (8 / (3 pi)) times the integral of (1 - x^2)^(3/2) from u to 1.
+// centre (u in [0, 1]): (8 / (3 pi)) times the integral of (1 - x^2)^(3/2) from u to 1. The
+// splat evaluates it per pixel, so a least-squares fit in v = 1 - u replaces the closed form
+// (which needs asin): v^(5/2) (0.96212 - 0.52210 v + 0.05995 v^2), off by at most 4e-5.
 ISPM_INLINE float computeKernelMassBeyond(float u) {
-    const float kPi = 3.14159265358979f;
-    u = clamp(u, 0.0f, 1.0f);
-    float w = sqrt(max(0.0f, 1.0f - u * u));
-    float integral = 3.0f * kPi / 16.0f -
-                     (0.25f * u * w * w * w + 0.375f * u * w + 0.375f * asin(u));
-    return max(0.0f, 8.0f / (3.0f * kPi) * integral);
+    float v = 1.0f - clamp(u, 0.0f, 1.0f);
+    return v * v * sqrt(v) * (0.96212f + v * (-0.52210f + v * 0.05995f));
 }
 
 // Whether in-plane offset x lies beyond the line of `pole` (none: a zero pole).
@@ -71,21 +71,43 @@ ISPM_INLINE bool isBeyondLine(vec2 x, vec2 pole) {
     return p2 > 0.0f && dot(x, pole) > p2;
 }
 
+// Zeroes every pole that repeats an earlier one: a wall several rays hit is one line.
+ISPM_INLINE void removeRepeatedLines(ISPM_INOUT_ARRAY(vec2, poles, kClipRays), float radiusM) {
+    float same2 = kSameLineFraction * kSameLineFraction * radiusM * radiusM;
+    for (uint i = 1u; i < kClipRays; ++i) {
+        for (uint j = 0u; j < i; ++j) {
+            vec2 d = poles[j] - poles[i];
+            if (dot(poles[j], poles[j]) > 0.0f && dot(d, d) < same2) poles[i] = vec2(0.0f);
+        }
+    }
+}
+
+// How far the box around a disc of radius r reaches along +t, -t, +b, -b: up to a line across
+// that axis (a box scene's wall), else r.
+ISPM_INLINE vec4 computeClipExtent(const vec2 poles[kClipRays], float radiusM) {
+    const float kAlong = 0.999f; // a line across an axis, not a slanted one
+    vec4 extent = vec4(radiusM);
+    for (uint i = 0u; i < kClipRays; ++i) {
+        float c = length(poles[i]);
+        if (c <= 0.0f) continue;
+        vec2 axis = poles[i] / c;
+        if (axis.x > kAlong) extent.x = min(extent.x, c);
+        if (-axis.x > kAlong) extent.y = min(extent.y, c);
+        if (axis.y > kAlong) extent.z = min(extent.z, c);
+        if (-axis.y > kAlong) extent.w = min(extent.w, c);
+    }
+    return extent;
+}
+
 // Kernel mass that the disc of radius r around in-plane offset x keeps on the photon's side of
-// the lines (each wall once; the corners two walls cut off together are counted twice, and the
-// floor keeps the result positive).
+// distinct lines (removeRepeatedLines; the corners two walls cut off together are counted twice,
+// and the floor keeps the result positive).
 ISPM_INLINE float computeKeptMass(vec2 x, const vec2 poles[kClipRays], float radiusM) {
     float lost = 0.0f;
     for (uint i = 0u; i < kClipRays; ++i) {
         vec2 p = poles[i];
         float p2 = dot(p, p);
         if (p2 <= 0.0f) continue;
-        bool repeated = false;
-        for (uint j = 0u; j < i; ++j) {
-            vec2 d = poles[j] - p;
-            repeated = repeated || dot(d, d) < kSameLineFraction * kSameLineFraction * radiusM * radiusM;
-        }
-        if (repeated) continue;
         float toLine = (p2 - dot(x, p)) / sqrt(p2);
         lost += computeKernelMassBeyond(toLine / radiusM);
     }

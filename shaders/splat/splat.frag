@@ -18,7 +18,10 @@ layout(binding = kUnitGBufferFirst + GBUFFER_SPECULAR) uniform sampler2D uSpecul
 
 flat in uint vPhoton;
 flat in float vRadius;
-flat in vec4 vClip[kClipRays / 2u];
+flat in uint vClipped;
+
+// Per photon: kClipRays / 2 vec4s of two poles each, then the box extents (shared/splat_clip.h).
+layout(std430, binding = kBindingSplatClip) readonly buffer SplatClip { vec4 splatClip[]; };
 
 layout(location = 0) out vec4 outRadiance;
 
@@ -26,7 +29,7 @@ void main() {
     if (uSplatShape.y > 0.5 && gl_FrontFacing) discard; // splat_faces = all
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec4 position = texelFetch(uPosition, pixel, 0);
-    if (position.w < 0.5) discard;
+    if (position.w < 0.5 || !(vRadius > 0.0)) discard;
     ResultPhoton photon = photons[vPhoton];
     vec3 pn = photon.normalDensity.xyz;
     vec3 n = texelFetch(uNormal, pixel, 0).xyz;
@@ -44,8 +47,9 @@ void main() {
     vec2 x = vec2(dot(inPlane, t), dot(inPlane, b));
     vec2 poles[kClipRays];
     for (uint i = 0u; i < kClipRays / 2u; ++i) {
-        poles[2u * i] = vClip[i].xy;
-        poles[2u * i + 1u] = vClip[i].zw;
+        vec4 two = vClipped == 1u ? splatClip[vPhoton * kClipVec4s + i] : vec4(0.0);
+        poles[2u * i] = two.xy;
+        poles[2u * i + 1u] = two.zw;
     }
     for (uint i = 0u; i < kClipRays; ++i) {
         if (isBeyondLine(x, poles[i])) discard;

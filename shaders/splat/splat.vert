@@ -15,13 +15,10 @@ layout(location = 0) uniform uvec2 uPass; // x = this pass, y = pass count
 
 flat out uint vPhoton;
 flat out float vRadius;
-flat out vec4 vClip[kClipRays / 2u]; // clip lines, two poles a vec4 (shared/splat_clip.h)
+flat out uint vClipped; // 1: the fragment stage reads the photon's clip lines
 
-// Unit cube corners and its 12 triangles, counter-clockwise seen from outside.
-const vec3 kCorners[8] = vec3[8](vec3(-1, -1, -1), vec3(1, -1, -1), vec3(-1, 1, -1), vec3(1, 1, -1),
-                                 vec3(-1, -1, 1), vec3(1, -1, 1), vec3(-1, 1, 1), vec3(1, 1, 1));
-const int kIndices[36] = int[36](0, 2, 1, 1, 2, 3,  4, 5, 6, 5, 7, 6,  0, 1, 4, 1, 5, 4,
-                                 2, 6, 3, 3, 6, 7,  0, 4, 2, 2, 4, 6,  1, 3, 5, 3, 7, 5);
+// The draw is indexed (splat_pass.cpp holds the 12 triangles): gl_VertexID is the cube corner, its
+// x from bit 0, y from bit 1, z from bit 2 of the index, each -1 or +1.
 
 void main() {
     uint stored = counters.splatDraw.y;
@@ -33,24 +30,13 @@ void main() {
     buildSplatBasis(n, t, b);
     float radius = computeSplatRadius(photon);
     // Without clip lines (travel radii) nothing is cut. The box shrinks to the lines across the
-    // basis axes (a box scene's walls); a photon culled by the density pass (radius 0) collapses
-    // to a point and draws nothing.
+    // basis axes (a box scene's walls); a photon culled by the density pass (radius 0, its clip
+    // data not written) collapses to a point and draws nothing.
     vec4 extent = vec4(radius); // along +t, -t, +b, -b
-    for (uint i = 0u; i < kClipRays / 2u; ++i) {
-        vClip[i] = uSplatShape.w > 0.5 ? splatClip[id * (kClipRays / 2u) + i] : vec4(0.0);
-        for (uint k = 0u; k < 2u; ++k) {
-            vec2 pole = k == 0u ? vClip[i].xy : vClip[i].zw;
-            float c = length(pole);
-            if (c <= 0.0) continue;
-            vec2 axis = pole / c;
-            const float kAlong = 0.999; // a line across an axis, not a slanted one
-            if (axis.x > kAlong) extent.x = min(extent.x, c);
-            if (-axis.x > kAlong) extent.y = min(extent.y, c);
-            if (axis.y > kAlong) extent.z = min(extent.z, c);
-            if (-axis.y > kAlong) extent.w = min(extent.w, c);
-        }
-    }
-    vec3 c = kCorners[kIndices[gl_VertexID]];
+    vClipped = uSplatShape.w > 0.5 && radius > 0.0 ? 1u : 0u;
+    if (vClipped == 1u) extent = splatClip[id * kClipVec4s + kClipRays / 2u];
+    vec3 c = vec3((gl_VertexID & 1) != 0 ? 1.0 : -1.0, (gl_VertexID & 2) != 0 ? 1.0 : -1.0,
+                  (gl_VertexID & 4) != 0 ? 1.0 : -1.0);
     float alongT = c.x > 0.0 ? extent.x : extent.y;
     float alongB = c.y > 0.0 ? extent.z : extent.w;
     vec3 world = photon.positionDistance.xyz +

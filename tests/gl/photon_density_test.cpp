@@ -47,7 +47,7 @@ void addSquare(std::vector<gpu::ResultPhoton>& photons, float x0, float z0, floa
 
 struct DensityRun {
     std::vector<gpu::ResultPhoton> photons; // with radii
-    std::vector<glm::vec2> clip; // kClipRays poles per photon (shared/splat_clip.h)
+    std::vector<glm::vec4> clip; // kClipVec4s per photon (shared/splat_clip.h)
 };
 
 // Runs the density pass alone on `photons`, with the frame of `scene` (camera, BVH).
@@ -71,7 +71,7 @@ DensityRun runDensity(const Scene& scene, std::vector<gpu::ResultPhoton> photons
     buffers.getCounters().upload(0, sizeof(counters), &counters);
     PhotonDensityPass density(buffers);
     density.execute(runner.getFrameInputs());
-    return {buffers.getResult().read<gpu::ResultPhoton>(count), density.getClip().read<glm::vec2>(size_t(count) * gpu::kClipRays)};
+    return {buffers.getResult().read<gpu::ResultPhoton>(count), density.getClip().read<glm::vec4>(size_t(count) * gpu::kClipVec4s)};
 }
 
 // The median radius of the photons inside [lo, hi] on x and z.
@@ -163,7 +163,8 @@ TEST_F(PhotonDensityTest, WallClipsDiscsAndViewCullsPhotons) {
         // The nearest line any ray found (0 when none did).
         float nearest = 0.0f;
         for (uint32_t k = 0; k < gpu::kClipRays; ++k) {
-            const float c = glm::length(run.clip[i * gpu::kClipRays + k]);
+            const glm::vec4 two = run.clip[i * gpu::kClipVec4s + k / 2];
+            const float c = glm::length(k % 2 == 0 ? glm::vec2(two.x, two.y) : glm::vec2(two.z, two.w));
             if (c > 0.0f) nearest = nearest > 0.0f ? std::min(nearest, c) : c;
         }
         if (0.2f - x < r) {

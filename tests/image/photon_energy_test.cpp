@@ -132,8 +132,8 @@ TEST_F(PhotonEnergyTest, OneSplatOnAPlaneIntegratesToBrdfTimesPower) {
     counters.result = glm::uvec4(1, 1, 0, 1);
     counters.splatDraw = glm::uvec4(gpu::kSplatCubeVertices, 1, 0, 0);
     buffers.getCounters().upload(0, sizeof(counters), &counters);
-    const glm::uvec4 draw(gpu::kSplatCubeVertices, 1, 0, 0);
-    buffers.getSplatDraws().upload(0, sizeof(draw), &draw);
+    const glm::uvec4 draw[gpu::kSplatDrawUvec4s] = {{gpu::kSplatCubeVertices, 1, 0, 0}, {0, 0, 0, 0}};
+    buffers.getSplatDraws().upload(0, sizeof(draw), draw);
 
     const gl::Buffer noClip; // travel radii: the splat reads no clip distances
     SplatPass splat(runner.getViewerGBuffer(), buffers, noClip);
