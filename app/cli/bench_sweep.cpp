@@ -168,14 +168,6 @@ void checkRenderSizes(const std::vector<Configuration>& configs, const std::vect
     }
 }
 
-Image subtractImages(const Image& a, const Image& b) {
-    requireSameSize(a, b);
-    Image out = a;
-    for (size_t i = 0; i < out.pixels.size(); ++i)
-        out.pixels[i] -= b.pixels[i];
-    return out;
-}
-
 std::string toColumnName(const std::string& passName) {
     std::string out;
     for (const char c : passName) {

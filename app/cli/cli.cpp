@@ -82,10 +82,19 @@ PixelMask readMask(const std::string& path, const Image& like) {
     return included;
 }
 
-int runCompare(const std::string& a, const std::string& b, const std::string& maskPath,
-               double maxRelMse) {
+int runCompare(const std::string& a, const std::string& b, const std::string& minusPath,
+               const std::string& maskPath, double maxRelMse) {
     const Image test = readImage(a);
-    const Image reference = readImage(b);
+    Image reference = readImage(b);
+    if (!minusPath.empty()) {
+        const Image minus = readImage(minusPath);
+        if (minus.width != reference.width || minus.height != reference.height) {
+            throw InputError(strCat(minusPath, " is ", minus.width, "x", minus.height, " but ", b,
+                                    " is ", reference.width, "x", reference.height,
+                                    ": expected equal sizes"));
+        }
+        reference = subtractImages(reference, minus);
+    }
     if (test.width != reference.width || test.height != reference.height) {
         throw InputError(strCat(a, " is ", test.width, "x", test.height, " but ", b, " is ",
                                 reference.width, "x", reference.height, ": expected equal sizes"));
@@ -144,12 +153,16 @@ int runCli(int argc, char** argv) {
     std::string compareB;
     double maxRelMse = -1.0;
     std::string maskPath;
+    std::string minusPath;
     CLI::App* compareCmd = app.add_subcommand(
         "compare", "Compare image A against reference B: RMSE, relMSE, SSIM, mean ratio");
     compareCmd->add_option("a", compareA, "test image (.png, .pfm, .exr)")->required();
     compareCmd->add_option("b", compareB, "reference image (.png, .pfm, .exr)")->required();
     compareCmd->add_option("--max-relmse", maxRelMse, "exit 1 when relMSE exceeds this")
         ->check(CLI::NonNegativeNumber);
+    compareCmd->add_option("--minus", minusPath,
+                           "image subtracted from B first: B = bounces N, --minus bounces 0 "
+                           "compares indirect light");
     compareCmd->add_option("--mask", maskPath,
                            "image of the same size: only pixels brighter than 0.5 are compared");
 
@@ -184,7 +197,7 @@ int runCli(int argc, char** argv) {
             std::fputs(formatSettingsMarkdown().c_str(), stdout);
             return 0;
         }
-        if (app.got_subcommand(compareCmd)) return runCompare(compareA, compareB, maskPath, maxRelMse);
+        if (app.got_subcommand(compareCmd)) return runCompare(compareA, compareB, minusPath, maskPath, maxRelMse);
     } catch (const InputError& e) {
         std::fprintf(stderr, "ispm: %s\n", e.what());
         return kExitBadInput;

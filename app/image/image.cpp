@@ -15,6 +15,14 @@ void requireSameSize(const Image& test, const Image& reference) {
     }
 }
 
+Image subtractImages(const Image& a, const Image& b) {
+    requireSameSize(a, b);
+    Image out = a;
+    for (size_t i = 0; i < out.pixels.size(); ++i)
+        out.pixels[i] -= b.pixels[i];
+    return out;
+}
+
 void requireMaskSize(const Image& image, const PixelMask* mask) {
     if (mask != nullptr && mask->size() != image.getPixelCount()) {
         throw InputError(strCat("expected a mask of ", image.width, "x", image.height, " = ",

@@ -44,6 +44,10 @@ using PixelMask = std::vector<uint8_t>;
 // reference of another resolution is a user mistake, not a programming one.
 void requireSameSize(const Image& test, const Image& reference);
 
+// a - b per pixel (e.g. reference bounces B minus bounces 0 = the indirect light); throws
+// InputError when the sizes differ.
+Image subtractImages(const Image& a, const Image& b);
+
 // Throws InputError when `mask` (if given) has another pixel count than `image`.
 void requireMaskSize(const Image& image, const PixelMask* mask);
 

@@ -42,6 +42,9 @@ void ImportancePass::execute(const FrameInputs& inputs) {
     if (views != mViewCount) {
         mHits = gl::Buffer("importance hits", views * gpu::kImportanceTexels * sizeof(uint32_t));
         mCdfTables = gl::Buffer("importance tables", computeCdfFloats(views) * sizeof(float));
+        mPdfMap = gl::Texture::create2DArray("importance pdf", gl::Format::RGBA32F,
+                                             int(gpu::kImportanceSize), int(gpu::kImportanceSize),
+                                             int(views));
         mViewCount = views;
     }
     // Gather samples on a grid of the image's aspect, at most one per pixel.
@@ -70,9 +73,10 @@ void ImportancePass::execute(const FrameInputs& inputs) {
         gl::memoryBarrier(gl::Barrier::Storage);
     }
     mCdf.use();
+    mPdfMap.bindImage(gpu::kImageImportancePdf, false, true);
     gl::dispatchCompute(uint32_t(views));
-    // The emit pass's geometry stage reads the tables.
-    gl::memoryBarrier(gl::Barrier::Storage);
+    // The emit pass's geometry stage reads the tables; the viewer samples the pdf map.
+    gl::memoryBarrier(gl::Barrier::Storage | gl::Barrier::TextureFetch);
 }
 
 } // namespace ispm

@@ -7,6 +7,8 @@
 #include "render/gbuffer.h"
 #include "render/pass.h"
 
+#include <shared/importance_data.h>
+
 namespace ispm {
 
 class ImportancePass final : public Pass {
@@ -21,7 +23,14 @@ public:
     // Sampling tables (shared/importance_data.h) for the emit pass; gathered hits for views.
     const gl::Buffer& getCdf() const { return mCdfTables; }
     const gl::Buffer& getHits() const { return mHits; }
-    size_t getGpuBytes() const { return mHits.getSize() + mCdfTables.getSize() + mParams.getSize(); }
+    // The emission pdf of every map texel relative to a uniform map (RGBA32F array, a layer per
+    // light view): the viewer's "light importance" view.
+    const gl::Texture& getPdfMap() const { return mPdfMap; }
+    size_t getGpuBytes() const {
+        constexpr size_t kBytesRgba32F = 16;
+        return mHits.getSize() + mCdfTables.getSize() + mParams.getSize() +
+               mViewCount * gpu::kImportanceTexels * kBytesRgba32F;
+    }
 
 private:
     const GBuffer& mViewer;
@@ -31,6 +40,7 @@ private:
     gl::Buffer mParams;
     gl::Buffer mHits;
     gl::Buffer mCdfTables;
+    gl::Texture mPdfMap;
     size_t mViewCount = 0;
 };
 

@@ -31,8 +31,13 @@ constexpr GLuint kStageRadius = 1;
 
 // Photons a splat disc holds by default: enough that one photon's noise averages out over its
 // neighbours' (relative noise ~ 1 / sqrt(k)), few enough to keep detail and the splat's cost,
-// which grows with k (every lit pixel is covered by about k discs).
-constexpr int kDefaultNeighbours = 32;
+// which grows with k (every lit pixel is covered by about k discs). k grows with the budget as
+// sqrt(photons), so more photons buy both less noise and sharper light: 45 at 50,000 photons
+// (measured at 256x256: Cornell box rel RMSE 0.254 at k 32, 0.223 at 48, 0.207 at 64; the
+// courtyard's best between 48 and 64; the splat costs 16% more at 48 than at 32).
+constexpr double kNeighboursPerSqrtPhoton = 0.2;
+constexpr int kMinNeighbours = 16;
+constexpr int kMaxNeighbours = 128;
 // Fractions of the evenly-spread radius (computeEvenRadius): the finest cell, the largest radius.
 constexpr float kFinestCellFraction = 1.0f / 16.0f;
 constexpr float kMaxRadiusFactor = 4.0f;
@@ -44,8 +49,9 @@ constexpr size_t kUintsPerSlot = 4; // key, count, power, padding (16-byte slots
 } // namespace
 
 int computeSplatNeighbours(const Settings& settings) {
-    return settings.isSet("splat_neighbours") ? settings.getInt("splat_neighbours")
-                                              : kDefaultNeighbours;
+    if (settings.isSet("splat_neighbours")) return settings.getInt("splat_neighbours");
+    const double k = kNeighboursPerSqrtPhoton * std::sqrt(std::max(settings.get("photons"), 0.0));
+    return std::clamp(int(std::lround(k)), kMinNeighbours, kMaxNeighbours);
 }
 
 float computeEvenRadius(double surfaceAreaM2, int photons, int neighbours) {

@@ -54,7 +54,8 @@ const std::vector<SettingDesc>& table() {
          "(density: each disc holds about splat_neighbours photons)",
          {"travel", "path_density", "density"}},
         {"splat_neighbours", SettingType::Int, 0, 1, 4096, "",
-         "radius_mode density: photons a splat disc holds; derived: 32", {}, true},
+         "radius_mode density: photons a splat disc holds; derived: 0.2 sqrt(photons), 16 to 128",
+         {}, true},
         {"radius_min", SettingType::Float, 0, 1e-6, 1e6, "m",
          "travel modes: splat radius at dist_min or less; derived: r0 / 2, where `photons` discs "
          "of radius r0 cover the scene's surface area 32 times; density: a floor when set", {},

@@ -18,6 +18,7 @@ constexpr GLint kLocationTransform = 1;
 constexpr GLuint kUnitSource = 0;
 constexpr float kDisplayGamma = 2.2f; // linear views are encoded like the default tone map
 constexpr int kFullscreenVertices = 3;
+constexpr float kImportanceWhite = 20.0f; // light importance: this pdf (x uniform) shows white
 
 ReloadableProgram buildBlitProgram(bool isArray) {
     std::vector<std::string> defines;
@@ -45,6 +46,8 @@ const gl::Texture& selectTexture(const FrameRunner& runner, const DebugView& vie
         return runner.getViewerGBuffer().getChannel(view.channel);
     case DebugView::Source::LightGBuffer:
         return runner.getLightGBuffer().getChannel(view.channel);
+    case DebugView::Source::LightImportance:
+        return runner.getImportance().getPdfMap();
     case DebugView::Source::Aov:
     case DebugView::Source::Reference: // ReferenceView draws these; `aov` is their total
         break;
@@ -74,6 +77,7 @@ std::vector<DebugView> buildDebugViews() {
         views.push_back({"light gbuffer " + std::string(channels[i].name),
                          DebugView::Source::LightGBuffer, Aov::Display, i});
     }
+    views.push_back({"light importance", DebugView::Source::LightImportance, Aov::Display, 0});
     return views;
 }
 
@@ -112,9 +116,17 @@ void DebugViewDrawer::draw(const FrameRunner& runner, const DebugView& view,
         getChannelTransform(getGBufferChannels()[view.channel].name, scale, bias);
         scale *= std::exp2(transform.exposureStops);
         break;
-    case DebugView::Source::LightGBuffer: {
-        getChannelTransform(getGBufferChannels()[view.channel].name, scale, bias);
-        scale *= std::exp2(transform.exposureStops);
+    case DebugView::Source::LightGBuffer:
+    case DebugView::Source::LightImportance: {
+        if (view.source == DebugView::Source::LightImportance) {
+            // The pdf relative to a uniform map, gamma-encoded: 1 (the uniform share) shows dark
+            // grey, kImportanceWhite times that white.
+            scale = std::exp2(transform.exposureStops) / kImportanceWhite;
+            inverseGamma = 1.0f / kDisplayGamma;
+        } else {
+            getChannelTransform(getGBufferChannels()[view.channel].name, scale, bias);
+            scale *= std::exp2(transform.exposureStops);
+        }
         layer = static_cast<float>(std::clamp(transform.lightLayer, 0, texture.getLayers() - 1));
         // Light cameras are square: keep their aspect in the region's lower-left square.
         regionWidth = regionHeight = std::min(width, height);

@@ -16,7 +16,7 @@ namespace ispm {
 enum class ReferenceMode { Reference, SideBySide, HeatMap };
 
 struct DebugView {
-    enum class Source { Aov, ViewerGBuffer, LightGBuffer, Reference };
+    enum class Source { Aov, ViewerGBuffer, LightGBuffer, LightImportance, Reference };
     std::string name; // as in the menu and in scripts: "display", "gbuffer normal", ...
     Source source = Source::Aov;
     Aov aov = Aov::Display;
@@ -33,7 +33,7 @@ int findDebugView(const std::vector<DebugView>& views, const std::string& name);
 // How a view's values become display values.
 struct ViewTransform {
     float exposureStops = 0.0f; // all but display: values x 2^stops (AOVs then gamma-encoded)
-    int lightLayer = 0;         // light G-buffer: which light camera
+    int lightLayer = 0;         // light G-buffer and importance: which light camera
 };
 
 class DebugViewDrawer {

@@ -372,7 +372,8 @@ void Viewer::drawPanels() {
                          static_cast<int>(kPointsNames.size()))) {
             mPoints = static_cast<PhotonPoints>(points);
         }
-        if (current.source == DebugView::Source::LightGBuffer) {
+        if (current.source == DebugView::Source::LightGBuffer ||
+            current.source == DebugView::Source::LightImportance) {
             const int layers = mRunner->getLightGBuffer().getLayers();
             ImGui::SliderInt("light camera", &mTransform.lightLayer, 0, std::max(0, layers - 1));
         }
@@ -518,7 +519,9 @@ int Viewer::run() {
             mDrawer.draw(*mRunner, view, mTransform, mRunner->getWidth(), mRunner->getHeight());
         }
         // Points are placed with the viewer camera: not over a light camera's image.
-        if (mViews[static_cast<size_t>(mViewIndex)].source != DebugView::Source::LightGBuffer) {
+        const DebugView::Source source = mViews[static_cast<size_t>(mViewIndex)].source;
+        if (source != DebugView::Source::LightGBuffer &&
+            source != DebugView::Source::LightImportance) {
             mPointsDrawer.draw(*mRunner, mPoints, mRunner->getWidth(), mRunner->getHeight());
         }
         gl::bindDefaultFramebuffer(mWindowWidth, mWindowHeight);

@@ -17,6 +17,7 @@ layout(std140, binding = kBindingImportanceParams) uniform ImportanceParamsBlock
 };
 layout(std430, binding = kBindingImportanceHits) readonly buffer ImportanceHits { uint importanceHits[]; };
 layout(std430, binding = kBindingImportanceCdf) writeonly buffer ImportanceCdf { float importanceCdf[]; };
+layout(rgba32f, binding = kImageImportancePdf) uniform writeonly image2DArray uPdfMap;
 
 shared float sRowBase[kImportanceSize];
 shared float sRowWeighted[kImportanceSize];
@@ -106,6 +107,9 @@ void main() {
     for (uint c = 0u; c < kImportanceSize; ++c) {
         float base = computeBase(view, light, c, row);
         float p = base * (baseScale + weightedScale * getImportance(viewIndex, c, row));
+        // The texel's probability (the view's sum to 1), shown relative to a uniform map.
+        float relative = p * float(kImportanceTexels);
+        imageStore(uPdfMap, ivec3(c, row, viewIndex), vec4(vec3(relative), 1.0));
         running += rowMass > 0.0 ? p / rowMass : 1.0 / float(kImportanceSize);
         importanceCdf[first + c] = c + 1u == kImportanceSize ? 1.0 : min(running, 1.0);
     }

@@ -26,6 +26,8 @@ ISPM_CONST uint kImportanceGroupSize = 64u;
 // the rows at [views * texels + v * size + row] (inclusive, last 1).
 ISPM_CONST int kBindingImportanceHits = 15;
 ISPM_CONST int kBindingImportanceCdf = 16;
+// Image unit of the emission pdf per map texel (relative to uniform: 1), for the viewer.
+ISPM_CONST int kImageImportancePdf = 0;
 
 // Where in its cell each grid point of a light view sits this frame ([0,1)^2, the same for every
 // cell of the view): a random shift of the whole grid by the frame seed keeps it stratified and

@@ -148,6 +148,32 @@ TEST_F(CliTest, CompareMaskRestrictsThePixels) {
                    {"small.png"});
 }
 
+TEST_F(CliTest, CompareMinusGivesTheQualityFiguresOfADifference) {
+    // B - C is 1 everywhere but a quarter of the pixels, where it is 0 (left out as black); A is
+    // 1.5 where B - C is 1: energy 1.5, rel RMSE 0.5 on 4x4 blocks.
+    constexpr int kSize = 8;
+    Image a(kSize, kSize, glm::vec3(1.5f));
+    Image b(kSize, kSize, glm::vec3(3.0f));
+    Image c(kSize, kSize, glm::vec3(2.0f));
+    for (int y = 0; y < kSize / 2; ++y) {
+        for (int x = 0; x < kSize / 2; ++x) c.at(x, y) = glm::vec3(3.0f);
+    }
+    const std::string pa = (mDir / "a.pfm").string();
+    const std::string pb = (mDir / "b.pfm").string();
+    const std::string pc = (mDir / "c.pfm").string();
+    writeImage(pa, a);
+    writeImage(pb, b);
+    writeImage(pc, c);
+    const RunResult r = run("compare " + pa + " " + pb + " --minus " + pc);
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("energy        1.500000 (mean ratio over the 48 pixels"),
+              std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("rel RMSE 4x4  0.500000"), std::string::npos) << r.output;
+    writeImage((mDir / "small.pfm").string(), Image(2, 2));
+    expectBadInput("compare " + pa + " " + pb + " --minus " + (mDir / "small.pfm").string(),
+                   {"small.pfm"});
+}
+
 TEST_F(CliTest, HelpOnEverySubcommand) {
     for (const char* sub : {"render", "export", "info", "compare", "bench", "view", "settings"}) {
         const RunResult r = run(std::string(sub) + " --help");

@@ -223,6 +223,28 @@ TEST_F(ViewerWindowTest, DebugViewsAndPhotonPointsChangeTheSceneRegion) {
     EXPECT_GT(computeChangedFraction(display, readImage(path("normal.png"))), kMinViewChanged);
 }
 
+TEST_F(ViewerWindowTest, LightImportanceViewShowsWhereThePhotonsGo) {
+    // From inside the courtyard's room, the sun's map is bright where the door lets its light
+    // in and dim elsewhere (the floor that keeps every texel a share).
+    const std::string courtyard = std::string(ISPM_ASSET_DIR) + "/scenes/courtyard.json";
+    const std::string script =
+        writeScript("frames 1\nview light importance\nscreenshot " + path("importance.png") + "\n");
+    expectClean(runIspm("view " + courtyard + " --camera room" + sizeArgs() +
+                        " --set photons=10000 --set shadow_map_size=256 --frames 3 --script " +
+                        script),
+                "view");
+    const Image map = readImage(path("importance.png"));
+    const double bright = computeFraction(map, 0, kSize, [](const glm::vec3& c) { return c.r > 0.9f; });
+    const double dim = computeFraction(map, 0, kSize, [](const glm::vec3& c) {
+        return c.r > 0.05f && c.r < 0.5f;
+    });
+    std::printf("light importance view: %.4f white, %.4f dim\n", bright, dim);
+    // Measured: 1.7% of the map white (20x the uniform share or more), 97% dim.
+    EXPECT_GT(bright, 0.001);
+    EXPECT_LT(bright, 0.2);
+    EXPECT_GT(dim, 0.5);
+}
+
 TEST_F(ViewerWindowTest, BadScriptIsBadInput) {
     const std::string script = writeScript("frames 1\nkey Z 3\n");
     const RunResult r = runIspm("view " + kCornell + " --frames 1 --script " + script);
