@@ -162,7 +162,14 @@ void printJson(const BenchReport& r) {
                           {"bounced", r.photons->bounced},
                           {"stored", r.photons->stored},
                           {"stored_in_view", r.photons->inView},
-                          {"overflow", r.photons->overflow}};
+                          {"overflow", r.photons->overflow},
+                          {"per_light", nlohmann::json::array()}};
+        for (const LightCounts& l : r.photons->perLight) {
+            out["photons"]["per_light"].push_back({{"emitted", l.emitted},
+                                                   {"bounced", l.bounced},
+                                                   {"stored", l.stored},
+                                                   {"stored_in_view", l.inView}});
+        }
     }
     out["settings"] = r.settings;
     if (!r.presetName.empty()) {
@@ -215,6 +222,11 @@ void printText(const BenchReport& r) {
                     "overflow %u\n",
                     r.photons->emitted, r.photons->bounced, r.photons->stored, r.photons->inView,
                     r.photons->overflow);
+        for (size_t i = 0; i < r.photons->perLight.size(); ++i) {
+            const LightCounts& l = r.photons->perLight[i];
+            std::printf("  light %zu: emitted %u, after the first bounce %u, stored %u (%u in view)\n",
+                        i, l.emitted, l.bounced, l.stored, l.inView);
+        }
     }
     const std::string rss = r.peakRssMib ? strCat(static_cast<int64_t>(*r.peakRssMib + 0.5), " MiB")
                                          : std::string("unknown");
@@ -295,6 +307,8 @@ void addBenchCommand(CLI::App& app, BenchOptions& options) {
         "--json fields: scene, width, height, frames, warmup, renderer, timing_method, animate, "
         "passes "
         "[{name, median_ms, min_ms, max_ms}], total_median_ms, peak_rss_mib, gl_bytes, settings, "
+        "photons {emitted, bounced, stored, stored_in_view, overflow, per_light [{emitted, "
+        "bounced, stored, stored_in_view}]} when the frame has indirect light, "
         "and preset {name, applied, skipped} with --preset.\n"
         "Sweep mode (--sweep, --reference, --csv): renders every configuration of the sweeps' "
         "cartesian product (values checked by the settings table; the render size must be the "

@@ -45,6 +45,13 @@ void printTimings(const FrameRunner& runner, const gl::ContextInfo& info) {
         std::printf("photons: %u emitted, %u after the first bounce, %u stored (%u in view), %u "
                     "overflow\n",
                     c.emitted, c.bounced, c.stored, c.inView, c.overflow);
+        for (size_t i = 0; i < c.perLight.size(); ++i) {
+            const LightCounts& l = c.perLight[i];
+            std::printf("  light %zu (%s): %u emitted, %u after the first bounce, %u stored (%u in "
+                        "view)\n",
+                        i, getLightTypeName(runner.getScene().lights[i].type), l.emitted, l.bounced,
+                        l.stored, l.inView);
+        }
     }
 }
 

@@ -154,7 +154,7 @@ bool FrameRunner::hasIndirect() const {
 
 PhotonCounts FrameRunner::readPhotonCounts() const {
     if (!hasIndirect()) return {};
-    return mPhotonBuffers.readCounts(mEmit->getEmittedCount());
+    return mPhotonBuffers.readCounts(mEmit->getEmittedPerLight());
 }
 
 const gl::Texture& FrameRunner::getAov(Aov aov) const {

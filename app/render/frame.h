@@ -47,6 +47,7 @@ public:
     void updateScene() { mGpuScene.updateDynamic(mScene); }
     void rebuildScene() { mGpuScene = GpuScene(mScene, mGpuScene.getLightResolution()); }
     const Settings& getSettings() const { return mSettings; }
+    const Scene& getScene() const { return mScene; }
     // F5: rebuilds the passes' programs whose source files changed; failures keep the old ones.
     ShaderReloadReport reloadShaders();
     const std::vector<PassTiming>& getLastTimings() const { return mTimings; }

@@ -1,9 +1,12 @@
 // Photon buffer allocation and the counter read-back used by reports.
 #include "render/photon_buffers.h"
 
+#include <algorithm>
+
 namespace ispm {
 
 void PhotonBuffers::reserve(uint32_t bounceCapacity, uint32_t resultCapacity) {
+    if (!mGrids.getId()) startFrame({}, 0); // bindable before the first frame's grids
     if (bounceCapacity > mBounceCapacity || !mBounce.getId()) {
         mBounceCapacity = bounceCapacity;
         mBounce = gl::Buffer("bounce photons", size_t(bounceCapacity) * sizeof(gpu::BouncePhoton));
@@ -14,17 +17,43 @@ void PhotonBuffers::reserve(uint32_t bounceCapacity, uint32_t resultCapacity) {
     }
 }
 
+void PhotonBuffers::startFrame(std::span<const glm::uvec4> grids, size_t lightCount) {
+    // Never empty: a zero-size buffer cannot be bound (no grids: one that matches no photon).
+    const glm::uvec4 none(0u);
+    const std::span<const glm::uvec4> items = grids.empty() ? std::span(&none, 1) : grids;
+    if (mGrids.getSize() != items.size_bytes()) mGrids = gl::Buffer("emission grids", items.size_bytes());
+    mGrids.upload(items);
+    const size_t bytes = std::max<size_t>(lightCount, 1) * sizeof(gpu::LightPhotonCounters);
+    if (mLightCounts.getSize() != bytes) mLightCounts = gl::Buffer("light photon counters", bytes);
+    mLightCounts.clearToZero();
+    mLightCount = lightCount;
+}
+
 void PhotonBuffers::bind() const {
     mBounce.bindBase(gl::BufferTarget::Storage, gpu::kBindingBouncePhotons);
     mResult.bindBase(gl::BufferTarget::Storage, gpu::kBindingResultPhotons);
     mCounters.bindBase(gl::BufferTarget::Storage, gpu::kBindingPhotonCounters);
     mSplatDraws.bindBase(gl::BufferTarget::Storage, gpu::kBindingSplatDraws);
+    bindLightCounters();
 }
 
-PhotonCounts PhotonBuffers::readCounts(uint32_t emitted) const {
+void PhotonBuffers::bindLightCounters() const {
+    mGrids.bindBase(gl::BufferTarget::Storage, gpu::kBindingEmissionGrids);
+    mLightCounts.bindBase(gl::BufferTarget::Storage, gpu::kBindingLightCounts);
+}
+
+PhotonCounts PhotonBuffers::readCounts(const std::vector<uint32_t>& emitted) const {
     const gpu::PhotonCounters c = mCounters.read<gpu::PhotonCounters>(1)[0];
     PhotonCounts counts;
-    counts.emitted = emitted;
+    for (uint32_t e : emitted) counts.emitted += e;
+    if (mLightCount > 0) {
+        const std::vector<gpu::LightPhotonCounters> lights =
+            mLightCounts.read<gpu::LightPhotonCounters>(mLightCount);
+        for (size_t i = 0; i < mLightCount; ++i) {
+            const glm::uvec4 l = lights[i].counts;
+            counts.perLight.push_back({i < emitted.size() ? emitted[i] : 0u, l.x, l.y, l.z});
+        }
+    }
     counts.bounced = c.bounce.x;
     counts.stored = std::min(c.result.x, c.result.y);
     counts.overflow = c.result.z;

@@ -7,8 +7,18 @@
 #include <shared/photon_data.h>
 
 #include <cstdint>
+#include <span>
+#include <vector>
 
 namespace ispm {
+
+// The counts of one light (or, in PhotonCounts, of all together).
+struct LightCounts {
+    uint32_t emitted = 0; // grid photons drawn (before the first bounce)
+    uint32_t bounced = 0; // survivors of the first bounce
+    uint32_t stored = 0;  // result photons kept
+    uint32_t inView = 0;  // stored photons whose splat reaches the view (density radii only)
+};
 
 struct PhotonCounts {
     uint32_t emitted = 0;  // grid photons drawn (before the first bounce)
@@ -16,13 +26,22 @@ struct PhotonCounts {
     uint32_t stored = 0;   // result photons kept
     uint32_t overflow = 0; // result photons dropped for want of capacity
     uint32_t inView = 0;   // stored photons whose splat reaches the view (density radii only)
+    std::vector<LightCounts> perLight; // by light index
 };
 
 class PhotonBuffers {
 public:
     // Grows (never shrinks) to hold `bounceCapacity` bounce photons and `resultCapacity` results.
     void reserve(uint32_t bounceCapacity, uint32_t resultCapacity);
-    void bind() const; // storage bindings kBinding{Bounce,Result}Photons, kBindingPhotonCounters
+    // The frame's emission grids ({first photon, view} in photon order, for the GPU to find a
+    // photon's light) and `lightCount` per-light counters set to zero.
+    void startFrame(std::span<const glm::uvec4> grids, size_t lightCount);
+    // Storage bindings kBinding{Bounce,Result}Photons, kBindingPhotonCounters, kBindingSplatDraws,
+    // kBindingEmissionGrids, kBindingLightCounts.
+    void bind() const;
+    // Only the grids and the per-light counters (the emit pass, whose bounce buffer is bound
+    // for transform feedback).
+    void bindLightCounters() const;
 
     const gl::Buffer& getBounce() const { return mBounce; }
     const gl::Buffer& getResult() const { return mResult; }
@@ -30,10 +49,11 @@ public:
     const gl::Buffer& getSplatDraws() const { return mSplatDraws; }
     uint32_t getBounceCapacity() const { return mBounceCapacity; }
     uint32_t getResultCapacity() const { return mResultCapacity; }
-    // Reads the counters back: for reports and tests, never inside a frame.
-    PhotonCounts readCounts(uint32_t emitted) const;
+    // Reads the counters back: for reports and tests, never inside a frame. `emitted` per light.
+    PhotonCounts readCounts(const std::vector<uint32_t>& emitted) const;
     size_t getGpuBytes() const {
-        return mBounce.getSize() + mResult.getSize() + mCounters.getSize() + mSplatDraws.getSize();
+        return mBounce.getSize() + mResult.getSize() + mCounters.getSize() + mSplatDraws.getSize() +
+               mGrids.getSize() + mLightCounts.getSize();
     }
 
 private:
@@ -42,6 +62,9 @@ private:
     gl::Buffer mCounters{"photon counters", sizeof(gpu::PhotonCounters)};
     gl::Buffer mSplatDraws{"splat draw commands",
                            gpu::kMaxSplatPasses * gpu::kSplatDrawUvec4s * sizeof(glm::uvec4)};
+    gl::Buffer mGrids;
+    gl::Buffer mLightCounts;
+    size_t mLightCount = 0;
     uint32_t mBounceCapacity = 0;
     uint32_t mResultCapacity = 0;
 };

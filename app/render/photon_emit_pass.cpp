@@ -47,6 +47,15 @@ void PhotonEmitPass::execute(const FrameInputs& inputs) {
     const uint32_t photons = countPhotons(mGrids);
     const auto bounces = static_cast<uint32_t>(inputs.settings.getInt("bounces"));
     mBuffers.reserve(std::max(photons, 1u), std::max(photons * bounces, 1u));
+    std::vector<glm::uvec4> gridTable;
+    mGridLights.clear();
+    for (const EmissionGrid& g : mGrids) {
+        gridTable.emplace_back(g.firstPhoton, g.viewIndex, 0u, 0u);
+        mGridLights.push_back(scene.getLightCameras()[g.viewIndex].lightIndex);
+    }
+    mLightCount = inputs.model.lights.size();
+    mBuffers.startFrame(gridTable, mLightCount);
+    mBuffers.bindLightCounters();
 
     mFramebuffer.bind();
     mVertexArray.bind();
@@ -74,6 +83,12 @@ void PhotonEmitPass::execute(const FrameInputs& inputs) {
     gl::applyState({});
     // The count stays on the GPU: the query result lands in the counters block.
     mWritten.writeResultTo(mBuffers.getCounters(), offsetof(gpu::PhotonCounters, bounce));
+}
+
+std::vector<uint32_t> PhotonEmitPass::getEmittedPerLight() const {
+    std::vector<uint32_t> emitted(mLightCount, 0u);
+    for (size_t i = 0; i < mGrids.size(); ++i) emitted[mGridLights[i]] += mGrids[i].getCount();
+    return emitted;
 }
 
 } // namespace ispm

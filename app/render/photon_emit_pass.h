@@ -21,6 +21,8 @@ public:
     // The grids of the last frame (emitted = their photon total).
     const std::vector<EmissionGrid>& getGrids() const { return mGrids; }
     uint32_t getEmittedCount() const { return countPhotons(mGrids); }
+    // Photons emitted per light (light index order) in the last frame.
+    std::vector<uint32_t> getEmittedPerLight() const;
 
 private:
     const GBuffer& mLightGBuffer;
@@ -32,6 +34,8 @@ private:
     gl::TransformFeedback mFeedback;
     gl::Query mWritten;
     std::vector<EmissionGrid> mGrids;
+    std::vector<uint32_t> mGridLights; // light of each grid
+    size_t mLightCount = 0;
 };
 
 } // namespace ispm

@@ -8,6 +8,15 @@
 
 namespace ispm {
 
+const char* getLightTypeName(LightType type) {
+    switch (type) {
+    case LightType::Point: return "point";
+    case LightType::Spot: return "spot";
+    case LightType::Sun: return "sun";
+    }
+    return "light";
+}
+
 float computeSpotFalloff(float cosAngle, float innerDeg, float outerDeg) {
     const float cosInner = std::cos(glm::radians(innerDeg));
     const float cosOuter = std::cos(glm::radians(outerDeg));

@@ -73,6 +73,9 @@ struct Light {
     std::optional<LightAnimation> animation;
 };
 
+// "point", "spot" or "sun", as scene files spell them.
+const char* getLightTypeName(LightType type);
+
 // Spot falloff S(a): 1 inside inner, 0 outside outer, smoothstep in cos space between.
 float computeSpotFalloff(float cosAngle, float innerDeg, float outerDeg);
 

@@ -21,18 +21,6 @@ constexpr float kMaxPower = 1e9f;             // W/sr or W/m^2: far beyond any s
 constexpr float kMaxConeDeg = 89.0f;          // a spot camera's half-angle must stay under 90
 constexpr glm::vec3 kNewLightIntensity{1.0f}; // W/sr: a dim white bulb, when no light to copy
 
-const char* getLightTypeName(LightType type) {
-    switch (type) {
-    case LightType::Point:
-        return "point";
-    case LightType::Spot:
-        return "spot";
-    case LightType::Sun:
-        return "sun";
-    }
-    return "light";
-}
-
 float computePowerSpeed(const glm::vec3& power) {
     return std::max(kMinPowerSpeed, kPowerFraction * std::max({power.x, power.y, power.z}));
 }

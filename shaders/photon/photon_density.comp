@@ -15,6 +15,7 @@
 #include "shared/photon_data.h"
 #include "shared/photon_scatter.h"
 #include "shared/splat_clip.h"
+#include "lib/photon_lights.glsl"
 
 layout(local_size_x = kTraceGroupSize) in;
 
@@ -162,6 +163,7 @@ void main() {
         return;
     }
     atomicAdd(counters.densityDispatch.w, 1u); // photons in view, for reports
+    countPhoton(unpackLight(photons[index].incoming.w), 2);
     photons[index].power.w = radius;
     vec3 n = photons[index].normalDensity.xyz;
     vec3 t;

@@ -8,6 +8,7 @@
 #include "lib/light_gbuffer.glsl"
 #include "lib/lights.glsl"
 #include "lib/importance.glsl"
+#include "lib/photon_lights.glsl"
 #include "shared/photon_data.h"
 #include "shared/photon_scatter.h"
 
@@ -86,6 +87,7 @@ void main() {
     outPositionDistance = vec4(position.xyz, travelled);
     outDirectionDensity = vec4(dir, updatePathDensity(1.0, event, specular.w));
     outPower = vec4(power, uintBitsToFloat(photon));
+    countPhoton(view.info.x, 0);
     EmitVertex();
     EndPrimitive();
 }

@@ -6,6 +6,7 @@
 #include "lib/bvh.glsl"
 #include "shared/photon_data.h"
 #include "shared/photon_scatter.h"
+#include "lib/photon_lights.glsl"
 
 layout(local_size_x = kTraceGroupSize) in;
 
@@ -26,7 +27,7 @@ bool isStoredSurface(GpuMaterial m) {
 }
 
 void storePhoton(vec3 position, float travelled, vec3 normal, float density, vec3 dir,
-                 uint reflections, vec3 power) {
+                 uint reflections, uint light, vec3 power) {
     uint slot = atomicAdd(counters.result.x, 1u);
     if (slot >= counters.result.y) {
         atomicAdd(counters.result.z, 1u); // counted, never written out of bounds
@@ -34,7 +35,8 @@ void storePhoton(vec3 position, float travelled, vec3 normal, float density, vec
     }
     resultPhotons[slot].positionDistance = vec4(position, travelled);
     resultPhotons[slot].normalDensity = vec4(normal, density);
-    resultPhotons[slot].incoming = vec4(dir, float(reflections));
+    resultPhotons[slot].incoming = vec4(dir, packReflectionsLight(reflections, light));
+    countPhoton(light, 1);
     resultPhotons[slot].power = vec4(power, 0.0);
 }
 
@@ -49,6 +51,7 @@ void main() {
     vec3 power = photon.power.rgb;
     uint id = floatBitsToUint(photon.power.w);
     uint bounces = uParams.x;
+    uint light = findPhotonLight(id);
     for (uint reflections = 1u; reflections <= bounces; ++reflections) {
         vec3 origin = position + dir * uEpsilonM;
         RayHit hit;
@@ -59,7 +62,7 @@ void main() {
         bool frontFace = dot(geometric, dir) < 0.0;
         vec3 n = frontFace ? geometric : -geometric;
         GpuMaterial m = materials[triangles[hit.triangle].w];
-        if (isStoredSurface(m)) storePhoton(position, travelled, n, density, dir, reflections, power);
+        if (isStoredSurface(m)) storePhoton(position, travelled, n, density, dir, reflections, light, power);
         if (reflections == bounces) break;
         uint rng = seedRandom(id, reflections, uParams.y);
         uint event = scatterPhoton(dir, power, n, m.diffuse.rgb, m.specular, m.transmissive,

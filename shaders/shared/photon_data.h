@@ -21,11 +21,18 @@ ISPM_STATIC_ASSERT_SIZE(BouncePhoton, 48);
 struct ResultPhoton {
     vec4 positionDistance; // xyz hit position (m); w = distance travelled from the light (m)
     vec4 normalDensity;    // xyz unit normal on the side the photon arrived from; w = path density
-    vec4 incoming;         // xyz unit direction of travel; w = reflections before this hit
+    vec4 incoming;         // xyz unit direction of travel; w = uint bits: reflections before
+                           // this hit (low 8 bits) | the light's index << 8
     vec4 power;            // rgb incoming power (W); w = splat radius (m) from the local photon
                            // density (photon_density.comp), 0 before that pass
 };
 ISPM_STATIC_ASSERT_SIZE(ResultPhoton, 64);
+
+// Photons of one light in the last frame, counted on the GPU for reports.
+struct LightPhotonCounters {
+    uvec4 counts; // x = after the first bounce, y = stored, z = stored in view, w unused
+};
+ISPM_STATIC_ASSERT_SIZE(LightPhotonCounters, 16);
 
 // Counters and indirect arguments in one buffer, so one bind serves every stage.
 struct PhotonCounters {
@@ -52,6 +59,9 @@ ISPM_CONST int kBindingBouncePhotons = 11;
 ISPM_CONST int kBindingResultPhotons = 12;
 ISPM_CONST int kBindingPhotonCounters = 13;
 ISPM_CONST int kBindingSplatDraws = 14; // indexed draw commands, kSplatDrawUvec4s per splat pass
+ISPM_CONST int kBindingLightCounts = 19;  // uvec4 per light (LightPhotonCounters)
+ISPM_CONST int kBindingEmissionGrids = 20; // uvec4 per grid: first photon, view, 0, 0
+ISPM_CONST uint kReflectionBits = 8u;      // ResultPhoton.incoming.w: reflections, then light
 ISPM_CONST int kBindingDensityCells = 17; // photon_density.comp's hashed grid: 4 uints a slot
 
 // Splat radius modes (setting radius_mode, checked against the table in splat_pass.cpp).

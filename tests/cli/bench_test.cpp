@@ -79,6 +79,16 @@ TEST_F(BenchTest, JsonHasEveryKeyAndConsistentTimes) {
     EXPECT_LE(photons["bounced"].get<int>(), photons["emitted"].get<int>());
     EXPECT_LE(photons["stored"].get<int>(), 3 * photons["bounced"].get<int>());
     EXPECT_EQ(photons["overflow"].get<int>(), 0);
+    // Per light, summing to the totals.
+    ASSERT_TRUE(photons.contains("per_light"));
+    int emitted = 0;
+    int stored = 0;
+    for (const auto& light : photons["per_light"]) {
+        emitted += light["emitted"].get<int>();
+        stored += light["stored"].get<int>();
+    }
+    EXPECT_EQ(emitted, photons["emitted"].get<int>());
+    EXPECT_EQ(stored, photons["stored"].get<int>());
     EXPECT_GT(j["peak_rss_mib"].get<double>(), 0.0);
     EXPECT_GT(j["gl_bytes"].get<double>(), 0.0);
     ASSERT_TRUE(j["passes"].is_array());
