@@ -527,6 +527,28 @@ TEST_F(PhotonEmitTest, SunMatchesCpuReference) {
     checkBudgets(makeRoomScene(makeSun()), "sun", gpu::kRngPcg);
 }
 
+TEST_F(PhotonEmitTest, SunTravelStartsAtTheFirstHit) {
+    // The sun's photons land at many depths along its direction (floor and walls); their travel
+    // distance is 0 at the first hit wherever that is (the thesis, 5.2.1.a), so one-bounce splat
+    // radii do not depend on a plane fitted to the scene's bounds.
+    const Scene scene = makeRoomScene(makeSun());
+    FrameRunner runner(scene, makeSettings(12345), gl::TimingMethod::CpuFinish);
+    runner.renderFrame();
+    const uint32_t bounced = runner.readPhotonCounts().bounced;
+    ASSERT_GT(bounced, 1000u);
+    const glm::vec3 axis = glm::normalize(scene.lights[0].direction);
+    float nearest = FLT_MAX;
+    float farthest = -FLT_MAX;
+    for (const gpu::BouncePhoton& p :
+         runner.getPhotonBuffers().getBounce().read<gpu::BouncePhoton>(bounced)) {
+        EXPECT_EQ(p.positionDistance.w, 0.0f);
+        const float depth = glm::dot(glm::vec3(p.positionDistance), axis);
+        nearest = std::min(nearest, depth);
+        farthest = std::max(farthest, depth);
+    }
+    EXPECT_GT(farthest - nearest, 1.0f) << "the first hits should lie at many depths";
+}
+
 // Sum of the powers the GPU wrote for a point light in a closed white box (reflectance 1 keeps
 // every photon at its emitted power).
 glm::dvec3 sumClosedBoxPower(float intensity, uint32_t photons, float importance, uint32_t seed,
