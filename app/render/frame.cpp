@@ -41,17 +41,18 @@ FrameRunner::FrameRunner(const Scene& scene, const Settings& settings, gl::Timin
     mTrace = std::make_unique<PhotonTracePass>(mPhotonBuffers);
     mDensity = std::make_unique<PhotonDensityPass>(mPhotonBuffers);
     mSplat = std::make_unique<SplatPass>(mGBuffer->getGBuffer(), mPhotonBuffers, mDensity->getClip());
+    mDenoise = std::make_unique<DenoisePass>(mGBuffer->getGBuffer(), mSplat->getOutput());
     mDirect = std::make_unique<DirectPass>(mGBuffer->getGBuffer(), mLightViews->getGBuffer());
     mCompose = std::make_unique<ComposePass>(mGBuffer->getGBuffer(), mDirect->getOutput(),
-                                             mSplat->getOutput());
+                                             mDenoise->getOutput());
     mTonemap = std::make_unique<TonemapPass>(mCompose->getOutput());
     resizePasses();
 }
 
-std::array<Pass*, 10> FrameRunner::getPasses() const {
+std::array<Pass*, 11> FrameRunner::getPasses() const {
     return {mGBuffer.get(), mLightViews.get(), mImportance.get(), mEmit.get(),
             mDirect.get(),  mTrace.get(),      mDensity.get(),    mSplat.get(),
-            mCompose.get(), mTonemap.get()};
+            mDenoise.get(), mCompose.get(),    mTonemap.get()};
 }
 
 void FrameRunner::resizePasses() {
@@ -142,6 +143,7 @@ void FrameRunner::renderFrame() {
         // bounces = 0 or no photons: the image is direct light only.
         mSplat->clear();
     }
+    runPass(*mDenoise, inputs);
     runPass(*mCompose, inputs);
     runPass(*mTonemap, inputs);
     mTimings.clear();
@@ -160,7 +162,7 @@ PhotonCounts FrameRunner::readPhotonCounts() const {
 const gl::Texture& FrameRunner::getAov(Aov aov) const {
     switch (aov) {
     case Aov::Direct: return mDirect->getOutput();
-    case Aov::Indirect: return mSplat->getOutput();
+    case Aov::Indirect: return mDenoise->getOutput();
     case Aov::Total: return mCompose->getOutput();
     case Aov::Display: return mTonemap->getOutput();
     }
@@ -170,7 +172,7 @@ const gl::Texture& FrameRunner::getAov(Aov aov) const {
 size_t FrameRunner::getGpuBytes() const {
     constexpr size_t kBytesRgba32F = 16;
     constexpr size_t kBytesRgba8 = 4;
-    constexpr size_t kFullResolutionRgba32F = 3; // direct, indirect, total
+    constexpr size_t kFullResolutionRgba32F = 6; // direct, indirect, total, denoise x 3
     const size_t pixels = static_cast<size_t>(mWidth) * static_cast<size_t>(mHeight);
     return mGpuScene.getGpuBytes() + mPhotonBuffers.getGpuBytes() + mImportance->getGpuBytes() +
            mDensity->getGpuBytes() +

@@ -5,6 +5,7 @@
 #include "gl/timer.h"
 #include "render/gbuffer_pass.h"
 #include "render/gpu_scene.h"
+#include "render/denoise_pass.h"
 #include "render/importance_pass.h"
 #include "render/photon_density_pass.h"
 #include "render/photon_emit_pass.h"
@@ -78,7 +79,7 @@ private:
     void resizePasses();
     void updateFrameConstants();
     // Every pass in frame order, for resize and shader reload.
-    std::array<Pass*, 10> getPasses() const;
+    std::array<Pass*, 11> getPasses() const;
     void runPass(Pass& pass, const FrameInputs& inputs);
 
     const Scene& mScene;
@@ -98,6 +99,7 @@ private:
     std::unique_ptr<PhotonTracePass> mTrace;
     std::unique_ptr<PhotonDensityPass> mDensity;
     std::unique_ptr<SplatPass> mSplat;
+    std::unique_ptr<DenoisePass> mDenoise;
     std::unique_ptr<DirectPass> mDirect;
     std::unique_ptr<ComposePass> mCompose;
     std::unique_ptr<TonemapPass> mTonemap;

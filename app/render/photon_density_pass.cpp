@@ -32,10 +32,11 @@ constexpr GLuint kStageRadius = 1;
 // Photons a splat disc holds by default: enough that one photon's noise averages out over its
 // neighbours' (relative noise ~ 1 / sqrt(k)), few enough to keep detail and the splat's cost,
 // which grows with k (every lit pixel is covered by about k discs). k grows with the budget as
-// sqrt(photons), so more photons buy both less noise and sharper light: 45 at 50,000 photons
-// (measured at 256x256: Cornell box rel RMSE 0.254 at k 32, 0.223 at 48, 0.207 at 64; the
-// courtyard's best between 48 and 64; the splat costs 16% more at 48 than at 32).
-constexpr double kNeighboursPerSqrtPhoton = 0.2;
+// sqrt(photons), so more photons buy both less noise and sharper light: 25 at 50,000 photons.
+// With the denoise pass after the splats (default 3 iterations) fewer neighbours do as well:
+// measured at 256x256, rel RMSE of Cornell / courtyard outside / room 0.146 / 0.339 / 0.371 at
+// k 16, 0.143 / 0.334 / 0.364 at 24, 0.139 / 0.334 / 0.382 at 45, the splat's cost rising with k.
+constexpr double kNeighboursPerSqrtPhoton = 0.11;
 constexpr int kMinNeighbours = 16;
 constexpr int kMaxNeighbours = 128;
 // Fractions of the evenly-spread radius (computeEvenRadius): the finest cell, the largest radius.

@@ -54,7 +54,7 @@ const std::vector<SettingDesc>& table() {
          "(density: each disc holds about splat_neighbours photons)",
          {"travel", "path_density", "density"}},
         {"splat_neighbours", SettingType::Int, 0, 1, 4096, "",
-         "radius_mode density: photons a splat disc holds; derived: 0.2 sqrt(photons), 16 to 128",
+         "radius_mode density: photons a splat disc holds; derived: 0.11 sqrt(photons), 16 to 128",
          {}, true},
         {"radius_min", SettingType::Float, 0, 1e-6, 1e6, "m",
          "travel modes: splat radius at dist_min or less; derived: r0 / 2, where `photons` discs "
@@ -75,6 +75,12 @@ const std::vector<SettingDesc>& table() {
          "splat ellipsoid thickness along the surface normal, as a fraction of its radius", {}},
         {"splat_passes", SettingType::Int, 1, 1, 64, "",
          "number of draw calls the splats are split into", {}},
+        {"denoise", SettingType::Int, 0, 0, 8, "",
+         "iterations of an edge-aware a-trous filter on the indirect light (steps of 1, 2, 4 ... "
+         "pixels, guided by normals and planes of the viewer G-buffer); 0 = the splats as they "
+         "are; derived: log2(min(width, height) / 32), so the filter spans the same part of any "
+         "image (3 at 256 px)",
+         {}, true},
         {"splat_faces", SettingType::Enum, 0, 0, 1, "",
          "back: the rasteriser culls the boxes' front faces (the thesis's choice); all: every face "
          "is rasterised and the fragment stage drops front faces (same image, for measuring)",

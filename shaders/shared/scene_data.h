@@ -66,6 +66,7 @@ ISPM_CONST int kUnitLightGBufferFirst = 8; // light G-buffer channels (2D arrays
 ISPM_CONST int kUnitDirect = 16;
 ISPM_CONST int kUnitIndirect = 17;
 ISPM_CONST int kUnitHdr = 18;
+ISPM_CONST int kUnitFilterSource = 19; // the denoise pass's input, one iteration to the next
 
 // Per-frame values every pass may read (std140).
 struct FrameConstants {

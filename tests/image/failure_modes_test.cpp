@@ -55,6 +55,9 @@ double computeMeanValue(const glm::vec3& v) {
 
 Settings makeCornellSettings(const Scene& scene, int photons, int seed) {
     Settings s = scene.settings;
+    // The splats as they are: these tests measure how the method fails, not how a filter hides
+    // it (the derived filter would span a third of a 48 px image).
+    s.set("denoise", 0, "test");
     s.set("width", kSize, "test");
     s.set("height", kSize, "test");
     s.set("bounces", 2, "test");
@@ -154,6 +157,7 @@ TEST_F(FailureModeTest, LightLeaksThroughThinWall) {
         settings.set("photons", kPhotons, "test");
         settings.set("shadow_map_size", kShadowMapSize, "test");
         settings.set("radius_scale", scales[k], "test");
+        settings.set("denoise", 0, "test"); // the splats themselves
         const FrameImages a = renderFrameImages(roomA, settings);
         const FrameImages b = renderFrameImages(roomB, settings);
         if (k == 0) {
@@ -255,43 +259,52 @@ TEST_F(FailureModeTest, CornersAndEdgesLoseIndirectEnergy) {
     constexpr int kReferenceSpp = 64;
     constexpr float kCornerM = 0.02f; // about the median splat radius at 50k photons
     constexpr float kMiddleM = 0.06f; // beyond the largest splat radius (radius_max ~4 cm)
+    constexpr int kSeeds = 2;          // 209 corner pixels: one frame's ratio moves by ~5%
     const Scene scene = loadCornell();
-    const Settings settings = makeCornellSettings(scene, 50000, 1);
-    const Image reference = renderReferenceIndirect(scene, settings, kReferenceSpp);
-    const FrameImages f = renderFrameImages(scene, settings);
-    const std::vector<float> edge = computeEdgeDistances(f);
-    PixelMask corner(edge.size(), 0);
-    PixelMask middle(edge.size(), 0);
-    size_t cornerCount = 0;
-    size_t middleCount = 0;
-    for (size_t i = 0; i < edge.size(); ++i) {
-        if (!isSurface(f, i)) continue;
-        if (edge[i] < kCornerM) {
-            corner[i] = 1;
-            ++cornerCount;
-        } else if (edge[i] > kMiddleM) {
-            middle[i] = 1;
-            ++middleCount;
+    double cornerSum = 0.0;
+    double middleSum = 0.0;
+    for (int seed = 1; seed <= kSeeds; ++seed) {
+        const Settings settings = makeCornellSettings(scene, 50000, seed);
+        const Image reference = renderReferenceIndirect(scene, settings, kReferenceSpp);
+        const FrameImages f = renderFrameImages(scene, settings);
+        const std::vector<float> edge = computeEdgeDistances(f);
+        PixelMask corner(edge.size(), 0);
+        PixelMask middle(edge.size(), 0);
+        size_t cornerCount = 0;
+        size_t middleCount = 0;
+        for (size_t i = 0; i < edge.size(); ++i) {
+            if (!isSurface(f, i)) continue;
+            if (edge[i] < kCornerM) {
+                corner[i] = 1;
+                ++cornerCount;
+            } else if (edge[i] > kMiddleM) {
+                middle[i] = 1;
+                ++middleCount;
+            }
         }
+        ASSERT_GT(cornerCount, 50u);
+        ASSERT_GT(middleCount, 50u);
+        const double cornerRatio =
+            computeMeanValue(glm::vec3(computeMeanRatio(f.indirect, reference, &corner)));
+        const double middleRatio =
+            computeMeanValue(glm::vec3(computeMeanRatio(f.indirect, reference, &middle)));
+        std::printf("corners, seed %d: ispm / reference indirect: within %.0f cm of an edge %.3f "
+                    "(%zu px), more than %.0f cm %.3f (%zu px)\n",
+                    seed, double(kCornerM) * 100.0, cornerRatio, cornerCount,
+                    double(kMiddleM) * 100.0, middleRatio, middleCount);
+        cornerSum += cornerRatio;
+        middleSum += middleRatio;
     }
-    ASSERT_GT(cornerCount, 50u);
-    ASSERT_GT(middleCount, 50u);
-    const double cornerRatio =
-        computeMeanValue(glm::vec3(computeMeanRatio(f.indirect, reference, &corner)));
-    const double middleRatio =
-        computeMeanValue(glm::vec3(computeMeanRatio(f.indirect, reference, &middle)));
-    const double allRatio = computeMeanValue(glm::vec3(computeMeanRatio(f.indirect, reference)));
-    std::printf("corners: ispm / reference indirect: within %.0f cm of an edge %.3f (%zu px), "
-                "more than %.0f cm %.3f (%zu px), all %.3f\n",
-                double(kCornerM) * 100.0, cornerRatio, cornerCount, double(kMiddleM) * 100.0,
-                middleRatio, middleCount, allRatio);
+    const double cornerRatio = cornerSum / kSeeds;
+    const double middleRatio = middleSum / kSeeds;
     // Unclipped splats lost the part of their disc past an edge: corner 0.897 against middle 0.945
-    // (seed 1; seed 2 0.848 and 0.965). Clipped at walls and renormalised per pixel
-    // (shared/splat_clip.h), seed 1 measures corner 0.965, middle 0.969, all 0.970. Mid-wall
-    // light is right to 10% (splat blur and both images' noise); the corners are held to the
-    // middle within 4%, which the unclipped splats (5-12% darker at corners) fail.
+    // (seed 1), 0.848 against 0.965 (seed 2), 0.91 of the middle on average. Clipped at walls
+    // and renormalised per pixel (shared/splat_clip.h): seeds 1 and 2 measure corner 1.015 and
+    // 0.938 against middle 0.965 and 0.975, 1.01 of the middle on average. Mid-wall light is
+    // right to 10% (splat blur and both images' noise); the corners are held to the middle
+    // within 5% on average, which the unclipped splats fail.
     constexpr double kMiddleTolerance = 0.1;
-    constexpr double kCornerToMiddleTolerance = 0.04;
+    constexpr double kCornerToMiddleTolerance = 0.05;
     EXPECT_NEAR(middleRatio, 1.0, kMiddleTolerance);
     EXPECT_NEAR(cornerRatio / middleRatio, 1.0, kCornerToMiddleTolerance);
 }
@@ -326,17 +339,17 @@ TEST_F(FailureModeTest, FlickerBetweenSeeds) {
                     "%.4f (radius fixed at %.0f cm); total %.4f\n",
                     counts[k], derived[k], fixed[k], double(kFixedRadiusM) * 100.0, total[k]);
     }
-    // Measured: at a fixed radius relMSE falls 0.183 -> 0.028 (6.5x for 5x photons: 1/N). Density
-    // radii hold 0.2 sqrt(photons) photons a disc (16 at 10k, 45 at 50k), so they fall too:
-    // 0.080 -> 0.024. (Travel radii, which hold ~32 whatever the budget, did not fall at all:
-    // 0.040 -> 0.046.) The whole frame (direct light is identical in both) flickers 0.065 and
-    // 0.020.
+    // Measured (denoise off): at a fixed radius relMSE falls 0.183 -> 0.028 (6.5x for 5x
+    // photons: 1/N). Density radii hold 0.11 sqrt(photons) photons a disc (16 at 10k, 25 at 50k),
+    // so they fall too: 0.104 -> 0.046 (2.3x). (Travel radii, which hold ~32 whatever the budget,
+    // did not fall at all: 0.040 -> 0.046.) The whole frame (direct light is identical in both)
+    // flickers 0.084 and 0.037.
     constexpr double kMinFixedRadiusGain = 3.0; // 1/N predicts 5
     constexpr double kMaxDerivedFlicker = 0.07; // at 50k photons
     constexpr double kMaxTotalFlicker = 0.05;   // at 50k photons
     EXPECT_GT(fixed[0] / fixed[1], kMinFixedRadiusGain);
     EXPECT_LT(derived[1], kMaxDerivedFlicker);
-    EXPECT_LT(derived[1], derived[0] / 2.0) << "more photons must steady the density radii";
+    EXPECT_LT(derived[1], derived[0] / 1.5) << "more photons must steady the density radii";
     EXPECT_LT(total[1], kMaxTotalFlicker);
 }
 

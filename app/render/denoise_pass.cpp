@@ -1,0 +1,69 @@
+// Denoise: ping-pong a-trous iterations, the last into the output target.
+#include "render/denoise_pass.h"
+
+#include "gl/gl.h"
+#include "gl/state.h"
+#include "scene/settings.h"
+
+#include <shared/scene_data.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace ispm {
+namespace {
+
+constexpr GLint kLocationIteration = 0; // shaders/denoise/atrous.frag
+constexpr int kFullscreenVertices = 3;
+constexpr const char* kTargetLabels[3] = {"denoise ping", "denoise pong", "indirect (denoised)"};
+// Image size whose derived filter is one iteration wide (steps of 1 pixel, +-2 pixels): at
+// 256 px three iterations reach +-14 pixels, about 5% of the image, where the splats' noise is.
+constexpr double kPixelsPerIteration = 32.0;
+
+} // namespace
+
+int computeDenoiseIterations(const Settings& settings, int width, int height) {
+    if (settings.isSet("denoise")) return settings.getInt("denoise");
+    const double iterations = std::log2(double(std::min(width, height)) / kPixelsPerIteration);
+    return std::max(0, int(std::lround(iterations)));
+}
+
+DenoisePass::DenoisePass(const GBuffer& viewer, const gl::Texture& indirect)
+    : mViewer(viewer), mIndirect(indirect),
+      mProgram(ReloadableProgram({.label = "denoise",
+                                  .stages = {{gl::ShaderStage::Vertex, "lib/fullscreen.vert"},
+                                             {gl::ShaderStage::Fragment, "denoise/atrous.frag"}},
+                                  .defines = getGBufferDefines()})),
+      mVertexArray("denoise vao") {}
+
+void DenoisePass::resize(int width, int height) {
+    if (mTargets[kOutput].getWidth() == width && mTargets[kOutput].getHeight() == height) return;
+    for (size_t i = 0; i < mTargets.size(); ++i) {
+        mTargets[i] = gl::Texture::create2D(kTargetLabels[i], gl::Format::RGBA32F, width, height);
+        mFramebuffers[i] = gl::Framebuffer(std::string(kTargetLabels[i]) + " target");
+        mFramebuffers[i].attachColor(0, mTargets[i]);
+        mFramebuffers[i].setDrawBufferCount(1);
+        mFramebuffers[i].checkComplete();
+    }
+}
+
+void DenoisePass::execute(const FrameInputs& inputs) {
+    gl::applyState({});
+    mProgram.use();
+    mVertexArray.bind();
+    inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
+    mViewer.bindTextures(gpu::kUnitGBufferFirst);
+    const int iterations = computeDenoiseIterations(inputs.settings, inputs.width, inputs.height);
+    const gl::Texture* source = &mIndirect;
+    for (int i = 0; i < std::max(iterations, 1); ++i) {
+        const bool last = i + 1 >= iterations;
+        const size_t target = last ? kOutput : size_t(i % 2);
+        mFramebuffers[target].bind();
+        source->bindUnit(gpu::kUnitFilterSource);
+        glUniform4i(kLocationIteration, iterations > 0 ? 1 << i : 0, i == 0 ? 1 : 0, last ? 1 : 0, 0);
+        gl::drawArrays(gl::Primitive::Triangles, 0, kFullscreenVertices);
+        source = &mTargets[target];
+    }
+}
+
+} // namespace ispm
