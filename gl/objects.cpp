@@ -135,6 +135,11 @@ void Texture::uploadRgba(std::span<const glm::vec4> texels, int layer) {
     }
 }
 
+void Texture::copyFrom(const Texture& source) {
+    glCopyImageSubData(source.getId(), GL_TEXTURE_2D, 0, 0, 0, 0, getId(), GL_TEXTURE_2D, 0, 0, 0, 0,
+                       mWidth, mHeight, 1);
+}
+
 void Texture::clear(const glm::vec4& value) {
     if (isDepthFormat(mFormat)) {
         glClearTexImage(getId(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, &value.x);

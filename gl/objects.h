@@ -90,6 +90,8 @@ public:
     std::vector<float> readDepth(int layer = 0) const;
     void uploadRgba(std::span<const glm::vec4> texels, int layer = 0);
     void clear(const glm::vec4& value);
+    // Copies level 0 of `source` (same size and format; 2D) into this texture on the GPU.
+    void copyFrom(const Texture& source);
 
     void bindUnit(GLuint unit) const;
     void bindImage(GLuint unit, bool read, bool write) const;

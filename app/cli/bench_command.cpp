@@ -13,6 +13,8 @@
 #include "scene/input_error.h"
 #include "scene/scene_loader.h"
 
+#include <shared/photon_data.h>
+
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
@@ -42,11 +44,15 @@ struct PresetSetting {
     double value;
 };
 
-// The thesis benchmark: McLaughlin's box city at 1280x1024 with 50k photons and three bounces.
+// The thesis benchmark: McLaughlin's box city at 1280x1024 with 50k photons and three bounces,
+// rendered the thesis's way: a uniform grid per light view (no importance), splat radii from
+// travel distance, no filter after the splats.
 constexpr const char* kThesisPresetName = "thesis";
 constexpr const char* kThesisScene = "scenes/box_city.json"; // under ISPM_ASSET_DIR
 constexpr PresetSetting kThesisSettings[] = {
-    {"width", 1280}, {"height", 1024}, {"photons", 50000}, {"bounces", 3}};
+    {"width", 1280},  {"height", 1024},    {"photons", 50000},
+    {"bounces", 3},   {"importance", 0},   {"radius_mode", gpu::kRadiusTravel},
+    {"denoise", 0}};
 
 // Preset settings that name no entry in the settings table (yet) are skipped and reported, so the
 // preset keeps its meaning as the photon pipeline's settings arrive.
@@ -61,7 +67,11 @@ PresetResult applyThesisPreset() {
     for (const PresetSetting& s : kThesisSettings) {
         if (findSetting(s.name)) {
             result.settings.set(s.name, s.value, strCat("--preset ", kThesisPresetName));
-            result.applied.push_back(strCat(s.name, "=", s.value));
+            const SettingDesc& desc = *findSetting(s.name);
+            result.applied.push_back(
+                desc.type == SettingType::Enum
+                    ? strCat(s.name, "=", desc.choices.at(static_cast<size_t>(s.value)))
+                    : strCat(s.name, "=", s.value));
         } else {
             result.skipped.push_back(s.name);
         }

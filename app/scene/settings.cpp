@@ -78,8 +78,7 @@ const std::vector<SettingDesc>& table() {
         {"denoise", SettingType::Int, 0, 0, 8, "",
          "iterations of an edge-aware a-trous filter on the indirect light (steps of 1, 2, 4 ... "
          "pixels, guided by normals and planes of the viewer G-buffer); 0 = the splats as they "
-         "are; derived: log2(min(width, height) / 32), so the filter spans the same part of any "
-         "image (3 at 256 px)",
+         "are; derived: log2(min(width, height) / 32), at most 3 (3 from 256 px on)",
          {}, true},
         {"splat_faces", SettingType::Enum, 0, 0, 1, "",
          "back: the rasteriser culls the boxes' front faces (the thesis's choice); all: every face "

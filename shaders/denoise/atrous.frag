@@ -10,8 +10,8 @@ layout(binding = kUnitGBufferFirst + GBUFFER_NORMAL) uniform sampler2D uNormal;
 layout(binding = kUnitGBufferFirst + GBUFFER_DIFFUSE) uniform sampler2D uDiffuse;
 layout(binding = kUnitFilterSource) uniform sampler2D uSource;
 
-layout(location = 0) uniform ivec4 uIteration; // x = step (px, 0: copy), y = 1: demodulate the
-                                               // input, z = 1: modulate the output
+layout(location = 0) uniform ivec4 uIteration; // x = step (px), y = 1: demodulate the input,
+                                               // z = 1: modulate the output
 
 layout(location = 0) out vec4 outRadiance;
 
@@ -39,9 +39,8 @@ void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec4 position = texelFetch(uPosition, pixel, 0);
     vec3 centre = readSource(pixel);
-    if (position.w < 0.5 || uIteration.x == 0) {
-        outRadiance = vec4(uIteration.z == 1 && position.w >= 0.5 ? centre * getReflectance(pixel)
-                                                                  : centre, 1.0);
+    if (position.w < 0.5) {
+        outRadiance = vec4(centre, 1.0);
         return;
     }
     ivec2 size = ivec2(frame.imageSize.xy);
