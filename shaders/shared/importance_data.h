@@ -9,9 +9,10 @@
 
 ISPM_NAMESPACE_BEGIN
 
-// Map texels across (and down) one light view. 64 keeps the map's CDF build one workgroup of 64
-// rows per view and a door of a 30 m yard two texels wide; finer maps gather fewer hits a texel.
-ISPM_CONST uint kImportanceSize = 64u;
+// Map texels across (and down) one light view: the CDF build is one workgroup of this many rows
+// per view. 128 keeps a 1 m door a texel wide under a sun view 128 m across (a 200 m yard: room
+// rel RMSE 0.52 with 64, 0.40 with 128); the gather's hits are spread by the maps' filters.
+ISPM_CONST uint kImportanceSize = 128u;
 ISPM_CONST uint kImportanceTexels = kImportanceSize * kImportanceSize;
 
 // Gathered importance is summed with integer atomics in these units per hit (fixed point), so a
