@@ -135,7 +135,7 @@ void Texture::uploadRgba(std::span<const glm::vec4> texels, int layer) {
     }
 }
 
-void Texture::copyFrom(const Texture& source) {
+void Texture::copyFrom(const Texture& source) const {
     glCopyImageSubData(source.getId(), GL_TEXTURE_2D, 0, 0, 0, 0, getId(), GL_TEXTURE_2D, 0, 0, 0, 0,
                        mWidth, mHeight, 1);
 }

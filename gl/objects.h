@@ -91,7 +91,7 @@ public:
     void uploadRgba(std::span<const glm::vec4> texels, int layer = 0);
     void clear(const glm::vec4& value);
     // Copies level 0 of `source` (same size and format; 2D) into this texture on the GPU.
-    void copyFrom(const Texture& source);
+    void copyFrom(const Texture& source) const; // GPU contents only: the object is unchanged
 
     void bindUnit(GLuint unit) const;
     void bindImage(GLuint unit, bool read, bool write) const;

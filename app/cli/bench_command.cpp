@@ -292,7 +292,7 @@ void addBenchCommand(CLI::App& app, BenchOptions& options) {
     CLI::App* cmd = app.add_subcommand("bench", "Time every pass over many frames of a scene");
     cmd->add_option("scene", options.scenePath,
                     "scene file (JSON); optional with --preset, which then supplies it");
-    cmd->add_option("--camera", options.cameraName, "view the scene through one of its named `cameras` (docs/scene-format.md)");
+    addCameraOption(*cmd, options.cameraName);
     cmd->add_option("--frames", options.frames, "timed frames, >= 1 (default 10)");
     cmd->add_option("--warmup", options.warmup,
                     "untimed frames first, >= 0 (default 2: first use of a program is slow)");

@@ -5,12 +5,19 @@
 #include "gl/debug.h"
 #include "scene/input_error.h"
 
+#include <CLI/CLI.hpp>
+
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
 #include <filesystem>
 
 namespace ispm {
+
+void addCameraOption(CLI::App& cmd, std::string& cameraName) {
+    cmd.add_option("--camera", cameraName,
+                   "view the scene through one of its named `cameras` (docs/scene-format.md)");
+}
 
 OutputKind classifyOutput(const std::string& path, const std::string& where) {
     std::string ext = std::filesystem::path(path).extension().string();

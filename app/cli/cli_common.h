@@ -9,7 +9,14 @@
 #include <string>
 #include <vector>
 
+namespace CLI {
+class App;
+}
+
 namespace ispm {
+
+// --camera NAME on a subcommand that loads a scene (one of the file's `cameras`).
+void addCameraOption(CLI::App& cmd, std::string& cameraName);
 
 enum class OutputKind { Png, Pfm, Exr };
 

@@ -28,7 +28,7 @@ void addRenderCommand(CLI::App& app, RenderOptions& options) {
     cmd->add_option("-o,--output", options.outputPath,
                     "output image: .png (tone mapped) or .pfm/.exr (linear radiance)")
         ->required();
-    cmd->add_option("--camera", options.cameraName, "view the scene through one of its named `cameras` (docs/scene-format.md)");
+    addCameraOption(*cmd, options.cameraName);
     cmd->add_option("--width", options.width, "image width in pixels (setting `width`)");
     cmd->add_option("--height", options.height, "image height in pixels (setting `height`)");
     cmd->add_option("--set", options.sets, "override a setting: name=value (repeatable)");

@@ -18,8 +18,7 @@ namespace ispm {
 void addViewCommand(CLI::App& app, ViewOptions& options) {
     CLI::App* cmd = app.add_subcommand("view", "Open the interactive viewer on a window");
     cmd->add_option("scene", options.scenePath, "scene file (JSON)")->required();
-    cmd->add_option("--camera", options.cameraName,
-                    "view the scene through one of its named `cameras` (docs/scene-format.md)");
+    addCameraOption(*cmd, options.cameraName);
     cmd->add_option("--width", options.width, "render width in pixels (the panel is added)");
     cmd->add_option("--height", options.height, "render height in pixels");
     cmd->add_option("--set", options.sets, "override a setting: name=value (repeatable)");

@@ -87,38 +87,45 @@ glm::dvec3 computeMeanRatio(const Image& test, const Image& reference, const Pix
             computeRatio(testSum.z, referenceSum.z)};
 }
 
-PixelMask selectLitPixels(const Image& test, const Image& reference, const PixelMask* mask) {
-    countIncludedPixels(test, reference, mask);
-    PixelMask lit(test.getPixelCount(), 0);
-    size_t count = 0;
+PixelMask selectLitPixels(const Image& reference, const PixelMask* mask) {
+    requireMaskSize(reference, mask);
+    PixelMask lit(reference.getPixelCount(), 0);
     for (size_t i = 0; i < lit.size(); ++i) {
         const glm::vec3& r = reference.pixels[i];
-        if (isIncluded(mask, i) && (r.x > 0.0f || r.y > 0.0f || r.z > 0.0f)) {
-            lit[i] = 1;
-            ++count;
-        }
+        lit[i] = isIncluded(mask, i) && (r.x > 0.0f || r.y > 0.0f || r.z > 0.0f) ? 1 : 0;
     }
-    if (count == 0) {
+    return lit;
+}
+
+namespace {
+
+// The lit pixels, or InputError when the reference is black wherever it is compared.
+PixelMask requireLitPixels(const Image& test, const Image& reference, const PixelMask* mask) {
+    requireSameSize(test, reference);
+    PixelMask lit = selectLitPixels(reference, mask);
+    if (std::find(lit.begin(), lit.end(), 1) == lit.end()) {
         throw InputError(strCat("expected a reference with a pixel that is not black among the ",
                                 test.width, "x", test.height, " compared"));
     }
     return lit;
 }
 
+} // namespace
+
 double computeEnergyRatio(const Image& test, const Image& reference, const PixelMask* mask) {
-    const PixelMask lit = selectLitPixels(test, reference, mask);
-    const glm::dvec3 ratio = computeMeanRatio(test, reference, &lit);
-    glm::dvec3 referenceSum(0.0);
-    sumIncluded(test, reference, &lit,
-                [&](const glm::dvec3&, const glm::dvec3& r) { referenceSum += r; });
-    // All channels together: the channel ratios weighted by the reference's channel sums.
-    const double total = referenceSum.x + referenceSum.y + referenceSum.z;
-    return (ratio.x * referenceSum.x + ratio.y * referenceSum.y + ratio.z * referenceSum.z) / total;
+    const PixelMask lit = requireLitPixels(test, reference, mask);
+    double testSum = 0.0;
+    double referenceSum = 0.0;
+    sumIncluded(test, reference, &lit, [&](const glm::dvec3& x, const glm::dvec3& r) {
+        testSum += x.x + x.y + x.z;
+        referenceSum += r.x + r.y + r.z;
+    });
+    return testSum / referenceSum;
 }
 
 double computeRelRmse(const Image& test, const Image& reference, int blockPx,
                       const PixelMask* mask) {
-    const PixelMask lit = selectLitPixels(test, reference, mask);
+    const PixelMask lit = requireLitPixels(test, reference, mask);
     double squaredSum = 0.0;
     double blockCount = 0.0;
     double referenceSum = 0.0;
@@ -156,14 +163,12 @@ ImageMetrics computeMetrics(const Image& test, const Image& reference, const Pix
     metrics.relMse = computeRelMse(test, reference, mask);
     metrics.ssim = computeSsim(test, reference, mask);
     metrics.meanRatio = computeMeanRatio(test, reference, mask);
-    for (size_t i = 0; i < reference.getPixelCount(); ++i) {
-        const glm::vec3& r = reference.pixels[i];
-        if (isIncluded(mask, i) && (r.x > 0.0f || r.y > 0.0f || r.z > 0.0f)) ++metrics.litPixelCount;
-    }
+    const PixelMask lit = selectLitPixels(reference, mask);
+    metrics.litPixelCount = size_t(std::count(lit.begin(), lit.end(), 1));
     if (metrics.litPixelCount > 0) {
-        metrics.energy = computeEnergyRatio(test, reference, mask);
-        metrics.relRmse4 = computeRelRmse(test, reference, kRelRmseBlock, mask);
-        metrics.relRmse1 = computeRelRmse(test, reference, 1, mask);
+        metrics.energy = computeEnergyRatio(test, reference, &lit);
+        metrics.relRmse4 = computeRelRmse(test, reference, kRelRmseBlock, &lit);
+        metrics.relRmse1 = computeRelRmse(test, reference, 1, &lit);
     }
     return metrics;
 }

@@ -56,8 +56,8 @@ glm::dvec3 computeMeanRatio(const Image& test, const Image& reference,
                             const PixelMask* mask = nullptr);
 
 // Pixels compared by the quality figures: included by the mask and not black in the reference
-// (some channel above 0). Throws InputError like countIncludedPixels when there are none.
-PixelMask selectLitPixels(const Image& test, const Image& reference, const PixelMask* mask);
+// (some channel above 0); possibly none. The two functions below throw InputError when none is.
+PixelMask selectLitPixels(const Image& reference, const PixelMask* mask);
 
 // mean(test) / mean(reference) over the lit pixels, all channels together (DESIGN.md "energy").
 double computeEnergyRatio(const Image& test, const Image& reference, const PixelMask* mask = nullptr);

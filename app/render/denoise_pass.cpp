@@ -14,8 +14,6 @@ namespace ispm {
 namespace {
 
 constexpr GLint kLocationIteration = 0; // shaders/denoise/atrous.frag
-constexpr int kFullscreenVertices = 3;
-constexpr const char* kTargetLabels[3] = {"denoise ping", "denoise pong", "indirect (denoised)"};
 // Image size whose derived filter is one iteration wide (steps of 1 pixel, +-2 pixels): at
 // 256 px three iterations reach +-14 pixels, about 5% of the image, where the splats' noise is.
 constexpr double kPixelsPerIteration = 32.0;
@@ -37,23 +35,18 @@ DenoisePass::DenoisePass(const GBuffer& viewer, const gl::Texture& indirect)
                                   .stages = {{gl::ShaderStage::Vertex, "lib/fullscreen.vert"},
                                              {gl::ShaderStage::Fragment, "denoise/atrous.frag"}},
                                   .defines = getGBufferDefines()})),
-      mVertexArray("denoise vao") {}
+      mVertexArray("denoise vao"),
+      mTargets({ColorTarget("indirect (denoised)", gl::Format::RGBA32F),
+                ColorTarget("denoise intermediate", gl::Format::RGBA32F)}) {}
 
 void DenoisePass::resize(int width, int height) {
-    if (mTargets[kOutput].getWidth() == width && mTargets[kOutput].getHeight() == height) return;
-    for (size_t i = 0; i < mTargets.size(); ++i) {
-        mTargets[i] = gl::Texture::create2D(kTargetLabels[i], gl::Format::RGBA32F, width, height);
-        mFramebuffers[i] = gl::Framebuffer(std::string(kTargetLabels[i]) + " target");
-        mFramebuffers[i].attachColor(0, mTargets[i]);
-        mFramebuffers[i].setDrawBufferCount(1);
-        mFramebuffers[i].checkComplete();
-    }
+    for (ColorTarget& target : mTargets) target.resize(width, height);
 }
 
 void DenoisePass::execute(const FrameInputs& inputs) {
     const int iterations = computeDenoiseIterations(inputs.settings, inputs.width, inputs.height);
     if (iterations == 0) {
-        mTargets[kOutput].copyFrom(mIndirect); // the splats as they are
+        mTargets[kOutput].getTexture().copyFrom(mIndirect); // the splats as they are
         return;
     }
     gl::applyState({});
@@ -64,12 +57,12 @@ void DenoisePass::execute(const FrameInputs& inputs) {
     const gl::Texture* source = &mIndirect;
     for (int i = 0; i < iterations; ++i) {
         const bool last = i + 1 >= iterations;
-        const size_t target = last ? kOutput : size_t(i % 2);
-        mFramebuffers[target].bind();
+        const size_t target = (iterations - 1 - i) % 2 == 0 ? kOutput : 1 - kOutput;
+        mTargets[target].bind();
         source->bindUnit(gpu::kUnitFilterSource);
         glUniform4i(kLocationIteration, 1 << i, i == 0 ? 1 : 0, last ? 1 : 0, 0);
-        gl::drawArrays(gl::Primitive::Triangles, 0, kFullscreenVertices);
-        source = &mTargets[target];
+        drawFullscreenTriangle();
+        source = &mTargets[target].getTexture();
     }
 }
 

@@ -3,6 +3,7 @@
 // output is the frame's indirect AOV.
 #pragma once
 
+#include "render/fullscreen.h"
 #include "render/gbuffer.h"
 #include "render/pass.h"
 
@@ -20,17 +21,17 @@ public:
     void resize(int width, int height) override;
     void execute(const FrameInputs& inputs) override;
     void reloadPrograms(ShaderReloadReport& report) override { mProgram.reloadIfChanged(report); }
-    const gl::Texture& getOutput() const { return mTargets[kOutput]; }
+    const gl::Texture& getOutput() const { return mTargets[kOutput].getTexture(); }
 
 private:
-    // Two targets to ping-pong between, and the output the last iteration writes.
-    static constexpr size_t kOutput = 2;
+    // The output and one more target: iterations alternate between them so that the last
+    // writes the output.
+    static constexpr size_t kOutput = 0;
     const GBuffer& mViewer;
     const gl::Texture& mIndirect;
     ReloadableProgram mProgram;
     gl::VertexArray mVertexArray;
-    std::array<gl::Texture, 3> mTargets;
-    std::array<gl::Framebuffer, 3> mFramebuffers;
+    std::array<ColorTarget, 2> mTargets;
 };
 
 } // namespace ispm

@@ -5,6 +5,7 @@
 #include "gl/debug.h"
 #include "scene/input_error.h"
 
+#include <shared/photon_data.h>
 #include <shared/scene_data.h>
 
 #include <cmath>
@@ -137,7 +138,7 @@ void FrameRunner::renderFrame() {
     runPass(*mDirect, inputs);
     if (hasIndirect()) {
         runPass(*mTrace, inputs);
-        if (mSettings.getEnum("radius_mode") == "density") runPass(*mDensity, inputs);
+        if (uint32_t(mSettings.get("radius_mode")) == gpu::kRadiusDensity) runPass(*mDensity, inputs);
         runPass(*mSplat, inputs);
     } else {
         // bounces = 0 or no photons: the image is direct light only.
@@ -172,7 +173,7 @@ const gl::Texture& FrameRunner::getAov(Aov aov) const {
 size_t FrameRunner::getGpuBytes() const {
     constexpr size_t kBytesRgba32F = 16;
     constexpr size_t kBytesRgba8 = 4;
-    constexpr size_t kFullResolutionRgba32F = 6; // direct, indirect, total, denoise x 3
+    constexpr size_t kFullResolutionRgba32F = 5; // direct, indirect, total, denoise x 2
     const size_t pixels = static_cast<size_t>(mWidth) * static_cast<size_t>(mHeight);
     return mGpuScene.getGpuBytes() + mPhotonBuffers.getGpuBytes() + mImportance->getGpuBytes() +
            mDensity->getGpuBytes() +

@@ -1,21 +1,11 @@
-// FullscreenTarget: owns its program, output texture and framebuffer.
+// ColorTarget and FullscreenTarget: output textures, their framebuffers and the full-screen draw.
 #include "render/fullscreen.h"
 
 #include "gl/state.h"
 
 namespace ispm {
 
-FullscreenTarget::FullscreenTarget(std::string label, gl::Format format,
-                                   const std::string& fragmentPath,
-                                   std::vector<std::string> defines)
-    : mLabel(std::move(label)), mFormat(format),
-      mProgram(ReloadableProgram({.label = mLabel,
-                                  .stages = {{gl::ShaderStage::Vertex, "lib/fullscreen.vert"},
-                                             {gl::ShaderStage::Fragment, fragmentPath}},
-                                  .defines = std::move(defines)})),
-      mVertexArray(mLabel + " vao") {}
-
-void FullscreenTarget::resize(int width, int height) {
+void ColorTarget::resize(int width, int height) {
     if (mTexture.getWidth() == width && mTexture.getHeight() == height) return;
     mTexture = gl::Texture::create2D(mLabel, mFormat, width, height);
     mFramebuffer = gl::Framebuffer(mLabel + " target");
@@ -24,13 +14,27 @@ void FullscreenTarget::resize(int width, int height) {
     mFramebuffer.checkComplete();
 }
 
+void drawFullscreenTriangle() {
+    constexpr int kFullscreenVertices = 3;
+    gl::drawArrays(gl::Primitive::Triangles, 0, kFullscreenVertices);
+}
+
+FullscreenTarget::FullscreenTarget(std::string label, gl::Format format,
+                                   const std::string& fragmentPath,
+                                   std::vector<std::string> defines)
+    : mTarget(label, format),
+      mProgram(ReloadableProgram({.label = label,
+                                  .stages = {{gl::ShaderStage::Vertex, "lib/fullscreen.vert"},
+                                             {gl::ShaderStage::Fragment, fragmentPath}},
+                                  .defines = std::move(defines)})),
+      mVertexArray(label + " vao") {}
+
 void FullscreenTarget::draw() const {
-    mFramebuffer.bind();
+    mTarget.bind();
     gl::applyState({});
     mProgram.use();
     mVertexArray.bind();
-    constexpr int kFullscreenVertices = 3;
-    gl::drawArrays(gl::Primitive::Triangles, 0, kFullscreenVertices);
+    drawFullscreenTriangle();
 }
 
 } // namespace ispm

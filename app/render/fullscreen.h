@@ -9,23 +9,39 @@
 
 namespace ispm {
 
-class FullscreenTarget {
+// One colour texture and the framebuffer that draws into it, made anew when the size changes.
+class ColorTarget {
 public:
-    FullscreenTarget(std::string label, gl::Format format, const std::string& fragmentPath,
-                     std::vector<std::string> defines);
+    ColorTarget(std::string label, gl::Format format) : mLabel(std::move(label)), mFormat(format) {}
     void resize(int width, int height);
-    // Binds the target, applies a plain state (no depth, no blending) and draws.
-    void draw() const;
+    void bind() const { mFramebuffer.bind(); } // with the viewport
     const gl::Texture& getTexture() const { return mTexture; }
-    void reloadProgram(ShaderReloadReport& report) { mProgram.reloadIfChanged(report); }
 
 private:
     std::string mLabel;
     gl::Format mFormat;
-    ReloadableProgram mProgram;
-    gl::VertexArray mVertexArray;
     gl::Texture mTexture;
     gl::Framebuffer mFramebuffer;
+};
+
+// Draws the triangle that covers the viewport (lib/fullscreen.vert makes it from gl_VertexID),
+// with whatever program and vertex array are bound.
+void drawFullscreenTriangle();
+
+class FullscreenTarget {
+public:
+    FullscreenTarget(std::string label, gl::Format format, const std::string& fragmentPath,
+                     std::vector<std::string> defines);
+    void resize(int width, int height) { mTarget.resize(width, height); }
+    // Binds the target, applies a plain state (no depth, no blending) and draws.
+    void draw() const;
+    const gl::Texture& getTexture() const { return mTarget.getTexture(); }
+    void reloadProgram(ShaderReloadReport& report) { mProgram.reloadIfChanged(report); }
+
+private:
+    ColorTarget mTarget;
+    ReloadableProgram mProgram;
+    gl::VertexArray mVertexArray;
 };
 
 } // namespace ispm

@@ -52,7 +52,8 @@ void ImportancePass::execute(const FrameInputs& inputs) {
     const double aspect = double(inputs.width) / double(inputs.height);
     const auto across = uint32_t(std::clamp(std::lround(std::sqrt(samples * aspect)), 1L, long(inputs.width)));
     const auto down = uint32_t(std::clamp(std::lround(samples / across), 1L, long(inputs.height)));
-    const float share = inputs.settings.getFloat("importance");
+    // Without gather samples nothing is aimed: the tables follow the light's power alone.
+    const float share = samples > 0.0 ? inputs.settings.getFloat("importance") : 0.0f;
     gpu::ImportanceParams params{};
     params.counts = glm::uvec4(across, down, uint32_t(views), uint32_t(inputs.settings.getInt("seed")));
     params.weights = glm::vec4(share, kVisibleWeight, kBounceWeight, inputs.scene.getRayEpsilon());
@@ -65,8 +66,8 @@ void ImportancePass::execute(const FrameInputs& inputs) {
     mCdfTables.bindBase(gl::BufferTarget::Storage, gpu::kBindingImportanceCdf);
     mViewer.bindTextures(gpu::kUnitGBufferFirst);
     mLights.bindTextures(gpu::kUnitLightGBufferFirst);
-    mHits.clearToZero();
-    if (share > 0.0f && samples > 0.0) {
+    if (share > 0.0f) {
+        mHits.clearToZero();
         mGather.use();
         const uint32_t count = across * down;
         gl::dispatchCompute((count + gpu::kImportanceGroupSize - 1) / gpu::kImportanceGroupSize);

@@ -20,9 +20,8 @@ public:
         mGather.reloadIfChanged(report);
         mCdf.reloadIfChanged(report);
     }
-    // Sampling tables (shared/importance_data.h) for the emit pass; gathered hits for views.
+    // Sampling tables (shared/importance_data.h) for the emit pass.
     const gl::Buffer& getCdf() const { return mCdfTables; }
-    const gl::Buffer& getHits() const { return mHits; }
     // The emission pdf of every map texel relative to a uniform map (RGBA32F array, a layer per
     // light view): the viewer's "light importance" view.
     const gl::Texture& getPdfMap() const { return mPdfMap; }

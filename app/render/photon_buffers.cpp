@@ -6,7 +6,6 @@
 namespace ispm {
 
 void PhotonBuffers::reserve(uint32_t bounceCapacity, uint32_t resultCapacity) {
-    if (!mGrids.getId()) startFrame({}, 0); // bindable before the first frame's grids
     if (bounceCapacity > mBounceCapacity || !mBounce.getId()) {
         mBounceCapacity = bounceCapacity;
         mBounce = gl::Buffer("bounce photons", size_t(bounceCapacity) * sizeof(gpu::BouncePhoton));
@@ -52,12 +51,12 @@ PhotonCounts PhotonBuffers::readCounts(const std::vector<uint32_t>& emitted) con
         for (size_t i = 0; i < mLightCount; ++i) {
             const glm::uvec4 l = lights[i].counts;
             counts.perLight.push_back({i < emitted.size() ? emitted[i] : 0u, l.x, l.y, l.z});
+            counts.inView += l.z;
         }
     }
     counts.bounced = c.bounce.x;
     counts.stored = std::min(c.result.x, c.result.y);
     counts.overflow = c.result.z;
-    counts.inView = c.densityDispatch.w;
     return counts;
 }
 

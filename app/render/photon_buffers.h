@@ -26,7 +26,7 @@ struct PhotonCounts {
     uint32_t stored = 0;   // result photons kept
     uint32_t overflow = 0; // result photons dropped for want of capacity
     uint32_t inView = 0;   // stored photons whose splat reaches the view (density radii only)
-    std::vector<LightCounts> perLight; // by light index
+    std::vector<LightCounts> perLight; // by light index; emitted and inView are their sums
 };
 
 class PhotonBuffers {
@@ -62,8 +62,10 @@ private:
     gl::Buffer mCounters{"photon counters", sizeof(gpu::PhotonCounters)};
     gl::Buffer mSplatDraws{"splat draw commands",
                            gpu::kMaxSplatPasses * gpu::kSplatDrawUvec4s * sizeof(glm::uvec4)};
-    gl::Buffer mGrids;
-    gl::Buffer mLightCounts;
+    // One entry each until the first frame sets them: bindable from the start (a zero-size buffer
+    // is not), and matching no light.
+    gl::Buffer mGrids{"emission grids", sizeof(glm::uvec4)};
+    gl::Buffer mLightCounts{"light photon counters", sizeof(gpu::LightPhotonCounters)};
     size_t mLightCount = 0;
     uint32_t mBounceCapacity = 0;
     uint32_t mResultCapacity = 0;

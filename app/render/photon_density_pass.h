@@ -23,7 +23,7 @@ public:
     const char* getName() const override { return "density"; }
     void execute(const FrameInputs& inputs) override;
     void reloadPrograms(ShaderReloadReport& report) override { mProgram.reloadIfChanged(report); }
-    // Per result photon: the four free distances of its disc (shared/splat_clip.h).
+    // Per result photon: its disc's clip lines and box extents (shared/splat_clip.h).
     const gl::Buffer& getClip() const { return mClip; }
     size_t getGpuBytes() const { return mCells.getSize() + mClip.getSize(); }
 

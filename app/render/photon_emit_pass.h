@@ -20,7 +20,6 @@ public:
     void reloadPrograms(ShaderReloadReport& report) override { mProgram.reloadIfChanged(report); }
     // The grids of the last frame (emitted = their photon total).
     const std::vector<EmissionGrid>& getGrids() const { return mGrids; }
-    uint32_t getEmittedCount() const { return countPhotons(mGrids); }
     // Photons emitted per light (light index order) in the last frame.
     std::vector<uint32_t> getEmittedPerLight() const;
 

@@ -92,7 +92,7 @@ void SplatPass::execute(const FrameInputs& inputs) {
     glUniform4f(kLocationRadius, r.radiusMinM, r.radiusMaxM, r.distMinM, r.distMaxM);
     const auto radiusMode = static_cast<uint32_t>(inputs.settings.get("radius_mode"));
     glUniform4f(kLocationShape, static_cast<float>(radiusMode), cullInRasteriser ? 0.0f : 1.0f,
-                inputs.settings.getFloat("squash"), radiusMode == gpu::kRadiusDensity ? 1.0f : 0.0f);
+                inputs.settings.getFloat("squash"), 0.0f);
     const auto passes = static_cast<GLuint>(inputs.settings.getInt("splat_passes"));
     for (GLuint p = 0; p < passes; ++p) {
         glUniform2ui(kLocationPass, p, passes);

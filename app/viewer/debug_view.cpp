@@ -3,6 +3,7 @@
 
 #include "gl/gl.h"
 #include "gl/state.h"
+#include "render/fullscreen.h"
 #include "render/gbuffer.h"
 #include "render/shader_root.h"
 
@@ -17,7 +18,6 @@ constexpr GLint kLocationRegion = 0;
 constexpr GLint kLocationTransform = 1;
 constexpr GLuint kUnitSource = 0;
 constexpr float kDisplayGamma = 2.2f; // linear views are encoded like the default tone map
-constexpr int kFullscreenVertices = 3;
 constexpr float kImportanceWhite = 20.0f; // light importance: this pdf (x uniform) shows white
 
 ReloadableProgram buildBlitProgram(bool isArray) {
@@ -142,7 +142,7 @@ void DebugViewDrawer::draw(const FrameRunner& runner, const DebugView& view,
     texture.bindUnit(kUnitSource);
     mSampler.bindUnit(kUnitSource);
     mVertexArray.bind();
-    gl::drawArrays(gl::Primitive::Triangles, 0, kFullscreenVertices);
+    drawFullscreenTriangle();
     // Passes bind their own samplers or none: leave unit 0 as they expect it.
     glBindSampler(kUnitSource, 0);
 }

@@ -7,6 +7,7 @@
 #include "gl/state.h"
 #include "image/image_io.h"
 #include "image/metrics.h"
+#include "render/fullscreen.h"
 #include "render/readback.h"
 #include "scene/input_error.h"
 
@@ -26,7 +27,6 @@ constexpr GLint kLocationParams = 1;
 constexpr GLuint kUnitTotal = 0;
 constexpr GLuint kUnitReference = 1;
 constexpr float kDisplayGamma = 2.2f; // as the other linear views (debug_view.cpp)
-constexpr int kFullscreenVertices = 3;
 constexpr float kLegendHeightPx = 12.0f; // the legend bar of reference_view.frag
 // The path tracer restarts only after the camera has been still this long: flying would
 // otherwise rebuild its GPU scene every frame for a single sample.
@@ -134,7 +134,7 @@ void ReferenceView::draw(const FrameRunner& runner, ReferenceMode mode, float ex
     mSampler.bindUnit(kUnitTotal);
     mSampler.bindUnit(kUnitReference);
     mVertexArray.bind();
-    gl::drawArrays(gl::Primitive::Triangles, 0, kFullscreenVertices);
+    drawFullscreenTriangle();
     // Passes bind their own samplers or none: leave the units as they expect them.
     glBindSampler(kUnitTotal, 0);
     glBindSampler(kUnitReference, 0);

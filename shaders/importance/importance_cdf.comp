@@ -31,8 +31,7 @@ float computeBase(GpuLightView view, GpuLight light, uint column, uint row) {
     float t = 0.5 * view.axisTexel.w * frame.shadow.y;
     vec2 uv = (vec2(column, row) + 0.5) / float(kImportanceSize);
     vec2 p = (uv * 2.0 - 1.0) * t;
-    float r2 = 1.0 + dot(p, p);
-    float solidAngle = 1.0 / (r2 * sqrt(r2)); // per image-plane area, at unit distance
+    float solidAngle = computePlaneSolidAngleDensity(p);
     if (uint(light.positionType.w + 0.5) != kLightSpot) return solidAngle;
     float halfTexel = t / float(kImportanceSize);
     float falloff = 0.0;
@@ -69,6 +68,7 @@ const int kWideRadius = 6;
 const float kWideWeight = 0.5;
 
 float getImportance(uint viewIndex, uint column, uint row) {
+    if (params.weights.x <= 0.0) return 0.0; // nothing aimed: the hits were not gathered
     ivec2 texel = ivec2(column, row);
     return filterImportance(viewIndex, texel, kSharpRadius) +
            kWideWeight * filterImportance(viewIndex, texel, kWideRadius);
@@ -80,12 +80,16 @@ void main() {
     GpuLightView view = lightViews[viewIndex];
     GpuLight light = lights[view.info.x];
     uint first = viewIndex * kImportanceTexels + row * kImportanceSize;
+    // Each texel's base and importance, computed once (the filters read 194 hits a texel).
+    float base[kImportanceSize];
+    float importance[kImportanceSize];
     float rowBase = 0.0;
     float rowWeighted = 0.0;
     for (uint c = 0u; c < kImportanceSize; ++c) {
-        float base = computeBase(view, light, c, row);
-        rowBase += base;
-        rowWeighted += base * getImportance(viewIndex, c, row);
+        base[c] = computeBase(view, light, c, row);
+        importance[c] = getImportance(viewIndex, c, row);
+        rowBase += base[c];
+        rowWeighted += base[c] * importance[c];
     }
     sRowBase[row] = rowBase;
     sRowWeighted[row] = rowWeighted;
@@ -105,8 +109,7 @@ void main() {
     float rowMass = baseScale * rowBase + weightedScale * rowWeighted;
     float running = 0.0;
     for (uint c = 0u; c < kImportanceSize; ++c) {
-        float base = computeBase(view, light, c, row);
-        float p = base * (baseScale + weightedScale * getImportance(viewIndex, c, row));
+        float p = base[c] * (baseScale + weightedScale * importance[c]);
         // The texel's probability (the view's sum to 1), shown relative to a uniform map.
         float relative = p * float(kImportanceTexels);
         imageStore(uPdfMap, ivec3(c, row, viewIndex), vec4(vec3(relative), 1.0));

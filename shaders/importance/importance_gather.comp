@@ -60,9 +60,8 @@ void main() {
     uvec2 cell = uvec2(index % grid.x, index / grid.x);
     uint rng = seedRandom(index, 0u, params.counts.w);
     vec2 jitter = vec2(nextRandom(rng, kRngPcg), nextRandom(rng, kRngPcg));
-    vec2 imageSize = frame.imageSize.xy;
-    ivec2 pixel = ivec2((vec2(cell) + jitter) * imageSize / vec2(grid));
-    pixel = clamp(pixel, ivec2(0), ivec2(imageSize) - 1);
+    vec2 sizePx = frame.imageSize.xy;
+    ivec2 pixel = clamp(ivec2((vec2(cell) + jitter) * sizePx / vec2(grid)), ivec2(0), ivec2(sizePx) - 1);
     vec4 position = texelFetch(uPosition, pixel, 0);
     if (position.w < 0.5) return;
     vec3 n = normalize(texelFetch(uNormal, pixel, 0).xyz);
@@ -70,9 +69,10 @@ void main() {
 
     // One bounce towards the surfaces that light this one.
     vec3 dir = sampleCosine(n, nextRandom(rng, kRngPcg), nextRandom(rng, kRngPcg));
+    vec3 origin = position.xyz + n * params.weights.w;
     RayHit hit;
-    if (!traceRay(position.xyz + n * params.weights.w, dir, 3.0e38, hit)) return;
-    vec3 q = position.xyz + n * params.weights.w + dir * hit.t;
+    if (!traceRay(origin, dir, 3.0e38, hit)) return;
+    vec3 q = origin + dir * hit.t;
     vec3 nq = computeHitNormal(hit);
     addLitPoint(q, dot(nq, dir) < 0.0 ? nq : -nq, params.weights.z);
 }

@@ -9,6 +9,7 @@
 //
 // Stage 1 also culls photons whose disc lies outside the view frustum (radius 0: the splat skips
 // them) and casts the in-plane rays that clip each disc (shared/splat_clip.h).
+#include "lib/constants.glsl"
 #include "lib/scene_buffers.glsl"
 #include "lib/bvh.glsl"
 #include "lib/frame_constants.glsl"
@@ -56,8 +57,6 @@ vec2 traceClip(vec3 origin, vec3 t, vec3 b, uint i, float radius) {
     vec3 normal = computeHitNormal(hit);
     return computeClipPole(ray2 * hit.t, vec2(dot(normal, t), dot(normal, b)), ray2);
 }
-
-const float kPi = 3.14159265358979;
 
 // Photons are counted apart by the side they face (the major axis of the normal and its sign):
 // the two faces of a thin wall, or a floor and the wall it meets, do not share a density.
@@ -162,7 +161,6 @@ void main() {
         photons[index].power.w = 0.0;
         return;
     }
-    atomicAdd(counters.densityDispatch.w, 1u); // photons in view, for reports
     countPhoton(unpackLight(photons[index].incoming.w), 2);
     photons[index].power.w = radius;
     vec3 n = photons[index].normalDensity.xyz;

@@ -59,9 +59,7 @@ void main() {
         // Perspective: the image plane at unit distance spans [-t, t]^2, t = tan(fov / 2); the
         // solid angle per unit of the view's square is (2t)^2 / (1 + x^2 + y^2)^(3/2).
         float t = 0.5 * view.axisTexel.w * float(uResolution);
-        vec2 p = (uv * 2.0 - 1.0) * t;
-        float r2 = 1.0 + dot(p, p);
-        float solidAngle = 4.0 * t * t / (r2 * sqrt(r2)) * share;
+        float solidAngle = 4.0 * t * t * computePlaneSolidAngleDensity((uv * 2.0 - 1.0) * t) * share;
         vec3 toSurface = position.xyz - view.originAxis.xyz;
         travelled = length(toSurface);
         dir = toSurface / travelled;

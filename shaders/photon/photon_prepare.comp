@@ -21,7 +21,6 @@ void main() {
     }
     uint stored = min(counters.result.x, counters.result.y);
     counters.splatDraw = uvec4(kSplatCubeVertices, stored, 0u, 0u);
-    // w counts the photons whose splat the view can show (photon_density.comp).
     counters.densityDispatch = uvec4((stored + kTraceGroupSize - 1u) / kTraceGroupSize, 1u, 1u, 0u);
     for (uint p = 0u; p < uSplatPasses; ++p) {
         uint begin = stored * p / uSplatPasses;

@@ -39,6 +39,14 @@ ISPM_INLINE vec2 computeGridJitter(uint view, uint frameSeed) {
     return vec2(x, nextRandom(state, kRngPcg));
 }
 
+// Solid angle per unit area of a perspective light view's image plane (at unit distance from
+// the eye) at plane point p: 1 / (1 + |p|^2)^(3/2). Emission (photon power) and the importance
+// tables (each texel's share of the light's power) both integrate it.
+ISPM_INLINE float computePlaneSolidAngleDensity(vec2 p) {
+    float r2 = 1.0f + dot(p, p);
+    return 1.0f / (r2 * sqrt(r2));
+}
+
 // Parameters of the importance passes (std140 uniform block).
 struct ImportanceParams {
     uvec4 counts;   // x = gather samples across, y = down, z = light view count, w = frame seed

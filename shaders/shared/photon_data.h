@@ -41,8 +41,7 @@ struct PhotonCounters {
                          // z = overflow (appends dropped), w = bounce capacity
     uvec4 traceDispatch; // glDispatchComputeIndirect arguments (x, y, z)
     uvec4 splatDraw;     // glDrawArraysIndirect: count, instanceCount, first, baseInstance
-    uvec4 densityDispatch; // glDispatchComputeIndirect over the stored result photons (xyz);
-                           // w = photons whose splat lies in the view frustum (density radii)
+    uvec4 densityDispatch; // glDispatchComputeIndirect over the stored result photons (xyz)
 };
 ISPM_STATIC_ASSERT_SIZE(PhotonCounters, 80);
 

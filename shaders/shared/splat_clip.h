@@ -9,6 +9,7 @@
 #define ISPM_SPLAT_CLIP_H
 
 #include "host_device.h"
+#include "photon_scatter.h"
 
 ISPM_NAMESPACE_BEGIN
 
@@ -38,7 +39,7 @@ ISPM_INLINE void buildSplatBasis(vec3 n, ISPM_OUT(vec3) t, ISPM_OUT(vec3) b) {
 
 // Direction of clip ray i in the plane's (t, b) coordinates.
 ISPM_INLINE vec2 getClipDirection(uint i) {
-    const float kStep = 6.28318530717958f / float(kClipRays);
+    const float kStep = kTwoPiF / float(kClipRays);
     return vec2(cos(kStep * float(i)), sin(kStep * float(i)));
 }
 

@@ -29,7 +29,7 @@ void main() {
     if (uSplatShape.y > 0.5 && gl_FrontFacing) discard; // splat_faces = all
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec4 position = texelFetch(uPosition, pixel, 0);
-    if (position.w < 0.5 || !(vRadius > 0.0)) discard;
+    if (position.w < 0.5) discard;
     ResultPhoton photon = photons[vPhoton];
     vec3 pn = photon.normalDensity.xyz;
     vec3 n = texelFetch(uNormal, pixel, 0).xyz;

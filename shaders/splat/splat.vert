@@ -33,7 +33,8 @@ void main() {
     // basis axes (a box scene's walls); a photon culled by the density pass (radius 0, its clip
     // data not written) collapses to a point and draws nothing.
     vec4 extent = vec4(radius); // along +t, -t, +b, -b
-    vClipped = uSplatShape.w > 0.5 && radius > 0.0 ? 1u : 0u;
+    // Density radii come with clip lines (the density pass); travel radii without.
+    vClipped = getRadiusMode() == kRadiusDensity && radius > 0.0 ? 1u : 0u;
     if (vClipped == 1u) extent = splatClip[id * kClipVec4s + kClipRays / 2u];
     vec3 c = vec3((gl_VertexID & 1) != 0 ? 1.0 : -1.0, (gl_VertexID & 2) != 0 ? 1.0 : -1.0,
                   (gl_VertexID & 4) != 0 ? 1.0 : -1.0);

@@ -4,10 +4,12 @@
 // smaller, never below radius_min. density: the radius the density pass gave the photon.
 layout(location = 1) uniform vec4 uRadius;     // x = radius_min, y = radius_max, z = dist_min, w = dist_max
 layout(location = 2) uniform vec4 uSplatShape; // x = mode (kRadius*), y = faces (0 back, 1 all),
-                                               // z = squash, w = 1: clip distances are valid
+                                               // z = squash
+
+uint getRadiusMode() { return uint(uSplatShape.x + 0.5); }
 
 float computeSplatRadius(ResultPhoton photon) {
-    uint mode = uint(uSplatShape.x + 0.5);
+    uint mode = getRadiusMode();
     if (mode == kRadiusDensity) return photon.power.w;
     float travelled = photon.positionDistance.w;
     float s = clamp((travelled - uRadius.z) / max(uRadius.w - uRadius.z, 1e-9), 0.0, 1.0);

@@ -1,0 +1,40 @@
+// The enumerated settings' choices, in table order, are the uint constants the shaders compare
+// against (shared/*.h): a choice added or moved in one place and not the other fails here.
+#include "scene/settings.h"
+
+#include <shared/photon_data.h>
+#include <shared/photon_scatter.h>
+#include <shared/scene_data.h>
+
+#include <gtest/gtest.h>
+
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace ispm::test {
+namespace {
+
+void expectChoices(std::string_view setting,
+                   const std::vector<std::pair<std::string_view, uint32_t>>& expected) {
+    const SettingDesc* desc = findSetting(setting);
+    ASSERT_NE(desc, nullptr) << setting;
+    ASSERT_EQ(desc->choices.size(), expected.size()) << setting;
+    for (const auto& [name, index] : expected) {
+        ASSERT_LT(index, desc->choices.size()) << setting << " " << name;
+        EXPECT_EQ(desc->choices[index], name) << setting;
+    }
+}
+
+TEST(SettingsEnums, ChoicesMatchTheShaderConstants) {
+    expectChoices("radius_mode", {{"travel", gpu::kRadiusTravel},
+                                  {"path_density", gpu::kRadiusPathDensity},
+                                  {"density", gpu::kRadiusDensity}});
+    expectChoices("rng", {{"pcg", gpu::kRngPcg}, {"lcg", gpu::kRngLcg}});
+    expectChoices("tonemap", {{"thesis", gpu::kTonemapThesis},
+                              {"filmic", gpu::kTonemapFilmic},
+                              {"linear", gpu::kTonemapLinear}});
+}
+
+} // namespace
+} // namespace ispm::test
