@@ -48,14 +48,15 @@ bool isOutsideView(vec3 centre, float radius) {
     return false;
 }
 
-// The clip line of the surface that ray i meets within `radius` (its pole), or (0, 0).
-vec2 traceClip(vec3 origin, vec3 t, vec3 b, uint i, float radius) {
+// The clip line of the surface that ray i meets within `radius` (its pole) and the distance to
+// it along the ray, or ((0, 0), radius) when it meets none.
+vec3 traceClip(vec3 origin, vec3 t, vec3 b, uint i, float radius) {
     vec2 ray2 = getClipDirection(i);
     vec3 dir = t * ray2.x + b * ray2.y;
     RayHit hit;
-    if (!traceRay(origin, dir, radius, hit)) return vec2(0.0);
+    if (!traceRay(origin, dir, radius, hit)) return vec3(0.0, 0.0, radius);
     vec3 normal = computeHitNormal(hit);
-    return computeClipPole(ray2 * hit.t, vec2(dot(normal, t), dot(normal, b)), ray2);
+    return vec3(computeClipPole(ray2 * hit.t, vec2(dot(normal, t), dot(normal, b)), ray2), hit.t);
 }
 
 // Photons are counted apart by the side they face (the major axis of the normal and its sign):
@@ -167,14 +168,21 @@ void main() {
     vec3 t;
     vec3 b;
     buildSplatBasis(n, t, b);
-    vec3 origin = p + n * max(4.0 * uEpsilonM, kClipLift * radius);
-    vec2 poles[kClipRays];
+    // Rays above the surface find the walls it meets (concave edges); rays just beneath it, inside
+    // the solid it bounds, find where it ends (convex edges: a wall's end, a door jamb, a roof's
+    // rim), beyond which the disc would fall into the air. Per direction the nearer line counts.
     // Rays only where some triangle's bounds reach the square they sweep (most photons lie in
     // the open, one box query instead of kClipRays rays).
+    vec3 above = p + n * max(4.0 * uEpsilonM, kClipLift * radius);
+    vec3 beneath = p - n * (4.0 * uEpsilonM);
     vec3 sweep = (abs(t) + abs(b)) * radius;
-    bool nearSurface = overlapsTriangles(origin - sweep, origin + sweep);
+    bool nearAbove = overlapsTriangles(above - sweep, above + sweep);
+    bool nearBeneath = overlapsTriangles(beneath - sweep, beneath + sweep);
+    vec2 poles[kClipRays];
     for (uint i = 0u; i < kClipRays; ++i) {
-        poles[i] = nearSurface ? traceClip(origin, t, b, i, radius) : vec2(0.0);
+        vec3 wall = nearAbove ? traceClip(above, t, b, i, radius) : vec3(0.0, 0.0, radius);
+        vec3 end = nearBeneath ? traceClip(beneath, t, b, i, wall.z) : vec3(0.0, 0.0, radius);
+        poles[i] = end.z < wall.z ? end.xy : wall.xy;
     }
     removeRepeatedLines(poles, radius);
     for (uint i = 0u; i < kClipRays / 2u; ++i) {

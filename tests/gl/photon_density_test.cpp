@@ -6,6 +6,7 @@
 
 #include "render/frame.h"
 #include "render/photon_density_pass.h"
+#include "scene/mesh_builder.h"
 
 #include <shared/photon_data.h>
 #include <shared/splat_clip.h>
@@ -138,6 +139,37 @@ TEST_F(PhotonDensityTest, StrongPhotonSpreadsWider) {
     EXPECT_GT(ratio, 3.0f);
 }
 
+// The distance to the nearest line any of photon i's rays found (0 when none did).
+float findNearestLine(const DensityRun& run, size_t i) {
+    float nearest = 0.0f;
+    for (uint32_t k = 0; k < gpu::kClipRays; ++k) {
+        const glm::vec4 two = run.clip[i * gpu::kClipVec4s + k / 2];
+        const float c = glm::length(k % 2 == 0 ? glm::vec2(two.x, two.y) : glm::vec2(two.z, two.w));
+        if (c > 0.0f) nearest = nearest > 0.0f ? std::min(nearest, c) : c;
+    }
+    return nearest;
+}
+
+// Photons on y = 0, x in [-0.8, 0.2), whose discs reach x = 0.2 get a line there, 0.2 - x away;
+// the others none. Returns how many reached it.
+int expectLineAtXPointTwo(const DensityRun& run) {
+    int checked = 0;
+    for (size_t i = 0; i < run.photons.size(); ++i) {
+        const float x = run.photons[i].positionDistance.x;
+        const float r = run.photons[i].power.w;
+        if (std::abs(run.photons[i].positionDistance.z) > 0.3f || r <= 0.0f) continue;
+        const float nearest = findNearestLine(run, i);
+        if (0.2f - x < r) {
+            ++checked;
+            // The line lies 0.2 - x away, to 1 mm (the hit's round-off).
+            EXPECT_NEAR(nearest, 0.2f - x, 1e-3f) << "photon at x = " << x;
+        } else {
+            EXPECT_EQ(nearest, 0.0f) << "nothing within reach, nothing clipped";
+        }
+    }
+    return checked;
+}
+
 TEST_F(PhotonDensityTest, WallClipsDiscsAndViewCullsPhotons) {
     // A wall x = 0.2 (both faces) on the floor: photons on the floor left of it reach it.
     Scene scene = makeFloorScene();
@@ -154,30 +186,23 @@ TEST_F(PhotonDensityTest, WallClipsDiscsAndViewCullsPhotons) {
     behind.positionDistance = glm::vec4(0.0f, 0.0f, 40.0f, 1.0f); // far outside the view
     photons.push_back(behind);
     const DensityRun run = runDensity(scene, photons);
-    int clipped = 0;
-    int checked = 0;
-    for (size_t i = 0; i + 1 < photons.size(); ++i) {
-        const float x = run.photons[i].positionDistance.x;
-        const float r = run.photons[i].power.w;
-        if (std::abs(run.photons[i].positionDistance.z) > 0.3f || r <= 0.0f) continue;
-        // The nearest line any ray found (0 when none did).
-        float nearest = 0.0f;
-        for (uint32_t k = 0; k < gpu::kClipRays; ++k) {
-            const glm::vec4 two = run.clip[i * gpu::kClipVec4s + k / 2];
-            const float c = glm::length(k % 2 == 0 ? glm::vec2(two.x, two.y) : glm::vec2(two.z, two.w));
-            if (c > 0.0f) nearest = nearest > 0.0f ? std::min(nearest, c) : c;
-        }
-        if (0.2f - x < r) {
-            ++checked;
-            // The wall's line lies 0.2 - x away, to 1 mm (the hit's round-off).
-            if (std::abs(nearest - (0.2f - x)) < 1e-3f) ++clipped;
-        } else {
-            EXPECT_EQ(nearest, 0.0f) << "nothing within reach, nothing clipped";
-        }
-    }
-    EXPECT_GT(checked, 20);
-    EXPECT_EQ(clipped, checked);
+    EXPECT_GT(expectLineAtXPointTwo(run), 20);
     EXPECT_EQ(run.photons.back().power.w, 0.0f) << "a photon outside the view is culled";
+}
+
+TEST_F(PhotonDensityTest, SurfaceEndClipsDiscsLikeAWall) {
+    // The floor is now the top of a slab that ends at x = 0.2 (a convex edge: a step down, a
+    // wall's end, a door jamb). Discs that reach past it would fall into the air and lose that
+    // part of their power; the rays beneath the surface find the end and clip there.
+    Scene scene = makeFloorScene();
+    Mesh slab;
+    slab.name = "slab";
+    appendBox(slab, {-1.0f, -0.1f, -1.0f}, {0.2f, 0.0f, 1.0f}, 0);
+    scene.meshes[0] = slab;
+    std::vector<gpu::ResultPhoton> photons;
+    addSquare(photons, -0.8f, -0.5f, 1.0f, 40, 5u);
+    const DensityRun run = runDensity(scene, photons);
+    EXPECT_GT(expectLineAtXPointTwo(run), 20);
 }
 
 } // namespace
