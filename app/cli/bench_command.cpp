@@ -46,13 +46,14 @@ struct PresetSetting {
 
 // The thesis benchmark: McLaughlin's box city at 1280x1024 with 50k photons and three bounces,
 // rendered the thesis's way: a uniform grid per light view (no importance), splat radii from
-// travel distance, no filter after the splats.
+// travel distance, splats at full resolution, no filter after them.
 constexpr const char* kThesisPresetName = "thesis";
 constexpr const char* kThesisScene = "scenes/box_city.json"; // under ISPM_ASSET_DIR
+constexpr double kSplatFullResolution = 1; // splat_resolution's choice "1"
 constexpr PresetSetting kThesisSettings[] = {
     {"width", 1280},  {"height", 1024},    {"photons", 50000},
     {"bounces", 3},   {"importance", 0},   {"radius_mode", gpu::kRadiusTravel},
-    {"denoise", 0}};
+    {"denoise", 0},   {"splat_resolution", kSplatFullResolution}};
 
 // Preset settings that name no entry in the settings table (yet) are skipped and reported, so the
 // preset keeps its meaning as the photon pipeline's settings arrive.

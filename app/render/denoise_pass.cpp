@@ -3,6 +3,7 @@
 
 #include "gl/gl.h"
 #include "gl/state.h"
+#include "render/splat_pass.h"
 #include "scene/settings.h"
 
 #include <shared/scene_data.h>
@@ -39,12 +40,12 @@ DenoisePass::DenoisePass(const GBuffer& viewer, const gl::Texture& indirect)
       mTargets({ColorTarget("indirect (denoised)", gl::Format::RGBA32F),
                 ColorTarget("denoise intermediate", gl::Format::RGBA32F)}) {}
 
-void DenoisePass::resize(int width, int height) {
-    for (ColorTarget& target : mTargets) target.resize(width, height);
-}
-
 void DenoisePass::execute(const FrameInputs& inputs) {
-    const int iterations = computeDenoiseIterations(inputs.settings, inputs.width, inputs.height);
+    const int width = mIndirect.getWidth();
+    const int height = mIndirect.getHeight();
+    for (ColorTarget& target : mTargets) target.resize(width, height);
+    const int iterations = computeDenoiseIterations(inputs.settings, width, height);
+    const int divisor = computeSplatDivisor(inputs.settings, inputs.width, inputs.height);
     if (iterations == 0) {
         mTargets[kOutput].getTexture().copyFrom(mIndirect); // the splats as they are
         return;
@@ -60,7 +61,7 @@ void DenoisePass::execute(const FrameInputs& inputs) {
         const size_t target = (iterations - 1 - i) % 2 == 0 ? kOutput : 1 - kOutput;
         mTargets[target].bind();
         source->bindUnit(gpu::kUnitFilterSource);
-        glUniform4i(kLocationIteration, 1 << i, i == 0 ? 1 : 0, last ? 1 : 0, 0);
+        glUniform4i(kLocationIteration, 1 << i, i == 0 ? 1 : 0, last ? 1 : 0, divisor);
         drawFullscreenTriangle();
         source = &mTargets[target].getTexture();
     }

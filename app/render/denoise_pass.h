@@ -1,6 +1,6 @@
 // DenoisePass: the splats' indirect light through `denoise` iterations of an edge-aware a-trous
-// filter (steps 1, 2, 4, ... pixels) guided by the viewer G-buffer; 0 passes it through. Its
-// output is the frame's indirect AOV.
+// filter (steps 1, 2, 4, ... pixels of the splat buffer) guided by the viewer G-buffer; 0 passes
+// it through. It works at the splat buffer's resolution; UpsamplePass follows.
 #pragma once
 
 #include "render/fullscreen.h"
@@ -11,14 +11,15 @@
 
 namespace ispm {
 
-// `denoise` when set, else log2(min(width, height) / 32) (at least 0).
+// `denoise` when set, else log2(min(width, height) / 32) (at least 0, at most 3) for a splat
+// buffer of width x height.
 int computeDenoiseIterations(const Settings& settings, int width, int height);
 
 class DenoisePass final : public Pass {
 public:
     DenoisePass(const GBuffer& viewer, const gl::Texture& indirect);
     const char* getName() const override { return "denoise"; }
-    void resize(int width, int height) override;
+    // The targets follow the splat buffer's size at each execute.
     void execute(const FrameInputs& inputs) override;
     void reloadPrograms(ShaderReloadReport& report) override { mProgram.reloadIfChanged(report); }
     const gl::Texture& getOutput() const { return mTargets[kOutput].getTexture(); }

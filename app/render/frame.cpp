@@ -44,16 +44,17 @@ FrameRunner::FrameRunner(const Scene& scene, const Settings& settings, gl::Timin
     mSplat = std::make_unique<SplatPass>(mGBuffer->getGBuffer(), mPhotonBuffers, mDensity->getClip());
     mDenoise = std::make_unique<DenoisePass>(mGBuffer->getGBuffer(), mSplat->getOutput());
     mDirect = std::make_unique<DirectPass>(mGBuffer->getGBuffer(), mLightViews->getGBuffer());
+    mUpsample = std::make_unique<UpsamplePass>(mGBuffer->getGBuffer(), mDenoise->getOutput());
     mCompose = std::make_unique<ComposePass>(mGBuffer->getGBuffer(), mDirect->getOutput(),
-                                             mDenoise->getOutput());
+                                             mUpsample->getOutput());
     mTonemap = std::make_unique<TonemapPass>(mCompose->getOutput());
     resizePasses();
 }
 
-std::array<Pass*, 11> FrameRunner::getPasses() const {
+std::array<Pass*, 12> FrameRunner::getPasses() const {
     return {mGBuffer.get(), mLightViews.get(), mImportance.get(), mEmit.get(),
             mDirect.get(),  mTrace.get(),      mDensity.get(),    mSplat.get(),
-            mDenoise.get(), mCompose.get(),    mTonemap.get()};
+            mDenoise.get(), mUpsample.get(),   mCompose.get(),    mTonemap.get()};
 }
 
 void FrameRunner::resizePasses() {
@@ -142,9 +143,10 @@ void FrameRunner::renderFrame() {
         runPass(*mSplat, inputs);
     } else {
         // bounces = 0 or no photons: the image is direct light only.
-        mSplat->clear();
+        mSplat->clear(inputs);
     }
     runPass(*mDenoise, inputs);
+    runPass(*mUpsample, inputs);
     runPass(*mCompose, inputs);
     runPass(*mTonemap, inputs);
     mTimings.clear();
@@ -163,7 +165,7 @@ PhotonCounts FrameRunner::readPhotonCounts() const {
 const gl::Texture& FrameRunner::getAov(Aov aov) const {
     switch (aov) {
     case Aov::Direct: return mDirect->getOutput();
-    case Aov::Indirect: return mDenoise->getOutput();
+    case Aov::Indirect: return mUpsample->getOutput();
     case Aov::Total: return mCompose->getOutput();
     case Aov::Display: return mTonemap->getOutput();
     }
@@ -173,13 +175,17 @@ const gl::Texture& FrameRunner::getAov(Aov aov) const {
 size_t FrameRunner::getGpuBytes() const {
     constexpr size_t kBytesRgba32F = 16;
     constexpr size_t kBytesRgba8 = 4;
-    constexpr size_t kFullResolutionRgba32F = 5; // direct, indirect, total, denoise x 2
+    constexpr size_t kFullResolutionRgba32F = 3; // direct, indirect, total
+    // Splat buffer and the filter's two targets, at splat_resolution.
+    constexpr size_t kSplatResolutionRgba32F = 3;
+    const glm::ivec2 splat = computeSplatSize(mSettings, mWidth, mHeight);
     const size_t pixels = static_cast<size_t>(mWidth) * static_cast<size_t>(mHeight);
     return mGpuScene.getGpuBytes() + mPhotonBuffers.getGpuBytes() + mImportance->getGpuBytes() +
            mDensity->getGpuBytes() +
            mGBuffer->getGBuffer().getGpuBytes() +
            mLightViews->getGBuffer().getGpuBytes() +
-           pixels * (kFullResolutionRgba32F * kBytesRgba32F + kBytesRgba8);
+           pixels * (kFullResolutionRgba32F * kBytesRgba32F + kBytesRgba8) +
+           size_t(splat.x) * size_t(splat.y) * kSplatResolutionRgba32F * kBytesRgba32F;
 }
 
 } // namespace ispm

@@ -6,6 +6,7 @@
 #include "render/gbuffer_pass.h"
 #include "render/gpu_scene.h"
 #include "render/denoise_pass.h"
+#include "render/upsample_pass.h"
 #include "render/importance_pass.h"
 #include "render/photon_density_pass.h"
 #include "render/photon_emit_pass.h"
@@ -79,7 +80,7 @@ private:
     void resizePasses();
     void updateFrameConstants();
     // Every pass in frame order, for resize and shader reload.
-    std::array<Pass*, 11> getPasses() const;
+    std::array<Pass*, 12> getPasses() const;
     void runPass(Pass& pass, const FrameInputs& inputs);
 
     const Scene& mScene;
@@ -100,6 +101,7 @@ private:
     std::unique_ptr<PhotonDensityPass> mDensity;
     std::unique_ptr<SplatPass> mSplat;
     std::unique_ptr<DenoisePass> mDenoise;
+    std::unique_ptr<UpsamplePass> mUpsample;
     std::unique_ptr<DirectPass> mDirect;
     std::unique_ptr<ComposePass> mCompose;
     std::unique_ptr<TonemapPass> mTonemap;

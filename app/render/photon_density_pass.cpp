@@ -28,6 +28,7 @@ constexpr GLint kLocationRadiusScale = 3;
 constexpr GLint kLocationEpsilon = 4;
 constexpr GLuint kStageCount = 0;
 constexpr GLuint kStageRadius = 1;
+constexpr GLuint kStageClip = 2;
 
 // Photons a splat disc holds by default: enough that one photon's noise averages out over its
 // neighbours' (relative noise ~ 1 / sqrt(k)), few enough to keep detail and the splat's cost,
@@ -69,13 +70,15 @@ PhotonDensityPass::PhotonDensityPass(PhotonBuffers& buffers)
 
 void PhotonDensityPass::execute(const FrameInputs& inputs) {
     const uint32_t slots = std::bit_ceil(std::max(mBuffers.getResultCapacity(), 1u) * kSlotsPerPhoton);
-    if (slots != mSlots) {
-        mCells = gl::Buffer("photon density cells", size_t(slots) * kUintsPerSlot * sizeof(uint32_t));
-        mSlots = slots;
-    }
+    // The table, then the clip list (a uint per result photon).
+    const size_t cellBytes = (size_t(slots) * kUintsPerSlot + mBuffers.getResultCapacity()) * sizeof(uint32_t);
+    if (cellBytes != mCells.getSize()) mCells = gl::Buffer("photon density cells and clip list", cellBytes);
     const size_t clipBytes = size_t(std::max(mBuffers.getResultCapacity(), 1u)) * gpu::kClipVec4s *
                              sizeof(glm::vec4);
     if (mClip.getSize() != clipBytes) mClip = gl::Buffer("splat clip distances", clipBytes);
+    // The list starts empty; stage 1 grows its dispatch (x) and count (w).
+    const glm::uvec4 emptyList(0u, 1u, 1u, 0u);
+    mBuffers.getCounters().upload(offsetof(gpu::PhotonCounters, clipDispatch), sizeof(emptyList), &emptyList);
     mCells.clearToZero();
     const int neighbours = computeSplatNeighbours(inputs.settings);
     const float scale = inputs.settings.getFloat("radius_scale");
@@ -102,6 +105,10 @@ void PhotonDensityPass::execute(const FrameInputs& inputs) {
     gl::memoryBarrier(gl::Barrier::Storage);
     glUniform1ui(kLocationStage, kStageRadius);
     gl::dispatchComputeIndirect(mBuffers.getCounters(), dispatchOffset);
+    gl::memoryBarrier(gl::Barrier::Storage);
+    gl::memoryBarrier(gl::Barrier::Command);
+    glUniform1ui(kLocationStage, kStageClip);
+    gl::dispatchComputeIndirect(mBuffers.getCounters(), offsetof(gpu::PhotonCounters, clipDispatch));
     // The splat's vertex stage reads the radii.
     gl::memoryBarrier(gl::Barrier::Storage);
 }

@@ -32,7 +32,6 @@ private:
     ReloadableProgram mProgram;
     gl::Buffer mCells;
     gl::Buffer mClip;
-    uint32_t mSlots = 0;
 };
 
 } // namespace ispm

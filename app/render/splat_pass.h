@@ -1,6 +1,8 @@
 // SplatPass: every result photon is drawn as an instanced box squashed along its normal; the
 // fragment stage adds BRDF x power x kernel to the indirect-light buffer (additive RGBA32F).
 // The draw count comes from the GPU (glDrawArraysIndirect), split into `splat_passes` calls.
+// The buffer may be smaller than the image (`splat_resolution`): each of its pixels then shades
+// one viewer G-buffer pixel of the block it covers, and UpsamplePass brings it back.
 #pragma once
 
 #include "render/gbuffer.h"
@@ -23,18 +25,27 @@ struct SplatRadii {
 // `surfaceAreaM2` and `diagonalM` describe the scene (GpuScene keeps both up to date).
 SplatRadii computeSplatRadii(double surfaceAreaM2, float diagonalM, const Settings& settings);
 
+// Image pixels per splat-buffer pixel along each axis (1, 2 or 4): `splat_resolution`, where
+// auto is 2 from 256 px on (min(width, height)), else 1.
+int computeSplatDivisor(const Settings& settings, int width, int height);
+// The splat buffer's size for an image of width x height: divided, rounded up.
+glm::ivec2 computeSplatSize(const Settings& settings, int width, int height);
+
 class SplatPass final : public Pass {
 public:
     // `clip`: the density pass's clip distances, used when radius_mode is density.
     SplatPass(const GBuffer& viewer, const PhotonBuffers& buffers, const gl::Buffer& clip);
     const char* getName() const override { return "splat"; }
-    void resize(int width, int height) override;
+    // The buffer follows the image size and `splat_resolution` at each execute.
     void execute(const FrameInputs& inputs) override;
     void reloadPrograms(ShaderReloadReport& report) override { mProgram.reloadIfChanged(report); }
     const gl::Texture& getOutput() const { return mIndirect; }
-    void clear() const { mFramebuffer.clearColor(0, glm::vec4(0.0f)); }
+    // No photons this frame: the buffer, sized as execute would, holds no light.
+    void clear(const FrameInputs& inputs);
 
 private:
+    void resizeBuffer(int width, int height);
+
     const GBuffer& mViewer;
     const PhotonBuffers& mBuffers;
     const gl::Buffer& mClip;

@@ -75,10 +75,16 @@ const std::vector<SettingDesc>& table() {
          "splat ellipsoid thickness along the surface normal, as a fraction of its radius", {}},
         {"splat_passes", SettingType::Int, 1, 1, 64, "",
          "number of draw calls the splats are split into", {}},
+        {"splat_resolution", SettingType::Enum, 0, 0, 3, "",
+         "resolution of the splat buffer against the image: 1, 1/2 or 1/4, upsampled by a "
+         "joint-bilateral filter on the viewer G-buffer (normals, planes, reflectance); auto: "
+         "1/2 from 256 px on (min(width, height)), else 1",
+         {"auto", "1", "1/2", "1/4"}},
         {"denoise", SettingType::Int, 0, 0, 8, "",
          "iterations of an edge-aware a-trous filter on the indirect light (steps of 1, 2, 4 ... "
-         "pixels, guided by normals and planes of the viewer G-buffer); 0 = the splats as they "
-         "are; derived: log2(min(width, height) / 32), at most 3 (3 from 256 px on)",
+         "pixels of the splat buffer, guided by normals and planes of the viewer G-buffer); 0 = "
+         "the splats as they are; derived: log2(min(w, h) / 32) of the splat buffer's size, at "
+         "most 3 (2 at 256 px with the splats at 1/2)",
          {}, true},
         {"splat_faces", SettingType::Enum, 0, 0, 1, "",
          "back: the rasteriser culls the boxes' front faces (the thesis's choice); all: every face "

@@ -130,8 +130,8 @@ vec3 computeHitNormal(RayHit hit) {
     return normalize(transpose(mat3(instances[hit.instance].objectFromWorld)) * n);
 }
 
-// Whether the bounds of any triangle overlap the world-space box [loW, hiW] (conservative: a
-// triangle's bounds, not the triangle). Stops at the first one.
+// Whether any triangle's bounds and plane both overlap the world-space box [loW, hiW]
+// (conservative: a triangle's bounds and plane, not the triangle). Stops at the first one.
 bool overlapsBox(vec3 aLo, vec3 aHi, vec3 bLo, vec3 bHi) {
     return all(lessThanEqual(aLo, bHi)) && all(lessThanEqual(bLo, aHi));
 }
@@ -163,7 +163,12 @@ bool overlapsInstanceTriangles(uint instanceIndex, vec3 loW, vec3 hiW) {
                 vec3 p0 = positions[t.x].xyz;
                 vec3 p1 = positions[t.y].xyz;
                 vec3 p2 = positions[t.z].xyz;
-                if (overlapsBox(lo, hi, min(p0, min(p1, p2)), max(p0, max(p1, p2)))) return true;
+                if (!overlapsBox(lo, hi, min(p0, min(p1, p2)), max(p0, max(p1, p2)))) continue;
+                // The triangle's plane must cross the box too (a slanted triangle's bounds
+                // reach far from it).
+                vec3 normal = cross(p1 - p0, p2 - p0);
+                vec3 centre = 0.5 * (lo + hi);
+                if (abs(dot(normal, centre - p0)) <= dot(abs(normal), 0.5 * (hi - lo))) return true;
             }
         } else if (top + 2 <= kBvhStackSize) {
             stack[top++] = a;

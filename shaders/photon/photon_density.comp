@@ -8,7 +8,10 @@
 // wider instead of making a bright spot. Times radius_scale, clamped.
 //
 // Stage 1 also culls photons whose disc lies outside the view frustum (radius 0: the splat skips
-// them) and casts the in-plane rays that clip each disc (shared/splat_clip.h).
+// them) and lists those whose disc may meet a surface; stage 2 casts, for the listed photons
+// only, the in-plane rays that clip each disc (shared/splat_clip.h). Listing first keeps the
+// rays' lanes busy: photons near walls are scattered through the buffer, and a group whose one
+// photon casts rays would otherwise wait for it.
 #include "lib/constants.glsl"
 #include "lib/scene_buffers.glsl"
 #include "lib/bvh.glsl"
@@ -23,10 +26,12 @@ layout(local_size_x = kTraceGroupSize) in;
 layout(std430, binding = kBindingResultPhotons) buffer ResultBuffer { ResultPhoton photons[]; };
 layout(std430, binding = kBindingPhotonCounters) buffer CounterBuffer { PhotonCounters counters; };
 layout(std430, binding = kBindingSplatClip) writeonly buffer SplatClip { vec4 splatClip[]; };
-// Slot s: key at 4s (0 = empty), photon count at 4s + 1, power (float bits) at 4s + 2.
+// Slot s: key at 4s (0 = empty), photon count at 4s + 1, power (float bits) at 4s + 2. After the
+// slots, the clip list: per entry a photon index, bit 30 set when triangles above the surface
+// are near, bit 31 when triangles beneath it are.
 layout(std430, binding = kBindingDensityCells) buffer DensityCells { uint cells[]; };
 
-layout(location = 0) uniform uint uStage;     // 0: count, 1: radii
+layout(location = 0) uniform uint uStage;     // 0: count, 1: radii and the clip list, 2: clip rays
 layout(location = 1) uniform vec4 uGrid;      // x = finest cell (m), y = neighbours k,
                                               // z = radius min (m), w = radius max (m)
 layout(location = 2) uniform uint uTableMask; // slots - 1 (a power of two)
@@ -123,8 +128,59 @@ vec2 sumBlock(vec3 p, uint level, uint facing) {
 // The photon's power as one number: the mean over RGB, so saturated colours count.
 float getPhotonPower(uint index) { return max(computeMean(photons[index].power.rgb), 1e-30); }
 
+uint getClipListStart() { return 4u * (uTableMask + 1u); }
+
+const uint kNearAbove = 1u << 30;
+const uint kNearBeneath = 1u << 31;
+
+// Ray origins: above the surface by kClipLift of the radius (at least a few ray epsilons), and
+// just beneath it.
+vec3 getAboveOrigin(vec3 p, vec3 n, float radius) { return p + n * max(4.0 * uEpsilonM, kClipLift * radius); }
+vec3 getBeneathOrigin(vec3 p, vec3 n) { return p - n * (4.0 * uEpsilonM); }
+// Half the box the rays around an origin sweep.
+vec3 getSweep(vec3 n, float radius) {
+    vec3 t;
+    vec3 b;
+    buildSplatBasis(n, t, b);
+    return (abs(t) + abs(b)) * radius;
+}
+
+void writeClip(uint index, vec2 poles[kClipRays], float radius) {
+    for (uint i = 0u; i < kClipRays / 2u; ++i) {
+        splatClip[index * kClipVec4s + i] = vec4(poles[2u * i], poles[2u * i + 1u]);
+    }
+    splatClip[index * kClipVec4s + kClipRays / 2u] = computeClipExtent(poles, radius);
+}
+
+// Rays above the surface find the walls it meets (concave edges); rays just beneath it, inside
+// the solid it bounds, find where it ends (convex edges: a wall's end, a door jamb, a roof's
+// rim), beyond which the disc would fall into the air. Per direction the nearer line counts.
+void castClipRays(uint entry) {
+    uint index = entry & ~(kNearAbove | kNearBeneath);
+    vec3 p = photons[index].positionDistance.xyz;
+    vec3 n = photons[index].normalDensity.xyz;
+    float radius = photons[index].power.w;
+    vec3 t;
+    vec3 b;
+    buildSplatBasis(n, t, b);
+    vec3 above = getAboveOrigin(p, n, radius);
+    vec3 beneath = getBeneathOrigin(p, n);
+    vec2 poles[kClipRays];
+    for (uint i = 0u; i < kClipRays; ++i) {
+        vec3 wall = (entry & kNearAbove) != 0u ? traceClip(above, t, b, i, radius) : vec3(0.0, 0.0, radius);
+        vec3 end = (entry & kNearBeneath) != 0u ? traceClip(beneath, t, b, i, wall.z) : vec3(0.0, 0.0, radius);
+        poles[i] = end.z < wall.z ? end.xy : wall.xy;
+    }
+    removeRepeatedLines(poles, radius);
+    writeClip(index, poles, radius);
+}
+
 void main() {
     uint index = gl_GlobalInvocationID.x;
+    if (uStage == 2u) {
+        if (index < counters.clipDispatch.w) castClipRays(cells[getClipListStart() + index]);
+        return;
+    }
     if (index >= counters.splatDraw.y) return;
     vec3 p = photons[index].positionDistance.xyz;
     float power = getPhotonPower(index);
@@ -164,29 +220,21 @@ void main() {
     }
     countPhoton(unpackLight(photons[index].incoming.w), 2);
     photons[index].power.w = radius;
+    // The rays can only meet triangles whose bounds reach the square they sweep: one box query
+    // per side (most photons lie in the open: none), and the photon goes on the list for stage 2.
     vec3 n = photons[index].normalDensity.xyz;
-    vec3 t;
-    vec3 b;
-    buildSplatBasis(n, t, b);
-    // Rays above the surface find the walls it meets (concave edges); rays just beneath it, inside
-    // the solid it bounds, find where it ends (convex edges: a wall's end, a door jamb, a roof's
-    // rim), beyond which the disc would fall into the air. Per direction the nearer line counts.
-    // Rays only where some triangle's bounds reach the square they sweep (most photons lie in
-    // the open, one box query instead of kClipRays rays).
-    vec3 above = p + n * max(4.0 * uEpsilonM, kClipLift * radius);
-    vec3 beneath = p - n * (4.0 * uEpsilonM);
-    vec3 sweep = (abs(t) + abs(b)) * radius;
-    bool nearAbove = overlapsTriangles(above - sweep, above + sweep);
-    bool nearBeneath = overlapsTriangles(beneath - sweep, beneath + sweep);
-    vec2 poles[kClipRays];
-    for (uint i = 0u; i < kClipRays; ++i) {
-        vec3 wall = nearAbove ? traceClip(above, t, b, i, radius) : vec3(0.0, 0.0, radius);
-        vec3 end = nearBeneath ? traceClip(beneath, t, b, i, wall.z) : vec3(0.0, 0.0, radius);
-        poles[i] = end.z < wall.z ? end.xy : wall.xy;
+    vec3 sweep = getSweep(n, radius);
+    vec3 above = getAboveOrigin(p, n, radius);
+    vec3 beneath = getBeneathOrigin(p, n);
+    uint near = (overlapsTriangles(above - sweep, above + sweep) ? kNearAbove : 0u) |
+                (overlapsTriangles(beneath - sweep, beneath + sweep) ? kNearBeneath : 0u);
+    if (near != 0u) {
+        uint slot = atomicAdd(counters.clipDispatch.w, 1u);
+        if (slot % kTraceGroupSize == 0u) atomicAdd(counters.clipDispatch.x, 1u);
+        cells[getClipListStart() + slot] = index | near;
+        return;
     }
-    removeRepeatedLines(poles, radius);
-    for (uint i = 0u; i < kClipRays / 2u; ++i) {
-        splatClip[index * kClipVec4s + i] = vec4(poles[2u * i], poles[2u * i + 1u]);
-    }
-    splatClip[index * kClipVec4s + kClipRays / 2u] = computeClipExtent(poles, radius);
+    vec2 none[kClipRays];
+    for (uint i = 0u; i < kClipRays; ++i) none[i] = vec2(0.0);
+    writeClip(index, none, radius);
 }

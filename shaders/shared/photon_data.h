@@ -42,8 +42,10 @@ struct PhotonCounters {
     uvec4 traceDispatch; // glDispatchComputeIndirect arguments (x, y, z)
     uvec4 splatDraw;     // glDrawArraysIndirect: count, instanceCount, first, baseInstance
     uvec4 densityDispatch; // glDispatchComputeIndirect over the stored result photons (xyz)
+    uvec4 clipDispatch;    // glDispatchComputeIndirect over the photons whose discs may meet a
+                           // surface (xyz), w = their count (photon_density.comp)
 };
-ISPM_STATIC_ASSERT_SIZE(PhotonCounters, 80);
+ISPM_STATIC_ASSERT_SIZE(PhotonCounters, 96);
 
 ISPM_CONST uint kTraceGroupSize = 64u;
 ISPM_CONST uint kMaxSplatPasses = 64u;
@@ -61,7 +63,8 @@ ISPM_CONST int kBindingSplatDraws = 14; // indexed draw commands, kSplatDrawUvec
 ISPM_CONST int kBindingLightCounts = 19;  // uvec4 per light (LightPhotonCounters)
 ISPM_CONST int kBindingEmissionGrids = 20; // uvec4 per grid: first photon, view, 0, 0
 ISPM_CONST uint kReflectionBits = 8u;      // ResultPhoton.incoming.w: reflections, then light
-ISPM_CONST int kBindingDensityCells = 17; // photon_density.comp's hashed grid: 4 uints a slot
+ISPM_CONST int kBindingDensityCells = 17; // photon_density.comp's hashed grid (4 uints a slot),
+                                          // then its clip list (a uint per result photon)
 
 // Splat radius modes (setting radius_mode, checked against the table in splat_pass.cpp).
 ISPM_CONST uint kRadiusTravel = 0u;

@@ -10,6 +10,7 @@
 
 layout(std430, binding = kBindingResultPhotons) readonly buffer ResultBuffer { ResultPhoton photons[]; };
 layout(location = 2) uniform vec4 uSplatShape; // y = 1: drop front faces here; z = squash
+layout(location = 3) uniform int uDivisor;     // image pixels per buffer pixel along an axis
 
 layout(binding = kUnitGBufferFirst + GBUFFER_POSITION) uniform sampler2D uPosition;
 layout(binding = kUnitGBufferFirst + GBUFFER_NORMAL) uniform sampler2D uNormal;
@@ -27,7 +28,8 @@ layout(location = 0) out vec4 outRadiance;
 
 void main() {
     if (uSplatShape.y > 0.5 && gl_FrontFacing) discard; // splat_faces = all
-    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    // A buffer smaller than the image shades the G-buffer pixel at the middle of its block.
+    ivec2 pixel = min(ivec2(gl_FragCoord.xy) * uDivisor + uDivisor / 2, ivec2(frame.imageSize.xy) - 1);
     vec4 position = texelFetch(uPosition, pixel, 0);
     if (position.w < 0.5) discard;
     ResultPhoton photon = photons[vPhoton];

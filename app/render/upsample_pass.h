@@ -1,0 +1,32 @@
+// UpsamplePass: the filtered indirect light from the splat buffer (`splat_resolution` 1/2, 1/4)
+// back to the image's resolution by a joint-bilateral filter on the viewer G-buffer: each pixel
+// weighs the buffer pixels around it by distance, by how far their surface turns from its own and
+// by how far their point lies off its plane, so edges stay sharp; the light is divided by the
+// reflectance where it was splatted and multiplied by the pixel's own. At full resolution it
+// passes the light through. Its output is the frame's indirect AOV.
+#pragma once
+
+#include "render/fullscreen.h"
+#include "render/gbuffer.h"
+#include "render/pass.h"
+
+namespace ispm {
+
+class UpsamplePass final : public Pass {
+public:
+    UpsamplePass(const GBuffer& viewer, const gl::Texture& filtered);
+    const char* getName() const override { return "upsample"; }
+    void resize(int width, int height) override { mTarget.resize(width, height); }
+    void execute(const FrameInputs& inputs) override;
+    void reloadPrograms(ShaderReloadReport& report) override { mProgram.reloadIfChanged(report); }
+    const gl::Texture& getOutput() const { return mTarget.getTexture(); }
+
+private:
+    const GBuffer& mViewer;
+    const gl::Texture& mFiltered;
+    ReloadableProgram mProgram;
+    gl::VertexArray mVertexArray;
+    ColorTarget mTarget;
+};
+
+} // namespace ispm
