@@ -134,7 +134,8 @@ TEST_F(BenchTest, PresetAppliesOnlyKnownSettings) {
     EXPECT_NE(std::find(applied.begin(), applied.end(), "radius_mode=travel"), applied.end())
         << j.dump();
     // Every preset setting is either applied or reported as skipped.
-    EXPECT_EQ(applied.size() + skipped.size(), 7u) << j.dump();
+    EXPECT_EQ(applied.size() + skipped.size(), 8u) << j.dump();
+    EXPECT_NE(std::find(applied.begin(), applied.end(), "splat_resolution=1"), applied.end()) << j.dump();
 }
 
 TEST_F(BenchTest, AnimateTimesTheSceneUpdateFirst) {
