@@ -10,7 +10,7 @@
 #include "gl/debug.h"
 #include "gl/state.h"
 #include "render/frame.h"
-#include "scene/input_error.h"
+#include "core/input_error.h"
 #include "scene/scene_loader.h"
 
 #include <shared/photon_data.h>

@@ -13,7 +13,7 @@
 #include "image/metrics.h"
 #include "render/readback.h"
 #include "render/reference_pass.h"
-#include "scene/input_error.h"
+#include "core/input_error.h"
 
 #include <unistd.h>
 

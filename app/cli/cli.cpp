@@ -11,7 +11,7 @@
 #include "gl/gl.h"
 #include "image/image_io.h"
 #include "image/metrics.h"
-#include "scene/input_error.h"
+#include "core/input_error.h"
 #include "scene/scene_loader.h"
 #include "scene/settings.h"
 

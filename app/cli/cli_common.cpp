@@ -3,7 +3,7 @@
 
 #include "core/strings.h"
 #include "gl/debug.h"
-#include "scene/input_error.h"
+#include "core/input_error.h"
 
 #include <CLI/CLI.hpp>
 

@@ -9,7 +9,7 @@
 #include "render/frame.h"
 #include "render/readback.h"
 #include "render/reference_pass.h"
-#include "scene/input_error.h"
+#include "core/input_error.h"
 #include "scene/scene_loader.h"
 
 #include <CLI/CLI.hpp>

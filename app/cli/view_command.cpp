@@ -5,7 +5,7 @@
 #include "cli/cli_common.h"
 #include "core/strings.h"
 #include "image/image_io.h"
-#include "scene/input_error.h"
+#include "core/input_error.h"
 #include "scene/scene_loader.h"
 #include "viewer/viewer.h"
 

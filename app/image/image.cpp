@@ -3,7 +3,7 @@
 #include "image/image.h"
 
 #include "core/strings.h"
-#include "scene/input_error.h"
+#include "core/input_error.h"
 
 namespace ispm {
 

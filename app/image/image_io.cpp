@@ -5,7 +5,7 @@
 
 #include "core/strings.h"
 #include "image/pfm.h"
-#include "scene/input_error.h"
+#include "core/input_error.h"
 
 #include <stb_image.h>
 #include <stb_image_write.h>

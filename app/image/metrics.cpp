@@ -4,7 +4,7 @@
 #include "image/metrics.h"
 
 #include "core/strings.h"
-#include "scene/input_error.h"
+#include "core/input_error.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 // The `animation` key of objects and lights (docs/scene-format.md, "Animation"): checked as
 // strictly as the rest of the file, and a motion that could not change anything (a sun moved
 // along a line, a point light turned about itself) is an error rather than silently ignored.
-#include "scene/input_error.h"
+#include "core/input_error.h"
 #include "scene/scene_parse.h"
 
 namespace ispm {

@@ -3,7 +3,7 @@
 #include "scene/json_reader.h"
 
 #include "core/strings.h"
-#include "scene/input_error.h"
+#include "core/input_error.h"
 
 #include <array>
 #include <charconv>

@@ -3,7 +3,7 @@
 #include "scene/scene_loader.h"
 
 #include "core/strings.h"
-#include "scene/input_error.h"
+#include "core/input_error.h"
 #include "scene/scene_parse.h"
 
 #include <cmath>

@@ -3,7 +3,7 @@
 #include "core/strings.h"
 #include "scene/box_city.h"
 #include "scene/cornell_box.h"
-#include "scene/input_error.h"
+#include "core/input_error.h"
 #include "scene/mesh_builder.h"
 #include "scene/obj_io.h"
 #include "scene/scene_parse.h"

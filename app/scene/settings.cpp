@@ -2,7 +2,7 @@
 #include "scene/settings.h"
 
 #include "core/strings.h"
-#include "scene/input_error.h"
+#include "core/input_error.h"
 
 #include <algorithm>
 #include <array>

@@ -2,7 +2,7 @@
 #include "viewer/input_script.h"
 
 #include "core/strings.h"
-#include "scene/input_error.h"
+#include "core/input_error.h"
 
 #include <cctype>
 #include <fstream>

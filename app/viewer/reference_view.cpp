@@ -9,7 +9,7 @@
 #include "image/metrics.h"
 #include "render/fullscreen.h"
 #include "render/readback.h"
-#include "scene/input_error.h"
+#include "core/input_error.h"
 
 #include <imgui.h>
 

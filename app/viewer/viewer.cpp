@@ -11,7 +11,7 @@
 #include "image/image_io.h"
 #include "render/frame.h"
 #include "render/readback.h"
-#include "scene/input_error.h"
+#include "core/input_error.h"
 #include "scene/scene_loader.h"
 #include "viewer/animation_panel.h"
 #include "viewer/debug_view.h"

@@ -2,7 +2,7 @@
 // has it, PNG quantisation, and user-facing errors that name the file.
 #include "image/image_io.h"
 #include "image/pfm.h"
-#include "scene/input_error.h"
+#include "core/input_error.h"
 
 #include <gtest/gtest.h>
 

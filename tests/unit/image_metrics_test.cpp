@@ -2,7 +2,7 @@
 // (identity, monotonic in noise, exposure independence), masks, mean ratio and size errors.
 #include "image/image_diff.h"
 #include "image/metrics.h"
-#include "scene/input_error.h"
+#include "core/input_error.h"
 
 #include <glm/vector_relational.hpp>
 #include <gtest/gtest.h>

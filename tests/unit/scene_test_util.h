@@ -2,7 +2,7 @@
 // into it, so the loader is exercised through its real entry point, loadScene.
 #pragma once
 
-#include "scene/input_error.h"
+#include "core/input_error.h"
 #include "scene/scene_loader.h"
 
 #include <gtest/gtest.h>

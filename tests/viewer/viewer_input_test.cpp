@@ -1,6 +1,6 @@
 // The viewer's pure parts (no window): script parsing and replay, the fly camera, the saved
 // render block. They run in the same binary as the window tests, under xvfb-run.
-#include "scene/input_error.h"
+#include "core/input_error.h"
 #include "scene/settings.h"
 #include "viewer/fly_camera.h"
 #include "viewer/input_script.h"

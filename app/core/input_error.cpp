@@ -1,6 +1,6 @@
 // One-line user-input errors: "file: /json/path: expected ...". Newlines from nested messages
 // (tinyobjloader, nlohmann) are folded so the CLI can print the error on a single line.
-#include "scene/input_error.h"
+#include "core/input_error.h"
 
 namespace ispm {
 
