@@ -293,6 +293,12 @@ uint64_t Query::getResult() const {
     return value;
 }
 
+bool Query::isResultAvailable() const {
+    GLuint available = GL_FALSE;
+    glGetQueryObjectuiv(getId(), GL_QUERY_RESULT_AVAILABLE, &available);
+    return available == GL_TRUE;
+}
+
 void Query::writeResultTo(const Buffer& buffer, size_t offsetBytes) const {
     glGetQueryBufferObjectuiv(getId(), buffer.getId(), GL_QUERY_RESULT,
                               static_cast<GLintptr>(offsetBytes));

@@ -181,6 +181,7 @@ public:
     void begin() const;
     void end() const;
     uint64_t getResult() const; // waits for the result
+    bool isResultAvailable() const; // without waiting
     // Writes the 32-bit result into `buffer` at offsetBytes on the GPU (ARB_query_buffer_object).
     void writeResultTo(const Buffer& buffer, size_t offsetBytes) const;
     GLuint getId() const { return mHandle.get(); }

@@ -27,12 +27,12 @@ void PassTimer::begin(const std::string& name) {
         glFinish();
         pending.start = std::chrono::steady_clock::now();
     }
-    mPending.push_back(std::move(pending));
+    mCurrent.push_back(std::move(pending));
 }
 
 void PassTimer::end() {
-    assert(!mPending.empty());
-    Pending& pending = mPending.back();
+    assert(!mCurrent.empty());
+    Pending& pending = mCurrent.back();
     if (mMethod == TimingMethod::TimerQuery) {
         pending.query.end();
     } else {
@@ -42,18 +42,64 @@ void PassTimer::end() {
     }
 }
 
-std::vector<PassTimer::Sample> PassTimer::collect() {
+void PassTimer::endFrame() {
+    if (mCurrent.empty()) return;
+    mInFlight.push_back(std::move(mCurrent));
+    mCurrent.clear();
+    while (mInFlight.size() > kMaxFramesInFlight) {
+        recycle(mInFlight.front());
+        mInFlight.pop_front();
+    }
+}
+
+bool PassTimer::isAvailable(const Frame& frame) const {
+    if (mMethod == TimingMethod::CpuFinish) return true;
+    for (const Pending& pending : frame) {
+        if (!pending.query.isResultAvailable()) return false;
+    }
+    return true;
+}
+
+std::vector<PassTimer::Sample> PassTimer::read(Frame& frame) {
     constexpr double kNanosecondsPerMillisecond = 1e6;
     std::vector<Sample> samples;
-    for (Pending& pending : mPending) {
+    for (Pending& pending : frame) {
         double ms = pending.ms;
         if (mMethod == TimingMethod::TimerQuery) {
             ms = static_cast<double>(pending.query.getResult()) / kNanosecondsPerMillisecond;
-            mFreeQueries.push_back(std::move(pending.query));
         }
         samples.push_back({pending.name, ms});
     }
-    mPending.clear();
+    recycle(frame);
+    return samples;
+}
+
+void PassTimer::recycle(Frame& frame) {
+    for (Pending& pending : frame) {
+        if (pending.query.getId() != 0) mFreeQueries.push_back(std::move(pending.query));
+    }
+    frame.clear();
+}
+
+std::optional<std::vector<PassTimer::Sample>> PassTimer::collect() {
+    endFrame();
+    // The newest finished frame wins; it and everything older leave the queue.
+    for (size_t i = mInFlight.size(); i-- > 0;) {
+        if (!isAvailable(mInFlight[i])) continue;
+        std::vector<Sample> samples = read(mInFlight[i]);
+        for (size_t j = 0; j < i; ++j) recycle(mInFlight[j]);
+        mInFlight.erase(mInFlight.begin(), mInFlight.begin() + static_cast<std::ptrdiff_t>(i) + 1);
+        return samples;
+    }
+    return std::nullopt;
+}
+
+std::optional<std::vector<PassTimer::Sample>> PassTimer::collectLatest() {
+    endFrame();
+    if (mInFlight.empty()) return std::nullopt;
+    std::vector<Sample> samples = read(mInFlight.back()); // getResult waits
+    for (Frame& frame : mInFlight) recycle(frame);
+    mInFlight.clear();
     return samples;
 }
 

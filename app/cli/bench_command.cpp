@@ -381,6 +381,7 @@ int runBench(const BenchOptions& options) {
     for (int i = 0; i < options.frames; ++i) {
         const double updateMs = advance();
         runner.renderFrame();
+        runner.waitForTimings(); // this frame's, not an earlier one's
         addFrameTimes(runner, times);
         if (options.animate) addSceneUpdateTime(updateMs, times);
     }

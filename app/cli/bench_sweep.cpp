@@ -219,6 +219,7 @@ IspmResult measureConfiguration(FrameRunner& runner, const Configuration& config
     FrameTimes times;
     for (int i = 0; i < frames; ++i) {
         runner.renderFrame();
+        runner.waitForTimings(); // this frame's, not an earlier one's
         addFrameTimes(runner, times);
         progress.advance(step);
     }

@@ -127,6 +127,7 @@ int runRender(const RenderOptions& options) {
     // second, which is what every later frame costs.
     runner.renderFrame();
     runner.renderFrame();
+    runner.waitForTimings(); // one frame to report: the frame is over, waiting costs nothing
     const Image image = readTextureImage(runner.getAov(kind == OutputKind::Png ? Aov::Display : aov));
     writeImage(options.outputPath, image);
     if (!options.quiet) {

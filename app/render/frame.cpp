@@ -149,8 +149,16 @@ void FrameRunner::renderFrame() {
     runPass(*mUpsample, inputs);
     runPass(*mCompose, inputs);
     runPass(*mTonemap, inputs);
+    if (auto samples = mTimer.collect()) setTimings(*samples);
+}
+
+void FrameRunner::waitForTimings() {
+    if (auto samples = mTimer.collectLatest()) setTimings(*samples);
+}
+
+void FrameRunner::setTimings(const std::vector<gl::PassTimer::Sample>& samples) {
     mTimings.clear();
-    for (const gl::PassTimer::Sample& s : mTimer.collect()) mTimings.push_back({s.name, s.ms});
+    for (const gl::PassTimer::Sample& s : samples) mTimings.push_back({s.name, s.ms});
 }
 
 bool FrameRunner::hasIndirect() const {

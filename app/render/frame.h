@@ -52,7 +52,11 @@ public:
     const Scene& getScene() const { return mScene; }
     // F5: rebuilds the passes' programs whose source files changed; failures keep the old ones.
     ShaderReloadReport reloadShaders();
+    // Pass times of the newest frame whose timer results are in, read without waiting: with
+    // timer queries (a GPU) a frame or a few behind the last renderFrame(); with the CPU clock
+    // (llvmpipe) the last frame's. waitForTimings() waits for the last frame's (bench, render).
     const std::vector<PassTiming>& getLastTimings() const { return mTimings; }
+    void waitForTimings();
     gl::TimingMethod getTimingMethod() const { return mTimer.getMethod(); }
 
     // Linear radiance (Direct, Indirect, Total) or display values (Display), row 0 at the bottom.
@@ -87,6 +91,8 @@ private:
     Settings mSettings;
     int mWidth;
     int mHeight;
+    void setTimings(const std::vector<gl::PassTimer::Sample>& samples);
+
     gl::PassTimer mTimer;
     std::vector<PassTiming> mTimings;
     GpuScene mGpuScene;
