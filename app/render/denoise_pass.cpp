@@ -3,32 +3,15 @@
 
 #include "gl/gl.h"
 #include "gl/state.h"
-#include "render/splat_pass.h"
-#include "scene/settings.h"
 
 #include <shared/scene_data.h>
-
-#include <algorithm>
-#include <cmath>
 
 namespace ispm {
 namespace {
 
 constexpr GLint kLocationIteration = 0; // shaders/denoise/atrous.frag
-// Image size whose derived filter is one iteration wide (steps of 1 pixel, +-2 pixels): at
-// 256 px three iterations reach +-14 pixels, about 5% of the image, where the splats' noise is.
-constexpr double kPixelsPerIteration = 32.0;
-// At most three derived iterations: each costs 25 taps a pixel (1.2 s at 1280x1024 for five on
-// llvmpipe); larger images keep the filter's reach in pixels, not in image fractions.
-constexpr int kMaxDerivedIterations = 3;
 
 } // namespace
-
-int computeDenoiseIterations(const Settings& settings, int width, int height) {
-    if (settings.isSet("denoise")) return settings.getInt("denoise");
-    const double iterations = std::log2(double(std::min(width, height)) / kPixelsPerIteration);
-    return std::clamp(int(std::lround(iterations)), 0, kMaxDerivedIterations);
-}
 
 DenoisePass::DenoisePass(const GBuffer& viewer, const gl::Texture& indirect)
     : mViewer(viewer), mIndirect(indirect),
@@ -44,8 +27,8 @@ void DenoisePass::execute(const FrameInputs& inputs) {
     const int width = mIndirect.getWidth();
     const int height = mIndirect.getHeight();
     for (ColorTarget& target : mTargets) target.resize(width, height);
-    const int iterations = computeDenoiseIterations(inputs.settings, width, height);
-    const int divisor = computeSplatDivisor(inputs.settings, inputs.width, inputs.height);
+    const int iterations = inputs.settings.denoiseIterations;
+    const int divisor = inputs.settings.splatDivisor;
     if (iterations == 0) {
         mTargets[kOutput].getTexture().copyFrom(mIndirect); // the splats as they are
         return;

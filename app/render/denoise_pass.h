@@ -11,10 +11,6 @@
 
 namespace ispm {
 
-// `denoise` when set, else log2(min(width, height) / 32) (at least 0, at most 3) for a splat
-// buffer of width x height.
-int computeDenoiseIterations(const Settings& settings, int width, int height);
-
 class DenoisePass final : public Pass {
 public:
     DenoisePass(const GBuffer& viewer, const gl::Texture& indirect);

@@ -30,9 +30,9 @@ void computeCameraRange(const Camera& camera, const Aabb& bounds, float& nearM, 
 }
 
 FrameRunner::FrameRunner(const Scene& scene, const Settings& settings, gl::TimingMethod timing)
-    : mScene(scene), mSettings(settings), mWidth(settings.getInt("width")),
-      mHeight(settings.getInt("height")), mTimer(timing),
-      mGpuScene(scene, settings.getInt("shadow_map_size")),
+    : mScene(scene), mSettings(settings), mFrameSettings(resolveFrameSettings(settings)),
+      mWidth(mFrameSettings.width), mHeight(mFrameSettings.height), mTimer(timing),
+      mGpuScene(scene, mFrameSettings.shadowMapSize),
       mFrameConstants("frame constants", sizeof(gpu::FrameConstants)) {
     mGBuffer = std::make_unique<GBufferPass>();
     mLightViews = std::make_unique<LightViewPass>();
@@ -68,22 +68,23 @@ ShaderReloadReport FrameRunner::reloadShaders() {
 }
 
 void FrameRunner::setSettings(const Settings& settings) {
-    const int lightResolution = settings.getInt("shadow_map_size");
     mSettings = settings;
+    mFrameSettings = resolveFrameSettings(settings);
+    const int lightResolution = mFrameSettings.shadowMapSize;
     if (lightResolution != mGpuScene.getLightResolution()) {
         // The light cameras' resolution is baked into the uploaded scene; the light G-buffer
         // follows it on its next execute.
         mGpuScene = GpuScene(mScene, lightResolution);
     }
-    if (settings.getInt("width") != mWidth || settings.getInt("height") != mHeight) {
-        mWidth = settings.getInt("width");
-        mHeight = settings.getInt("height");
+    if (mFrameSettings.width != mWidth || mFrameSettings.height != mHeight) {
+        mWidth = mFrameSettings.width;
+        mHeight = mFrameSettings.height;
         resizePasses();
     }
 }
 
 gpu::FrameConstants computeFrameConstants(const Scene& scene, const GpuScene& gpuScene,
-                                          const Settings& settings, int width, int height) {
+                                          const FrameSettings& settings, int width, int height) {
     const Camera& cam = scene.camera;
     float nearM = 0.0f;
     float farM = 0.0f;
@@ -98,19 +99,16 @@ gpu::FrameConstants computeFrameConstants(const Scene& scene, const GpuScene& gp
                              1.0f / static_cast<float>(height));
     fc.counts = glm::uvec4(gpuScene.getLightCount(),
                            static_cast<uint32_t>(gpuScene.getLightCameras().size()),
-                           static_cast<uint32_t>(settings.getInt("seed")), 0u);
-    fc.shadow = glm::vec4(settings.getFloat("shadow_bias"),
+                           settings.seed, settings.toneMap);
+    fc.shadow = glm::vec4(settings.shadowBiasTexels,
                           static_cast<float>(gpuScene.getLightResolution()), 0.0f, 0.0f);
-    const float tonemapIndex = static_cast<float>(settings.get("tonemap"));
-    fc.tonemap = glm::vec4(tonemapIndex, std::exp2(settings.getFloat("exposure")),
-                           1.0f / settings.getFloat("gamma"),
-                           settings.isSet("luminance_max") ? settings.getFloat("luminance_max")
-                                                           : 0.0f);
+    fc.tonemap = glm::vec4(0.0f, std::exp2(settings.exposureStops), 1.0f / settings.gamma,
+                           settings.luminanceMax.value_or(0.0f));
     return fc;
 }
 
 void FrameRunner::updateFrameConstants() {
-    const gpu::FrameConstants fc = computeFrameConstants(mScene, mGpuScene, mSettings, mWidth, mHeight);
+    const gpu::FrameConstants fc = computeFrameConstants(mScene, mGpuScene, mFrameSettings, mWidth, mHeight);
     mClipFromWorld = fc.clipFromWorld;
     mFrameConstants.upload(0, sizeof(fc), &fc);
 }
@@ -123,8 +121,8 @@ void FrameRunner::runPass(Pass& pass, const FrameInputs& inputs) {
 }
 
 FrameInputs FrameRunner::getFrameInputs() const {
-    return {mScene,         mGpuScene,          mSettings, mFrameConstants,
-            mClipFromWorld, mScene.camera.position, mWidth,    mHeight};
+    return {mScene,         mGpuScene,          mFrameSettings, mFrameConstants,
+            mClipFromWorld, mScene.camera.position, mWidth,         mHeight};
 }
 
 void FrameRunner::renderFrame() {
@@ -139,7 +137,7 @@ void FrameRunner::renderFrame() {
     runPass(*mDirect, inputs);
     if (hasIndirect()) {
         runPass(*mTrace, inputs);
-        if (uint32_t(mSettings.get("radius_mode")) == gpu::kRadiusDensity) runPass(*mDensity, inputs);
+        if (mFrameSettings.radiusMode == gpu::kRadiusDensity) runPass(*mDensity, inputs);
         runPass(*mSplat, inputs);
     } else {
         // bounces = 0 or no photons: the image is direct light only.
@@ -162,7 +160,7 @@ void FrameRunner::setTimings(const std::vector<gl::PassTimer::Sample>& samples) 
 }
 
 bool FrameRunner::hasIndirect() const {
-    return mSettings.getInt("bounces") > 0 && mSettings.getInt("photons") > 0;
+    return mFrameSettings.hasIndirect();
 }
 
 PhotonCounts FrameRunner::readPhotonCounts() const {
@@ -186,7 +184,7 @@ size_t FrameRunner::getGpuBytes() const {
     constexpr size_t kFullResolutionRgba32F = 3; // direct, indirect, total
     // Splat buffer and the filter's two targets, at splat_resolution.
     constexpr size_t kSplatResolutionRgba32F = 3;
-    const glm::ivec2 splat = computeSplatSize(mSettings, mWidth, mHeight);
+    const glm::ivec2 splat = mFrameSettings.splatSize;
     const size_t pixels = static_cast<size_t>(mWidth) * static_cast<size_t>(mHeight);
     return mGpuScene.getGpuBytes() + mPhotonBuffers.getGpuBytes() + mImportance->getGpuBytes() +
            mDensity->getGpuBytes() +

@@ -89,6 +89,7 @@ private:
 
     const Scene& mScene;
     Settings mSettings;
+    FrameSettings mFrameSettings; // mSettings resolved
     int mWidth;
     int mHeight;
     void setTimings(const std::vector<gl::PassTimer::Sample>& samples);
@@ -119,6 +120,6 @@ void computeCameraRange(const Camera& camera, const Aabb& bounds, float& nearM, 
 // The per-frame constants of the scene's camera at width x height (shared by the photon mapper
 // and the reference path tracer, so both see the same camera).
 gpu::FrameConstants computeFrameConstants(const Scene& scene, const GpuScene& gpuScene,
-                                          const Settings& settings, int width, int height);
+                                          const FrameSettings& settings, int width, int height);
 
 } // namespace ispm

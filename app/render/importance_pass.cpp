@@ -48,14 +48,15 @@ void ImportancePass::execute(const FrameInputs& inputs) {
         mViewCount = views;
     }
     // Gather samples on a grid of the image's aspect, at most one per pixel.
-    const double samples = inputs.settings.getInt("importance_samples");
+    const double samples = inputs.settings.importanceSamples;
     const double aspect = double(inputs.width) / double(inputs.height);
     const auto across = uint32_t(std::clamp(std::lround(std::sqrt(samples * aspect)), 1L, long(inputs.width)));
     const auto down = uint32_t(std::clamp(std::lround(samples / across), 1L, long(inputs.height)));
-    // Without gather samples nothing is aimed: the tables follow the light's power alone.
-    const float share = samples > 0.0 ? inputs.settings.getFloat("importance") : 0.0f;
+    // Without gather samples nothing is aimed (FrameSettings: share 0): the tables follow the
+    // light's power alone.
+    const float share = inputs.settings.importance;
     gpu::ImportanceParams params{};
-    params.counts = glm::uvec4(across, down, uint32_t(views), uint32_t(inputs.settings.getInt("seed")));
+    params.counts = glm::uvec4(across, down, uint32_t(views), inputs.settings.seed);
     params.weights = glm::vec4(share, kVisibleWeight, kBounceWeight, inputs.scene.getRayEpsilon());
     mParams.upload(0, sizeof(params), &params);
 

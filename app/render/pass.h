@@ -5,6 +5,7 @@
 
 #include "gl/objects.h"
 #include "render/reloadable_program.h"
+#include "scene/frame_settings.h"
 
 #include <glm/glm.hpp>
 
@@ -12,13 +13,12 @@ namespace ispm {
 
 class GpuScene;
 struct Scene;
-class Settings;
 
 // What a frame hands every pass.
 struct FrameInputs {
     const Scene& model; // the scene model (lights, materials) the GPU scene was made from
     const GpuScene& scene;
-    const Settings& settings;
+    const FrameSettings& settings; // resolved once per settings change
     const gl::Buffer& frameConstants; // gpu::FrameConstants, bound at kBindingFrameConstants
     glm::mat4 clipFromWorld{1.0f};
     glm::vec3 cameraPosition{0.0f};

@@ -4,7 +4,6 @@
 #include "gl/gl.h"
 #include "gl/state.h"
 #include "render/gpu_scene.h"
-#include "scene/settings.h"
 
 #include <shared/photon_data.h>
 #include <shared/scene_data.h>
@@ -30,16 +29,6 @@ constexpr GLuint kStageCount = 0;
 constexpr GLuint kStageRadius = 1;
 constexpr GLuint kStageClip = 2;
 
-// Photons a splat disc holds by default: enough that one photon's noise averages out over its
-// neighbours' (relative noise ~ 1 / sqrt(k)), few enough to keep detail and the splat's cost,
-// which grows with k (every lit pixel is covered by about k discs). k grows with the budget as
-// sqrt(photons), so more photons buy both less noise and sharper light: 25 at 50,000 photons.
-// With the denoise pass after the splats (default 3 iterations) fewer neighbours do as well:
-// measured at 256x256, rel RMSE of Cornell / courtyard outside / room 0.146 / 0.339 / 0.371 at
-// k 16, 0.143 / 0.334 / 0.364 at 24, 0.139 / 0.334 / 0.382 at 45, the splat's cost rising with k.
-constexpr double kNeighboursPerSqrtPhoton = 0.11;
-constexpr int kMinNeighbours = 16;
-constexpr int kMaxNeighbours = 128;
 // Fractions of the evenly-spread radius (computeEvenRadius): the finest cell, the largest radius.
 constexpr float kFinestCellFraction = 1.0f / 16.0f;
 constexpr float kMaxRadiusFactor = 4.0f;
@@ -49,12 +38,6 @@ constexpr uint32_t kSlotsPerPhoton = 8;
 constexpr size_t kUintsPerSlot = 4; // key, count, power, padding (16-byte slots)
 
 } // namespace
-
-int computeSplatNeighbours(const Settings& settings) {
-    if (settings.isSet("splat_neighbours")) return settings.getInt("splat_neighbours");
-    const double k = kNeighboursPerSqrtPhoton * std::sqrt(std::max(settings.get("photons"), 0.0));
-    return std::clamp(int(std::lround(k)), kMinNeighbours, kMaxNeighbours);
-}
 
 float computeEvenRadius(double surfaceAreaM2, int photons, int neighbours) {
     const double evenRadius = std::sqrt(double(neighbours) * surfaceAreaM2 /
@@ -80,13 +63,11 @@ void PhotonDensityPass::execute(const FrameInputs& inputs) {
     const glm::uvec4 emptyList(0u, 1u, 1u, 0u);
     mBuffers.getCounters().upload(offsetof(gpu::PhotonCounters, clipDispatch), sizeof(emptyList), &emptyList);
     mCells.clearToZero();
-    const int neighbours = computeSplatNeighbours(inputs.settings);
-    const float scale = inputs.settings.getFloat("radius_scale");
-    const float radiusMin = inputs.settings.isSet("radius_min") ? inputs.settings.getFloat("radius_min") * scale : 0.0f;
-    const float even = computeEvenRadius(inputs.scene.getSurfaceArea(),
-                                         inputs.settings.getInt("photons"), neighbours);
-    const float radiusMax = (inputs.settings.isSet("radius_max") ? inputs.settings.getFloat("radius_max")
-                                                                 : kMaxRadiusFactor * even) * scale;
+    const int neighbours = inputs.settings.splatNeighbours;
+    const float scale = inputs.settings.radiusScale;
+    const float radiusMin = inputs.settings.radiusMinM.value_or(0.0f) * scale;
+    const float even = computeEvenRadius(inputs.scene.getSurfaceArea(), inputs.settings.photons, neighbours);
+    const float radiusMax = inputs.settings.radiusMaxM.value_or(kMaxRadiusFactor * even) * scale;
     const float cell = kFinestCellFraction * even;
 
     mBuffers.bind();

@@ -9,8 +9,6 @@
 
 namespace ispm {
 
-// The neighbour count k when `splat_neighbours` is not set.
-int computeSplatNeighbours(const Settings& settings);
 // The radius of a disc holding k photons if all `photons` were spread evenly over the scene's
 // surface. The finest grid cell is a sixteenth of it, so that photons aimed at a small part of
 // the scene still find their level; radii stop at 4 times it (radius_max's derived value), so a

@@ -43,9 +43,9 @@ PhotonEmitPass::PhotonEmitPass(const GBuffer& lightGBuffer, const gl::Buffer& im
 void PhotonEmitPass::execute(const FrameInputs& inputs) {
     const GpuScene& scene = inputs.scene;
     mGrids = computeEmissionGrids(inputs.model, scene.getLightCameras(), scene.getLightResolution(),
-                                  static_cast<uint32_t>(inputs.settings.getInt("photons")));
+                                  static_cast<uint32_t>(inputs.settings.photons));
     const uint32_t photons = countPhotons(mGrids);
-    const auto bounces = static_cast<uint32_t>(inputs.settings.getInt("bounces"));
+    const auto bounces = static_cast<uint32_t>(inputs.settings.bounces);
     mBuffers.reserve(std::max(photons, 1u), std::max(photons * bounces, 1u));
     std::vector<glm::uvec4> gridTable;
     mGridLights.clear();
@@ -65,9 +65,7 @@ void PhotonEmitPass::execute(const FrameInputs& inputs) {
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
     mLightGBuffer.bindTextures(gpu::kUnitLightGBufferFirst);
     mImportanceCdf.bindBase(gl::BufferTarget::Storage, gpu::kBindingImportanceCdf);
-    const glm::uvec2 seedMode(static_cast<uint32_t>(inputs.settings.getInt("seed")),
-                              static_cast<uint32_t>(inputs.settings.get("rng")));
-    glUniform2ui(kLocationSeedMode, seedMode.x, seedMode.y);
+    glUniform2ui(kLocationSeedMode, inputs.settings.seed, inputs.settings.rng);
     glUniform1i(kLocationResolution, scene.getLightResolution());
     mFeedback.attachBuffer(0, mBuffers.getBounce(), 0, mBuffers.getBounce().getSize());
     mWritten.begin();

@@ -41,16 +41,15 @@ void PhotonTracePass::execute(const FrameInputs& inputs) {
     gl::memoryBarrier(gl::Barrier::Command | gl::Barrier::Storage);
 
     mTrace.use();
-    glUniform4ui(kLocationParams, static_cast<GLuint>(inputs.settings.getInt("bounces")),
-                 static_cast<GLuint>(inputs.settings.getInt("seed")),
-                 static_cast<GLuint>(inputs.settings.get("rng")), 0u);
+    glUniform4ui(kLocationParams, static_cast<GLuint>(inputs.settings.bounces), inputs.settings.seed,
+                 inputs.settings.rng, 0u);
     glUniform1f(kLocationEpsilon, inputs.scene.getRayEpsilon());
     gl::dispatchComputeIndirect(mBuffers.getCounters(), offsetof(gpu::PhotonCounters, traceDispatch));
     gl::memoryBarrier(gl::Barrier::Storage);
 
     mPrepare.use();
     glUniform1ui(kLocationStage, kStageBeforeSplat);
-    glUniform1ui(kLocationSplatPasses, static_cast<GLuint>(inputs.settings.getInt("splat_passes")));
+    glUniform1ui(kLocationSplatPasses, static_cast<GLuint>(inputs.settings.splatPasses));
     gl::dispatchCompute(1);
     // Result photons feed the splat vertex stage; draw commands feed glDrawArraysIndirect.
     gl::memoryBarrier(gl::Barrier::Command | gl::Barrier::Storage);

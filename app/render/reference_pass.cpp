@@ -24,15 +24,17 @@ constexpr int kUnusedLightResolution = 1;
 } // namespace
 
 ReferencePass::ReferencePass(const Scene& scene, const Settings& settings)
+    : ReferencePass(scene, resolveFrameSettings(settings)) {}
+
+ReferencePass::ReferencePass(const Scene& scene, const FrameSettings& settings)
     : mScene(scene), mGpuScene(scene, kUnusedLightResolution),
       mProgram(gl::Program::build(getShaderRoot(),
                                   {.label = "reference path tracer",
                                    .stages = {{gl::ShaderStage::Compute, "reference/reference.comp"}},
                                    .defines = getGBufferDefines()})),
       mFrameConstants("reference frame constants", sizeof(gpu::FrameConstants)),
-      mWidth(settings.getInt("width")), mHeight(settings.getInt("height")),
-      mBounces(settings.isSet("bounces") ? settings.getInt("bounces") : kReferenceDefaultBounces),
-      mSeed(static_cast<uint32_t>(settings.getInt("seed"))) {
+      mWidth(settings.width), mHeight(settings.height),
+      mBounces(settings.bouncesSet ? settings.bounces : kReferenceDefaultBounces), mSeed(settings.seed) {
     mAccumulation = gl::Texture::create2D("reference accumulation", gl::Format::RGBA32F, mWidth, mHeight);
     mAccumulation.clear(glm::vec4(0.0f));
     const gpu::FrameConstants fc = computeFrameConstants(scene, mGpuScene, settings, mWidth, mHeight);

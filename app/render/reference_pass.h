@@ -7,6 +7,7 @@
 #include "gl/program.h"
 #include "image/image.h"
 #include "render/gpu_scene.h"
+#include "scene/frame_settings.h"
 #include "scene/scene.h"
 
 namespace ispm {
@@ -17,7 +18,8 @@ inline constexpr int kReferenceDefaultBounces = 64;
 
 class ReferencePass {
 public:
-    ReferencePass(const Scene& scene, const Settings& settings);
+    ReferencePass(const Scene& scene, const Settings& settings); // resolves them
+    ReferencePass(const Scene& scene, const FrameSettings& settings);
     void addSample();
     int getSampleCount() const { return mSamples; }
     // Sum of the samples so far (rgb) and their count (a).

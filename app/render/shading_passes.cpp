@@ -50,7 +50,7 @@ void TonemapPass::execute(const FrameInputs& inputs) {
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
     mExposure.bindBase(gl::BufferTarget::Storage, gpu::kBindingExposure);
     mHdr.bindUnit(gpu::kUnitHdr);
-    if (!inputs.settings.isSet("luminance_max")) {
+    if (!inputs.settings.luminanceMax) {
         mExposure.clearToZero();
         mHistogram.use();
         const auto groups = [](int size) {

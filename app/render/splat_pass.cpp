@@ -23,12 +23,7 @@ constexpr GLint kLocationPass = 0;
 constexpr GLint kLocationRadius = 1;
 constexpr GLint kLocationShape = 2;
 constexpr GLint kLocationDivisor = 3;
-
-// splat_resolution auto: half resolution from this image size on. The splat's cost follows its
-// fragments (Cornell box, 50,000 photons: 174 ms at 128 px, 460 at 256, 1,420 at 512 on
-// llvmpipe), and its light varies over several pixels from 256 px on, where the filter and the
-// upsample keep the error at full resolution's (README).
-constexpr int kHalfResolutionFromPx = 256;
+constexpr GLint kLocationModes = 4;
 
 // The unit cube's 12 triangles over its 8 corners (splat.vert: corner i has x from bit 0, y from
 // bit 1, z from bit 2, each -1 or +1), counter-clockwise seen from outside.
@@ -44,18 +39,15 @@ constexpr float kMaxRadiusFactor = 2.0f;
 
 } // namespace
 
-SplatRadii computeSplatRadii(double surfaceAreaM2, float diagonalM, const Settings& settings) {
-    const double photons = std::max(1, settings.getInt("photons"));
+SplatRadii computeSplatRadii(double surfaceAreaM2, float diagonalM, const FrameSettings& settings) {
+    const double photons = std::max(1, settings.photons);
     const auto r0 =
         float(std::sqrt(kSplatOverlap * surfaceAreaM2 / (glm::pi<double>() * photons)));
     SplatRadii r;
-    r.radiusMinM = settings.isSet("radius_min") ? settings.getFloat("radius_min") : kMinRadiusFactor * r0;
-    r.radiusMaxM = settings.isSet("radius_max") ? settings.getFloat("radius_max") : kMaxRadiusFactor * r0;
-    r.distMinM = settings.isSet("dist_min") ? settings.getFloat("dist_min") : 0.0f;
-    r.distMaxM = settings.isSet("dist_max") ? settings.getFloat("dist_max") : diagonalM;
-    const float scale = settings.getFloat("radius_scale");
-    r.radiusMinM *= scale;
-    r.radiusMaxM *= scale;
+    r.radiusMinM = settings.radiusMinM.value_or(kMinRadiusFactor * r0) * settings.radiusScale;
+    r.radiusMaxM = settings.radiusMaxM.value_or(kMaxRadiusFactor * r0) * settings.radiusScale;
+    r.distMinM = settings.distMinM.value_or(0.0f);
+    r.distMaxM = settings.distMaxM.value_or(diagonalM);
     return r;
 }
 
@@ -71,19 +63,6 @@ SplatPass::SplatPass(const GBuffer& viewer, const PhotonBuffers& buffers, const 
     mVertexArray.setElementBuffer(mCubeIndices);
 }
 
-int computeSplatDivisor(const Settings& settings, int width, int height) {
-    const std::string_view choice = settings.getEnum("splat_resolution");
-    if (choice == "1") return 1;
-    if (choice == "1/2") return 2;
-    if (choice == "1/4") return 4;
-    return std::min(width, height) >= kHalfResolutionFromPx ? 2 : 1; // auto
-}
-
-glm::ivec2 computeSplatSize(const Settings& settings, int width, int height) {
-    const int divisor = computeSplatDivisor(settings, width, height);
-    return {(width + divisor - 1) / divisor, (height + divisor - 1) / divisor};
-}
-
 void SplatPass::resizeBuffer(int width, int height) {
     if (mIndirect.getWidth() == width && mIndirect.getHeight() == height) return;
     mIndirect = gl::Texture::create2D("indirect", gl::Format::RGBA32F, width, height);
@@ -94,8 +73,7 @@ void SplatPass::resizeBuffer(int width, int height) {
 }
 
 void SplatPass::clear(const FrameInputs& inputs) {
-    const glm::ivec2 size = computeSplatSize(inputs.settings, inputs.width, inputs.height);
-    resizeBuffer(size.x, size.y);
+    resizeBuffer(inputs.settings.splatSize.x, inputs.settings.splatSize.y);
     mFramebuffer.clearColor(0, glm::vec4(0.0f));
 }
 
@@ -103,7 +81,7 @@ void SplatPass::execute(const FrameInputs& inputs) {
     clear(inputs);
     mFramebuffer.bind();
     // Additive float accumulation; only back faces count, so each box covers a pixel once.
-    const bool cullInRasteriser = inputs.settings.getEnum("splat_faces") == "back";
+    const bool cullInRasteriser = inputs.settings.splatBackFacesOnly;
     gl::applyState({.blend = gl::Blend::Additive,
                     .cull = cullInRasteriser ? gl::Cull::Front : gl::Cull::Off});
     mProgram.use();
@@ -116,11 +94,10 @@ void SplatPass::execute(const FrameInputs& inputs) {
         computeSplatRadii(inputs.scene.getSurfaceArea(),
                           glm::length(inputs.scene.getBounds().getExtent()), inputs.settings);
     glUniform4f(kLocationRadius, r.radiusMinM, r.radiusMaxM, r.distMinM, r.distMaxM);
-    const auto radiusMode = static_cast<uint32_t>(inputs.settings.get("radius_mode"));
-    glUniform4f(kLocationShape, static_cast<float>(radiusMode), cullInRasteriser ? 0.0f : 1.0f,
-                inputs.settings.getFloat("squash"), 0.0f);
-    glUniform1i(kLocationDivisor, computeSplatDivisor(inputs.settings, inputs.width, inputs.height));
-    const auto passes = static_cast<GLuint>(inputs.settings.getInt("splat_passes"));
+    glUniform4f(kLocationShape, 0.0f, 0.0f, inputs.settings.squash, 0.0f);
+    glUniform2ui(kLocationModes, inputs.settings.radiusMode, cullInRasteriser ? 0u : 1u);
+    glUniform1i(kLocationDivisor, inputs.settings.splatDivisor);
+    const auto passes = static_cast<GLuint>(inputs.settings.splatPasses);
     for (GLuint p = 0; p < passes; ++p) {
         glUniform2ui(kLocationPass, p, passes);
         gl::drawElementsIndirect(gl::Primitive::Triangles, mBuffers.getSplatDraws(),

@@ -23,13 +23,7 @@ struct SplatRadii {
 // cover the scene's surface areakSplatOverlap times; radius_min = r0 / 2 at dist_min = 0,
 // radius_max = 2 r0 at dist_max = the scene's diagonal. radius_scale multiplies both radii.
 // `surfaceAreaM2` and `diagonalM` describe the scene (GpuScene keeps both up to date).
-SplatRadii computeSplatRadii(double surfaceAreaM2, float diagonalM, const Settings& settings);
-
-// Image pixels per splat-buffer pixel along each axis (1, 2 or 4): `splat_resolution`, where
-// auto is 2 from 256 px on (min(width, height)), else 1.
-int computeSplatDivisor(const Settings& settings, int width, int height);
-// The splat buffer's size for an image of width x height: divided, rounded up.
-glm::ivec2 computeSplatSize(const Settings& settings, int width, int height);
+SplatRadii computeSplatRadii(double surfaceAreaM2, float diagonalM, const FrameSettings& settings);
 
 class SplatPass final : public Pass {
 public:

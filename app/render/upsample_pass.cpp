@@ -4,7 +4,6 @@
 
 #include "gl/gl.h"
 #include "gl/state.h"
-#include "render/splat_pass.h"
 
 #include <shared/scene_data.h>
 
@@ -24,7 +23,7 @@ UpsamplePass::UpsamplePass(const GBuffer& viewer, const gl::Texture& filtered)
       mVertexArray("upsample vao"), mTarget("indirect", gl::Format::RGBA32F) {}
 
 void UpsamplePass::execute(const FrameInputs& inputs) {
-    const int divisor = computeSplatDivisor(inputs.settings, inputs.width, inputs.height);
+    const int divisor = inputs.settings.splatDivisor;
     if (divisor == 1) {
         mTarget.getTexture().copyFrom(mFiltered);
         return;

@@ -1,6 +1,8 @@
 // The settings table and the checks every value passes on its way in.
 #include "scene/settings.h"
 
+#include "scene/frame_settings.h"
+
 #include "core/strings.h"
 #include "core/input_error.h"
 
@@ -12,6 +14,11 @@
 namespace ispm {
 namespace {
 
+template <size_t N>
+std::vector<std::string_view> toChoices(const std::array<std::string_view, N>& choices) {
+    return {choices.begin(), choices.end()};
+}
+
 const std::vector<SettingDesc>& table() {
     static const std::vector<SettingDesc> kTable = {
         {"width", SettingType::Int, 512, 1, 16384, "px", "image width", {}},
@@ -19,7 +26,7 @@ const std::vector<SettingDesc>& table() {
         {"tonemap", SettingType::Enum, 0, 0, 2, "",
          "tone-map operator: thesis (luminance clamped at luminance_max), filmic (ACES fit), "
          "linear (exposure only, clipped)",
-         {"thesis", "filmic", "linear"}},
+         toChoices(kToneMapChoices)},
         {"exposure", SettingType::Float, 0, -30, 30, "stops", "scale before tone mapping, 2^exposure",
          {}},
         {"luminance_max", SettingType::Float, 0, 1e-6, 1e9, "W/(m^2 sr)",
@@ -47,12 +54,12 @@ const std::vector<SettingDesc>& table() {
         {"rng", SettingType::Enum, 0, 0, 1, "",
          "random numbers: pcg (stateless hash of photon, bounce and seed) or lcg (the thesis's "
          "linear congruential generator)",
-         {"pcg", "lcg"}},
+         toChoices(kRngChoices)},
         {"radius_mode", SettingType::Enum, 2, 0, 2, "",
          "splat radius from travel distance (travel, the thesis), from path density "
          "(path_density, McGuire and Luebke 2009) or from the local density of stored photons "
          "(density: each disc holds about splat_neighbours photons)",
-         {"travel", "path_density", "density"}},
+         toChoices(kRadiusModeChoices)},
         {"splat_neighbours", SettingType::Int, 0, 1, 4096, "",
          "radius_mode density: photons a splat disc holds; derived: 0.11 sqrt(photons), 16 to 128",
          {}, true},
@@ -79,7 +86,7 @@ const std::vector<SettingDesc>& table() {
          "resolution of the splat buffer against the image: 1, 1/2 or 1/4, upsampled by a "
          "joint-bilateral filter on the viewer G-buffer (normals, planes, reflectance); auto: "
          "1/2 from 256 px on (min(width, height)), else 1",
-         {"auto", "1", "1/2", "1/4"}},
+         toChoices(kSplatResolutionChoices)},
         {"denoise", SettingType::Int, 0, 0, 8, "",
          "iterations of an edge-aware a-trous filter on the indirect light (steps of 1, 2, 4 ... "
          "pixels of the splat buffer, guided by normals and planes of the viewer G-buffer); 0 = "
@@ -89,7 +96,7 @@ const std::vector<SettingDesc>& table() {
         {"splat_faces", SettingType::Enum, 0, 0, 1, "",
          "back: the rasteriser culls the boxes' front faces (the thesis's choice); all: every face "
          "is rasterised and the fragment stage drops front faces (same image, for measuring)",
-         {"back", "all"}},
+         toChoices(kSplatFacesChoices)},
     };
     return kTable;
 }

@@ -217,9 +217,8 @@ void Viewer::syncRenderSize() {
     glfwGetFramebufferSize(mWindow, &mWindowWidth, &mWindowHeight);
     const int width = std::max(1, mWindowWidth - kPanelWidthPx);
     const int height = std::max(1, mWindowHeight);
-    const Settings& current = mRunner->getSettings();
-    if (current.getInt("width") == width && current.getInt("height") == height) return;
-    Settings next = current;
+    if (mRunner->getWidth() == width && mRunner->getHeight() == height) return;
+    Settings next = mRunner->getSettings();
     next.set("width", width, "viewer window");
     next.set("height", height, "viewer window");
     applySettings(next);

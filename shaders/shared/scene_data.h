@@ -75,9 +75,10 @@ struct FrameConstants {
     vec4 cameraPosition; // xyz, w unused
     vec4 background;     // rgb radiance where no surface is
     vec4 imageSize;      // x = width, y = height, z = 1/width, w = 1/height
-    uvec4 counts;        // x = light count, y = light view count, z = seed
+    uvec4 counts;        // x = light count, y = light view count, z = seed, w = tone-map operator
+                         // (kTonemap*)
     vec4 shadow;         // x = bias in texels, y = light G-buffer resolution
-    vec4 tonemap;        // x = operator, y = exposure scale, z = 1/gamma, w = luminance_max (<=0: derived)
+    vec4 tonemap;        // y = exposure scale, z = 1/gamma, w = luminance_max (<=0: derived)
 };
 ISPM_STATIC_ASSERT_SIZE(FrameConstants, 224);
 

@@ -9,7 +9,8 @@
 #include "shared/splat_clip.h"
 
 layout(std430, binding = kBindingResultPhotons) readonly buffer ResultBuffer { ResultPhoton photons[]; };
-layout(location = 2) uniform vec4 uSplatShape; // y = 1: drop front faces here; z = squash
+layout(location = 2) uniform vec4 uSplatShape; // z = squash
+layout(location = 4) uniform uvec2 uSplatModes; // y = 1: drop front faces here
 layout(location = 3) uniform int uDivisor;     // image pixels per buffer pixel along an axis
 
 layout(binding = kUnitGBufferFirst + GBUFFER_POSITION) uniform sampler2D uPosition;
@@ -27,7 +28,7 @@ layout(std430, binding = kBindingSplatClip) readonly buffer SplatClip { vec4 spl
 layout(location = 0) out vec4 outRadiance;
 
 void main() {
-    if (uSplatShape.y > 0.5 && gl_FrontFacing) discard; // splat_faces = all
+    if (uSplatModes.y == 1u && gl_FrontFacing) discard; // splat_faces = all
     // A buffer smaller than the image shades the G-buffer pixel at the middle of its block.
     ivec2 pixel = min(ivec2(gl_FragCoord.xy) * uDivisor + uDivisor / 2, ivec2(frame.imageSize.xy) - 1);
     vec4 position = texelFetch(uPosition, pixel, 0);

@@ -3,10 +3,11 @@
 // the travel radius divided by the square root of the path density, so focused photons splat
 // smaller, never below radius_min. density: the radius the density pass gave the photon.
 layout(location = 1) uniform vec4 uRadius;     // x = radius_min, y = radius_max, z = dist_min, w = dist_max
-layout(location = 2) uniform vec4 uSplatShape; // x = mode (kRadius*), y = faces (0 back, 1 all),
-                                               // z = squash
+layout(location = 2) uniform vec4 uSplatShape; // z = squash
+layout(location = 4) uniform uvec2 uSplatModes; // x = radius mode (kRadius*), y = 1: front faces
+                                                // are dropped in the fragment stage (splat_faces all)
 
-uint getRadiusMode() { return uint(uSplatShape.x + 0.5); }
+uint getRadiusMode() { return uSplatModes.x; }
 
 float computeSplatRadius(ResultPhoton photon) {
     uint mode = getRadiusMode();

@@ -20,7 +20,7 @@ vec3 applyAcesFit(vec3 x) {
 void main() {
     vec3 c = texelFetch(uHdr, ivec2(gl_FragCoord.xy), 0).rgb * frame.tonemap.y;
     float white = frame.tonemap.w > 0.0 ? frame.tonemap.w : exposure.luminanceMax.x;
-    uint op = uint(frame.tonemap.x + 0.5);
+    uint op = frame.counts.w;
     vec3 display;
     if (op == kTonemapThesis) {
         float y = dot(c, vec3(0.3, 0.6, 0.1));

@@ -1,0 +1,118 @@
+// Resolving the settings table into FrameSettings, with the derived values.
+#include "scene/frame_settings.h"
+
+#include <shared/photon_data.h>
+#include <shared/photon_scatter.h>
+#include <shared/scene_data.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace ispm {
+namespace {
+
+// The shaders compare against these constants; the settings table lists its choices in this
+// order (settings.cpp builds them from the arrays in frame_settings.h).
+static_assert(kToneMapChoices[gpu::kTonemapThesis] == "thesis");
+static_assert(kToneMapChoices[gpu::kTonemapFilmic] == "filmic");
+static_assert(kToneMapChoices[gpu::kTonemapLinear] == "linear");
+static_assert(kRngChoices[gpu::kRngPcg] == "pcg" && kRngChoices[gpu::kRngLcg] == "lcg");
+static_assert(kRadiusModeChoices[gpu::kRadiusTravel] == "travel");
+static_assert(kRadiusModeChoices[gpu::kRadiusPathDensity] == "path_density");
+static_assert(kRadiusModeChoices[gpu::kRadiusDensity] == "density");
+
+// Photons a splat disc holds by default: enough that one photon's noise averages out over its
+// neighbours' (relative noise ~ 1 / sqrt(k)), few enough to keep detail and the splat's cost,
+// which grows with k (every lit pixel is covered by about k discs). k grows with the budget as
+// sqrt(photons), so more photons buy both less noise and sharper light: 25 at 50,000 photons.
+// With the filter after the splats fewer neighbours do as well: measured at 256x256, rel RMSE
+// of Cornell / courtyard outside / room 0.146 / 0.339 / 0.371 at k 16, 0.143 / 0.334 / 0.364
+// at 24, 0.139 / 0.334 / 0.382 at 45; medians over six seeds with the splats at half
+// resolution, 0.152 / 0.274 / 0.302 at 25 and 0.144 / 0.264 / 0.269 at 40, for 20% more frame
+// time.
+constexpr double kNeighboursPerSqrtPhoton = 0.11;
+constexpr int kMinNeighbours = 16;
+constexpr int kMaxNeighbours = 128;
+
+// splat_resolution auto: half resolution from this image size on. The splat's cost follows its
+// fragments (Cornell box, 50,000 photons: 174 ms at 128 px, 460 at 256, 1,420 at 512 on
+// llvmpipe), and its light varies over several pixels from 256 px on, where the filter and the
+// upsample keep the error at full resolution's (README).
+constexpr int kHalfResolutionFromPx = 256;
+
+// Image size whose derived filter is one iteration wide (steps of 1 pixel, +-2 pixels): at
+// 256 px three iterations reach +-14 pixels, about 5% of the image, where the splats' noise is.
+constexpr double kPixelsPerIteration = 32.0;
+// At most three derived iterations: each costs 25 taps a pixel (1.2 s at 1280x1024 for five on
+// llvmpipe); larger images keep the filter's reach in pixels, not in image fractions.
+constexpr int kMaxDerivedIterations = 3;
+
+std::optional<float> getIfSet(const Settings& settings, std::string_view name) {
+    return settings.isSet(name) ? std::optional<float>(settings.getFloat(name)) : std::nullopt;
+}
+
+uint32_t getChoice(const Settings& settings, std::string_view name) {
+    return static_cast<uint32_t>(settings.get(name));
+}
+
+} // namespace
+
+int computeSplatNeighbours(const Settings& settings) {
+    if (settings.isSet("splat_neighbours")) return settings.getInt("splat_neighbours");
+    const double k = kNeighboursPerSqrtPhoton * std::sqrt(std::max(settings.get("photons"), 0.0));
+    return std::clamp(int(std::lround(k)), kMinNeighbours, kMaxNeighbours);
+}
+
+int computeSplatDivisor(const Settings& settings, int width, int height) {
+    const std::string_view choice = settings.getEnum("splat_resolution");
+    if (choice == "1") return 1;
+    if (choice == "1/2") return 2;
+    if (choice == "1/4") return 4;
+    return std::min(width, height) >= kHalfResolutionFromPx ? 2 : 1; // auto
+}
+
+glm::ivec2 computeSplatSize(const Settings& settings, int width, int height) {
+    const int divisor = computeSplatDivisor(settings, width, height);
+    return {(width + divisor - 1) / divisor, (height + divisor - 1) / divisor};
+}
+
+int computeDenoiseIterations(const Settings& settings, int width, int height) {
+    if (settings.isSet("denoise")) return settings.getInt("denoise");
+    const double iterations = std::log2(double(std::min(width, height)) / kPixelsPerIteration);
+    return std::clamp(int(std::lround(iterations)), 0, kMaxDerivedIterations);
+}
+
+FrameSettings resolveFrameSettings(const Settings& settings) {
+    FrameSettings f;
+    f.width = settings.getInt("width");
+    f.height = settings.getInt("height");
+    f.toneMap = getChoice(settings, "tonemap");
+    f.exposureStops = settings.getFloat("exposure");
+    f.gamma = settings.getFloat("gamma");
+    f.luminanceMax = getIfSet(settings, "luminance_max");
+    f.shadowMapSize = settings.getInt("shadow_map_size");
+    f.shadowBiasTexels = settings.getFloat("shadow_bias");
+    f.seed = static_cast<uint32_t>(settings.getInt("seed"));
+    f.photons = settings.getInt("photons");
+    f.bounces = settings.getInt("bounces");
+    f.bouncesSet = settings.isSet("bounces");
+    f.importanceSamples = settings.getInt("importance_samples");
+    f.importance = f.importanceSamples > 0 ? settings.getFloat("importance") : 0.0f;
+    f.rng = getChoice(settings, "rng");
+    f.radiusMode = getChoice(settings, "radius_mode");
+    f.splatNeighbours = computeSplatNeighbours(settings);
+    f.radiusMinM = getIfSet(settings, "radius_min");
+    f.radiusMaxM = getIfSet(settings, "radius_max");
+    f.distMinM = getIfSet(settings, "dist_min");
+    f.distMaxM = getIfSet(settings, "dist_max");
+    f.radiusScale = settings.getFloat("radius_scale");
+    f.squash = settings.getFloat("squash");
+    f.splatPasses = settings.getInt("splat_passes");
+    f.splatBackFacesOnly = settings.getEnum("splat_faces") == kSplatFacesChoices[0];
+    f.splatDivisor = computeSplatDivisor(settings, f.width, f.height);
+    f.splatSize = computeSplatSize(settings, f.width, f.height);
+    f.denoiseIterations = computeDenoiseIterations(settings, f.splatSize.x, f.splatSize.y);
+    return f;
+}
+
+} // namespace ispm

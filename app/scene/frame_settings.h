@@ -1,0 +1,72 @@
+// FrameSettings: the settings table resolved for a frame, once per change. Every value a pass
+// reads is a typed field here, derived values filled in (splat neighbours, filter iterations,
+// the splat buffer's size); passes never look settings up by name. Enum fields hold the
+// constants of shaders/shared/ that the shaders compare against, and the table's choices are
+// checked against those constants at compile time (frame_settings.cpp).
+#pragma once
+
+#include "scene/settings.h"
+
+#include <glm/glm.hpp>
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+namespace ispm {
+
+// Choices of the enum settings, in the order of their constants in shaders/shared/.
+inline constexpr std::array<std::string_view, 3> kToneMapChoices = {"thesis", "filmic", "linear"};
+inline constexpr std::array<std::string_view, 2> kRngChoices = {"pcg", "lcg"};
+inline constexpr std::array<std::string_view, 3> kRadiusModeChoices = {"travel", "path_density", "density"};
+inline constexpr std::array<std::string_view, 2> kSplatFacesChoices = {"back", "all"};
+inline constexpr std::array<std::string_view, 4> kSplatResolutionChoices = {"auto", "1", "1/2", "1/4"};
+
+struct FrameSettings {
+    int width = 0;  // px
+    int height = 0; // px
+    // Tone mapping.
+    uint32_t toneMap = 0; // gpu::kTonemap*
+    float exposureStops = 0.0f;
+    float gamma = 2.2f;
+    std::optional<float> luminanceMax; // W/(m^2 sr); derived on the GPU when not set
+    // Lights and shadows.
+    int shadowMapSize = 0; // px
+    float shadowBiasTexels = 0.0f;
+    // Photons.
+    uint32_t seed = 0;
+    int photons = 0;
+    int bounces = 0;
+    bool bouncesSet = false; // the reference path tracer has its own default
+    float importance = 0.0f;   // aimed share; 0 when importanceSamples is 0
+    int importanceSamples = 0;
+    uint32_t rng = 0; // gpu::kRng*
+    // Splats.
+    uint32_t radiusMode = 0; // gpu::kRadius*
+    int splatNeighbours = 0; // derived: 0.11 sqrt(photons), 16 to 128
+    // As set (metres, before radius_scale); the passes derive the rest from the scene.
+    std::optional<float> radiusMinM;
+    std::optional<float> radiusMaxM;
+    std::optional<float> distMinM;
+    std::optional<float> distMaxM;
+    float radiusScale = 1.0f;
+    float squash = 0.0f;
+    int splatPasses = 1;
+    bool splatBackFacesOnly = true; // splat_faces = back
+    int splatDivisor = 1;           // image pixels per splat-buffer pixel along an axis (1, 2, 4)
+    glm::ivec2 splatSize{0};        // the splat buffer: the image divided, rounded up
+    int denoiseIterations = 0;      // derived from the splat buffer's size
+
+    bool hasIndirect() const { return bounces > 0 && photons > 0; }
+};
+
+FrameSettings resolveFrameSettings(const Settings& settings);
+
+// The derivations, also for the viewer's "auto" labels.
+int computeSplatNeighbours(const Settings& settings);
+int computeSplatDivisor(const Settings& settings, int width, int height);
+glm::ivec2 computeSplatSize(const Settings& settings, int width, int height);
+int computeDenoiseIterations(const Settings& settings, int width, int height);
+
+} // namespace ispm
