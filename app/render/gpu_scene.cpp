@@ -1,13 +1,21 @@
 // Flattening of the scene model into GPU buffers.
 #include "render/gpu_scene.h"
 
-
 #include <algorithm>
 #include <cmath>
 #include <span>
 
 namespace ispm {
 namespace {
+
+uint32_t getGpuLightType(LightType type) {
+    switch (type) {
+    case LightType::Point: return gpu::kLightPoint;
+    case LightType::Spot: return gpu::kLightSpot;
+    case LightType::Sun: return gpu::kLightSun;
+    }
+    return gpu::kLightPoint;
+}
 
 std::vector<gpu::GpuInstance> buildInstances(const Scene& scene, const BvhScene& bvh) {
     std::vector<gpu::GpuInstance> instances;
@@ -105,13 +113,13 @@ void GpuScene::uploadLights(const Scene& scene) {
     for (const Light& light : scene.lights) {
         gpu::GpuLight g{};
         const bool isSun = light.type == LightType::Sun;
-        g.positionType = glm::vec4(light.position, static_cast<float>(light.type));
+        g.position = glm::vec4(light.position, 0.0f);
         g.directionCos = glm::vec4(glm::normalize(light.direction),
                                    std::cos(glm::radians(light.outerDeg)));
         g.power = glm::vec4(isSun ? light.irradiance : light.intensity,
                             std::cos(glm::radians(light.innerDeg)));
         const uint32_t viewCount = light.type == LightType::Point ? 6u : 1u;
-        g.views = glm::uvec4(firstView, viewCount, 0u, 0u);
+        g.views = glm::uvec4(firstView, viewCount, getGpuLightType(light.type), 0u);
         firstView += viewCount;
         lights.push_back(g);
     }

@@ -32,7 +32,7 @@ float computeBase(GpuLightView view, GpuLight light, uint column, uint row) {
     vec2 uv = (vec2(column, row) + 0.5) / float(kImportanceSize);
     vec2 p = (uv * 2.0 - 1.0) * t;
     float solidAngle = computePlaneSolidAngleDensity(p);
-    if (uint(light.positionType.w + 0.5) != kLightSpot) return solidAngle;
+    if (light.views.z != kLightSpot) return solidAngle;
     float halfTexel = t / float(kImportanceSize);
     float falloff = 0.0;
     for (int i = 0; i < 5; ++i) {

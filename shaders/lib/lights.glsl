@@ -17,14 +17,14 @@ struct LightSample {
 
 LightSample sampleLight(GpuLight light, vec3 positionW) {
     LightSample s;
-    uint type = uint(light.positionType.w + 0.5);
+    uint type = light.views.z;
     if (type == kLightSun) {
         s.wi = -light.directionCos.xyz;
         s.distanceM = 1e30;
         s.irradiance = light.power.rgb;
         return s;
     }
-    vec3 toLight = light.positionType.xyz - positionW;
+    vec3 toLight = light.position.xyz - positionW;
     float d2 = max(dot(toLight, toLight), 1e-12);
     s.distanceM = sqrt(d2);
     s.wi = toLight / s.distanceM;
@@ -42,7 +42,7 @@ LightSample sampleLight(GpuLight light, vec3 positionW) {
 uint selectLightView(GpuLight light, vec3 positionW) {
     uint first = light.views.x;
     if (light.views.y < 6u) return first;
-    vec3 d = positionW - light.positionType.xyz;
+    vec3 d = positionW - light.position.xyz;
     vec3 a = abs(d);
     if (a.x >= a.y && a.x >= a.z) return first + (d.x >= 0.0 ? 0u : 1u);
     if (a.y >= a.z) return first + (d.y >= 0.0 ? 2u : 3u);

@@ -64,7 +64,7 @@ void main() {
         travelled = length(toSurface);
         dir = toSurface / travelled;
         float falloff = 1.0;
-        if (uint(light.positionType.w + 0.5) == kLightSpot) {
+        if (light.views.z == kLightSpot) {
             falloff = computeSpotFalloff(dot(dir, light.directionCos.xyz), light.power.w,
                                          light.directionCos.w);
         }

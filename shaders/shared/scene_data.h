@@ -30,10 +30,11 @@ ISPM_CONST uint kLightSpot = 1u;
 ISPM_CONST uint kLightSun = 2u;
 
 struct GpuLight {
-    vec4 positionType;  // xyz position (point, spot), w = type as float
+    vec4 position;      // xyz position (point, spot), w unused
     vec4 directionCos;  // xyz unit axis (spot) or travel direction (sun), w = cos(outer)
     vec4 power;         // rgb intensity W/sr (point, spot) or irradiance W/m^2 (sun), w = cos(inner)
-    uvec4 views;        // x = first light view, y = view count (6 for a point light)
+    uvec4 views;        // x = first light view, y = view count (6 for a point light), z = type
+                        // (kLight*)
 };
 ISPM_STATIC_ASSERT_SIZE(GpuLight, 64);
 
