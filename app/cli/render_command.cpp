@@ -41,6 +41,9 @@ void addRenderCommand(CLI::App& app, RenderOptions& options) {
     cmd->add_option("--bounces", options.bounces,
                     "reflections between light and visible surface (setting `bounces`; 0 = direct "
                     "light; reference default 64)");
+    cmd->add_option("--accumulate", options.accumulate,
+                    "render this many frames of the still scene, each with new photons, and write "
+                    "their average (setting `accumulate`; 0 = one frame)");
     cmd->add_option("--time", options.timeS,
                     "animation time in seconds, >= 0 (default 0): where animated objects and "
                     "lights are (docs/scene-format.md, Animation)");
@@ -112,6 +115,7 @@ int runRender(const RenderOptions& options) {
     }
     Settings commandLine = makeCommandLineSettings(options.sets, options.width, options.height);
     if (options.bounces) commandLine.set("bounces", *options.bounces, "--bounces");
+    if (options.accumulate) commandLine.set("accumulate", *options.accumulate, "--accumulate");
     Scene scene = loadScene(options.scenePath);
     selectCamera(scene, options.cameraName);
     if (scene.isAnimated()) scene.update(options.timeS);
@@ -124,9 +128,11 @@ int runRender(const RenderOptions& options) {
                                                                   : gl::TimingMethod::TimerQuery;
     FrameRunner runner(scene, settings, timing);
     // The first frame compiles shaders in the driver and touches every resource once; time the
-    // second, which is what every later frame costs.
-    runner.renderFrame();
-    runner.renderFrame();
+    // second, which is what every later frame costs. Accumulating, every frame counts: the image
+    // is the average of `accumulate` frames.
+    const int accumulate = settings.getInt("accumulate");
+    const int frames = accumulate > 0 ? accumulate : 2;
+    for (int i = 0; i < frames; ++i) runner.renderFrame();
     runner.waitForTimings(); // one frame to report: the frame is over, waiting costs nothing
     const Image image = readTextureImage(runner.getAov(kind == OutputKind::Png ? Aov::Display : aov));
     writeImage(options.outputPath, image);
@@ -136,6 +142,11 @@ int runRender(const RenderOptions& options) {
                                    .count();
         std::printf("wrote %s (%dx%d, %s)\n", options.outputPath.c_str(), runner.getWidth(),
                     runner.getHeight(), kind == OutputKind::Png ? "tone mapped" : options.aov.c_str());
+        if (accumulate > 0) {
+            std::printf("indirect light: %u frames accumulated (seeds %d to %d)\n",
+                        runner.getAccumulatedFrames(), settings.getInt("seed"),
+                        settings.getInt("seed") + frames - 1);
+        }
         printTimings(runner, context->getInfo());
         std::printf("whole command: %.1f ms (scene load, context, shader builds, frame, write)\n",
                     totalMs);

@@ -23,6 +23,7 @@ struct RenderOptions {
     std::string mode = "ispm";
     int spp = 64;                // reference mode: samples per pixel
     std::optional<int> bounces;  // setting `bounces`
+    std::optional<int> accumulate; // setting `accumulate`: that many frames are rendered
     double timeS = 0.0;          // animation time (seconds); scenes without animation ignore it
 };
 

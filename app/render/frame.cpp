@@ -8,6 +8,7 @@
 #include <shared/photon_data.h>
 #include <shared/scene_data.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace ispm {
@@ -31,6 +32,7 @@ void computeCameraRange(const Camera& camera, const Aabb& bounds, float& nearM, 
 
 FrameRunner::FrameRunner(const Scene& scene, const Settings& settings, gl::TimingMethod timing)
     : mScene(scene), mSettings(settings), mFrameSettings(resolveFrameSettings(settings)),
+      mBaseSeed(mFrameSettings.seed),
       mWidth(mFrameSettings.width), mHeight(mFrameSettings.height), mTimer(timing),
       mGpuScene(scene, mFrameSettings.shadowMapSize),
       mFrameConstants("frame constants", sizeof(gpu::FrameConstants)) {
@@ -45,16 +47,18 @@ FrameRunner::FrameRunner(const Scene& scene, const Settings& settings, gl::Timin
     mDenoise = std::make_unique<DenoisePass>(mGBuffer->getGBuffer(), mSplat->getOutput());
     mDirect = std::make_unique<DirectPass>(mGBuffer->getGBuffer(), mLightViews->getGBuffer());
     mUpsample = std::make_unique<UpsamplePass>(mGBuffer->getGBuffer(), mDenoise->getOutput());
+    mAccumulate = std::make_unique<AccumulatePass>(mUpsample->getOutput());
     mCompose = std::make_unique<ComposePass>(mGBuffer->getGBuffer(), mDirect->getOutput(),
-                                             mUpsample->getOutput());
+                                             mAccumulate->getOutput());
     mTonemap = std::make_unique<TonemapPass>(mCompose->getOutput());
     resizePasses();
 }
 
-std::array<Pass*, 12> FrameRunner::getPasses() const {
-    return {mGBuffer.get(), mLightViews.get(), mImportance.get(), mEmit.get(),
-            mDirect.get(),  mTrace.get(),      mDensity.get(),    mSplat.get(),
-            mDenoise.get(), mUpsample.get(),   mCompose.get(),    mTonemap.get()};
+std::array<Pass*, 13> FrameRunner::getPasses() const {
+    return {mGBuffer.get(),  mLightViews.get(), mImportance.get(), mEmit.get(),
+            mDirect.get(),   mTrace.get(),      mDensity.get(),    mSplat.get(),
+            mDenoise.get(),  mUpsample.get(),   mAccumulate.get(), mCompose.get(),
+            mTonemap.get()};
 }
 
 void FrameRunner::resizePasses() {
@@ -70,6 +74,8 @@ ShaderReloadReport FrameRunner::reloadShaders() {
 void FrameRunner::setSettings(const Settings& settings) {
     mSettings = settings;
     mFrameSettings = resolveFrameSettings(settings);
+    mBaseSeed = mFrameSettings.seed;
+    mHistoryFrames = 0;
     const int lightResolution = mFrameSettings.shadowMapSize;
     if (lightResolution != mGpuScene.getLightResolution()) {
         // The light cameras' resolution is baked into the uploaded scene; the light G-buffer
@@ -122,10 +128,38 @@ void FrameRunner::runPass(Pass& pass, const FrameInputs& inputs) {
 
 FrameInputs FrameRunner::getFrameInputs() const {
     return {mScene,         mGpuScene,          mFrameSettings, mFrameConstants,
-            mClipFromWorld, mScene.camera.position, mWidth,         mHeight};
+            mClipFromWorld, mScene.camera.position, mWidth,         mHeight, mHistoryFrames};
+}
+
+void FrameRunner::updateScene() {
+    mGpuScene.updateDynamic(mScene);
+    mHistoryFrames = 0;
+}
+
+void FrameRunner::rebuildScene() {
+    mGpuScene = GpuScene(mScene, mGpuScene.getLightResolution());
+    mHistoryFrames = 0;
+}
+
+namespace {
+
+bool isSameCamera(const Camera& a, const Camera& b) {
+    return a.position == b.position && a.target == b.target && a.up == b.up &&
+           a.fovYDeg == b.fovYDeg && a.nearM == b.nearM && a.farM == b.farM;
+}
+
+} // namespace
+
+uint32_t FrameRunner::getAccumulatedFrames() const {
+    const auto window = static_cast<uint32_t>(std::max(mFrameSettings.accumulate, 1));
+    return std::min(mHistoryFrames, window);
 }
 
 void FrameRunner::renderFrame() {
+    if (!isSameCamera(mScene.camera, mHistoryCamera)) mHistoryFrames = 0;
+    mHistoryCamera = mScene.camera;
+    // Every accumulated frame traces new photons: the seed moves on with the history.
+    mFrameSettings.seed = mFrameSettings.accumulate > 0 ? mBaseSeed + mHistoryFrames : mBaseSeed;
     updateFrameConstants();
     const FrameInputs inputs = getFrameInputs();
     runPass(*mGBuffer, inputs);
@@ -145,6 +179,8 @@ void FrameRunner::renderFrame() {
     }
     runPass(*mDenoise, inputs);
     runPass(*mUpsample, inputs);
+    runPass(*mAccumulate, inputs);
+    ++mHistoryFrames;
     runPass(*mCompose, inputs);
     runPass(*mTonemap, inputs);
     if (auto samples = mTimer.collect()) setTimings(*samples);
@@ -171,7 +207,7 @@ PhotonCounts FrameRunner::readPhotonCounts() const {
 const gl::Texture& FrameRunner::getAov(Aov aov) const {
     switch (aov) {
     case Aov::Direct: return mDirect->getOutput();
-    case Aov::Indirect: return mUpsample->getOutput();
+    case Aov::Indirect: return mAccumulate->getOutput();
     case Aov::Total: return mCompose->getOutput();
     case Aov::Display: return mTonemap->getOutput();
     }
@@ -181,7 +217,7 @@ const gl::Texture& FrameRunner::getAov(Aov aov) const {
 size_t FrameRunner::getGpuBytes() const {
     constexpr size_t kBytesRgba32F = 16;
     constexpr size_t kBytesRgba8 = 4;
-    constexpr size_t kFullResolutionRgba32F = 3; // direct, indirect, total
+    constexpr size_t kFullResolutionRgba32F = 5; // direct, indirect, total, accumulated, history
     // Splat buffer and the filter's two targets, at splat_resolution.
     constexpr size_t kSplatResolutionRgba32F = 3;
     const glm::ivec2 splat = mFrameSettings.splatSize;

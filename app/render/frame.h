@@ -5,6 +5,7 @@
 #include "gl/timer.h"
 #include "render/gbuffer_pass.h"
 #include "render/gpu_scene.h"
+#include "render/accumulate_pass.h"
 #include "render/denoise_pass.h"
 #include "render/upsample_pass.h"
 #include "render/importance_pass.h"
@@ -46,8 +47,12 @@ public:
     // lights after the caller edited the Scene this runner was built on; rebuildScene uploads it
     // anew (BVH included) when lights or instances were added or removed.
     void setSettings(const Settings& settings);
-    void updateScene() { mGpuScene.updateDynamic(mScene); }
-    void rebuildScene() { mGpuScene = GpuScene(mScene, mGpuScene.getLightResolution()); }
+    // Frames averaged into the indirect light shown: at most `accumulate` (1 without
+    // accumulation, once a frame ran).
+    uint32_t getAccumulatedFrames() const;
+    // Each of the three restarts the accumulated history (`accumulate`), as does a camera move.
+    void updateScene();
+    void rebuildScene();
     const Settings& getSettings() const { return mSettings; }
     const Scene& getScene() const { return mScene; }
     // F5: rebuilds the passes' programs whose source files changed; failures keep the old ones.
@@ -84,12 +89,15 @@ private:
     void resizePasses();
     void updateFrameConstants();
     // Every pass in frame order, for resize and shader reload.
-    std::array<Pass*, 12> getPasses() const;
+    std::array<Pass*, 13> getPasses() const;
     void runPass(Pass& pass, const FrameInputs& inputs);
 
     const Scene& mScene;
     Settings mSettings;
-    FrameSettings mFrameSettings; // mSettings resolved
+    FrameSettings mFrameSettings; // mSettings resolved; its seed moves on while accumulating
+    uint32_t mBaseSeed = 0;       // the `seed` setting
+    uint32_t mHistoryFrames = 0;  // frames in the accumulated history
+    Camera mHistoryCamera;        // the camera they were rendered from
     int mWidth;
     int mHeight;
     void setTimings(const std::vector<gl::PassTimer::Sample>& samples);
@@ -109,6 +117,7 @@ private:
     std::unique_ptr<SplatPass> mSplat;
     std::unique_ptr<DenoisePass> mDenoise;
     std::unique_ptr<UpsamplePass> mUpsample;
+    std::unique_ptr<AccumulatePass> mAccumulate;
     std::unique_ptr<DirectPass> mDirect;
     std::unique_ptr<ComposePass> mCompose;
     std::unique_ptr<TonemapPass> mTonemap;

@@ -24,6 +24,7 @@ struct FrameInputs {
     glm::vec3 cameraPosition{0.0f};
     int width = 0;
     int height = 0;
+    uint32_t historyFrames = 0; // frames accumulated before this one (AccumulatePass)
 };
 
 class Pass {

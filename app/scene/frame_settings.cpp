@@ -112,6 +112,7 @@ FrameSettings resolveFrameSettings(const Settings& settings) {
     f.splatDivisor = computeSplatDivisor(settings, f.width, f.height);
     f.splatSize = computeSplatSize(settings, f.width, f.height);
     f.denoiseIterations = computeDenoiseIterations(settings, f.splatSize.x, f.splatSize.y);
+    f.accumulate = settings.getInt("accumulate");
     return f;
 }
 

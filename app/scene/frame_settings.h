@@ -57,6 +57,7 @@ struct FrameSettings {
     int splatDivisor = 1;           // image pixels per splat-buffer pixel along an axis (1, 2, 4)
     glm::ivec2 splatSize{0};        // the splat buffer: the image divided, rounded up
     int denoiseIterations = 0;      // derived from the splat buffer's size
+    int accumulate = 0;             // history length in frames (0: off)
 
     bool hasIndirect() const { return bounces > 0 && photons > 0; }
 };

@@ -93,6 +93,12 @@ const std::vector<SettingDesc>& table() {
          "the splats as they are; derived: log2(min(w, h) / 32) of the splat buffer's size, at "
          "most 3 (2 at 256 px with the splats at 1/2)",
          {}, true},
+        {"accumulate", SettingType::Int, 0, 0, 65536, "frames",
+         "temporal accumulation of the indirect light: while the camera, the scene and the "
+         "settings stay as they are, each frame traces new photons (seed + frame) and is "
+         "averaged in, a running mean over this many frames and then an exponential one over as "
+         "many; any change starts again; 0 = off (each frame alone)",
+         {}},
         {"splat_faces", SettingType::Enum, 0, 0, 1, "",
          "back: the rasteriser culls the boxes' front faces (the thesis's choice); all: every face "
          "is rasterised and the fragment stage drops front faces (same image, for measuring)",

@@ -419,7 +419,7 @@ void Viewer::drawPanels() {
     if (ImGui::CollapsingHeader("Stats", ImGuiTreeNodeFlags_DefaultOpen)) {
         drawStatsPanel(mTimings, mCounts, mContext.getInfo().renderer,
                        gl::getTimingMethodName(mRunner->getTimingMethod()),
-                       mLuminanceMax);
+                       mLuminanceMax, mRunner->getAccumulatedFrames());
     }
     if (!mStatus.empty()) ImGui::TextWrapped("%s", mStatus.c_str());
     ImGui::End();

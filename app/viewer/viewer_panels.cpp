@@ -38,7 +38,8 @@ void TimingHistory::record(const std::vector<PassTiming>& timings) {
 }
 
 void drawStatsPanel(const TimingHistory& timings, const PhotonCounts& counts,
-                    const std::string& renderer, const char* timingMethod, float luminanceMax) {
+                    const std::string& renderer, const char* timingMethod, float luminanceMax,
+                    uint32_t accumulatedFrames) {
     ImGui::TextWrapped("GL renderer: %s", renderer.c_str());
     ImGui::Text("pass times by %s", timingMethod);
     if (ImGui::BeginTable("timings", 2, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
@@ -73,6 +74,8 @@ void drawStatsPanel(const TimingHistory& timings, const PhotonCounts& counts,
     ImGui::Text("stored in view   %u", counts.inView);
     ImGui::Text("overflow         %u", counts.overflow);
     ImGui::Text("luminance max    %.4g W/(m^2 sr)", static_cast<double>(luminanceMax));
+    // Accumulation (setting `accumulate`) restarts whenever the camera, scene or settings change.
+    ImGui::Text("frames averaged  %u", accumulatedFrames);
 }
 
 LightEdit drawLightsPanel(std::vector<Light>& lights, const glm::vec3& newLightPositionW,

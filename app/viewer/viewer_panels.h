@@ -23,8 +23,10 @@ class TimingHistory {
     std::deque<float> mTotals;
 };
 
+// accumulatedFrames: frames averaged into the indirect light shown (setting `accumulate`).
 void drawStatsPanel(const TimingHistory& timings, const PhotonCounts& counts,
-                    const std::string& renderer, const char* timingMethod, float luminanceMax);
+                    const std::string& renderer, const char* timingMethod, float luminanceMax,
+                    uint32_t accumulatedFrames);
 
 enum class LightEdit { None, Values, AddedOrRemoved };
 

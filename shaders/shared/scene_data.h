@@ -68,6 +68,7 @@ ISPM_CONST int kUnitDirect = 16;
 ISPM_CONST int kUnitIndirect = 17;
 ISPM_CONST int kUnitHdr = 18;
 ISPM_CONST int kUnitFilterSource = 19; // the denoise pass's input, one iteration to the next
+ISPM_CONST int kUnitHistory = 20;      // the accumulated indirect light of earlier frames
 
 // Per-frame values every pass may read (std140).
 struct FrameConstants {
