@@ -20,16 +20,6 @@ Aov parseAov(const std::string& text, const std::string& where) {
     throw InputError(strCat(where, ": expected direct, indirect or total, got '", text, "'"));
 }
 
-void computeCameraRange(const Camera& camera, const Aabb& bounds, float& nearM, float& farM) {
-    const glm::vec3 axis = glm::normalize(camera.target - camera.position);
-    computeDepthRange(bounds, camera.position, axis, nearM, farM);
-    // The viewer's frustum corners reach further than its axis: grow far for the widest ray.
-    const float halfDiagonal = glm::length(bounds.getExtent());
-    farM = std::max(farM, glm::length(bounds.getCenter() - camera.position) + halfDiagonal);
-    if (camera.nearM > 0.0f) nearM = camera.nearM;
-    if (camera.farM > 0.0f) farM = camera.farM;
-}
-
 FrameRunner::FrameRunner(const Scene& scene, const Settings& settings, gl::TimingMethod timing)
     : mScene(scene), mSettings(settings), mFrameSettings(resolveFrameSettings(settings)),
       mBaseSeed(mFrameSettings.seed),
@@ -89,30 +79,6 @@ void FrameRunner::setSettings(const Settings& settings) {
     }
 }
 
-gpu::FrameConstants computeFrameConstants(const Scene& scene, const GpuScene& gpuScene,
-                                          const FrameSettings& settings, int width, int height) {
-    const Camera& cam = scene.camera;
-    float nearM = 0.0f;
-    float farM = 0.0f;
-    computeCameraRange(cam, gpuScene.getBounds(), nearM, farM);
-    const float aspect = static_cast<float>(width) / static_cast<float>(height);
-    gpu::FrameConstants fc{};
-    fc.clipFromWorld = computeClipFromView(cam, aspect, nearM, farM) * computeViewFromWorld(cam);
-    fc.worldFromClip = glm::inverse(fc.clipFromWorld);
-    fc.cameraPosition = glm::vec4(cam.position, 1.0f);
-    fc.background = glm::vec4(scene.background, 0.0f);
-    fc.imageSize = glm::vec4(width, height, 1.0f / static_cast<float>(width),
-                             1.0f / static_cast<float>(height));
-    fc.counts = glm::uvec4(gpuScene.getLightCount(),
-                           static_cast<uint32_t>(gpuScene.getLightCameras().size()),
-                           settings.seed, settings.toneMap);
-    fc.shadow = glm::vec4(settings.shadowBiasTexels,
-                          static_cast<float>(gpuScene.getLightResolution()), 0.0f, 0.0f);
-    fc.tonemap = glm::vec4(0.0f, std::exp2(settings.exposureStops), 1.0f / settings.gamma,
-                           settings.luminanceMax.value_or(0.0f));
-    return fc;
-}
-
 void FrameRunner::updateFrameConstants() {
     const gpu::FrameConstants fc = computeFrameConstants(mScene, mGpuScene, mFrameSettings, mWidth, mHeight);
     mClipFromWorld = fc.clipFromWorld;
@@ -140,15 +106,6 @@ void FrameRunner::rebuildScene() {
     mGpuScene = GpuScene(mScene, mGpuScene.getLightResolution());
     mHistoryFrames = 0;
 }
-
-namespace {
-
-bool isSameCamera(const Camera& a, const Camera& b) {
-    return a.position == b.position && a.target == b.target && a.up == b.up &&
-           a.fovYDeg == b.fovYDeg && a.nearM == b.nearM && a.farM == b.farM;
-}
-
-} // namespace
 
 uint32_t FrameRunner::getAccumulatedFrames() const {
     const auto window = static_cast<uint32_t>(std::max(mFrameSettings.accumulate, 1));

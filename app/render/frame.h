@@ -7,6 +7,7 @@
 #include "render/gpu_scene.h"
 #include "render/accumulate_pass.h"
 #include "render/denoise_pass.h"
+#include "render/frame_constants.h"
 #include "render/upsample_pass.h"
 #include "render/importance_pass.h"
 #include "render/photon_density_pass.h"
@@ -122,13 +123,5 @@ private:
     std::unique_ptr<ComposePass> mCompose;
     std::unique_ptr<TonemapPass> mTonemap;
 };
-
-// Camera clip planes when the scene does not set them: enclose the scene bounds.
-void computeCameraRange(const Camera& camera, const Aabb& bounds, float& nearM, float& farM);
-
-// The per-frame constants of the scene's camera at width x height (shared by the photon mapper
-// and the reference path tracer, so both see the same camera).
-gpu::FrameConstants computeFrameConstants(const Scene& scene, const GpuScene& gpuScene,
-                                          const FrameSettings& settings, int width, int height);
 
 } // namespace ispm

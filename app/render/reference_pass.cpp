@@ -3,7 +3,7 @@
 
 #include "gl/gl.h"
 #include "gl/state.h"
-#include "render/frame.h"
+#include "render/frame_constants.h"
 #include "render/gbuffer.h"
 #include "render/readback.h"
 #include "render/shader_root.h"
@@ -24,10 +24,15 @@ constexpr int kUnusedLightResolution = 1;
 } // namespace
 
 ReferencePass::ReferencePass(const Scene& scene, const Settings& settings)
-    : ReferencePass(scene, resolveFrameSettings(settings)) {}
+    : ReferencePass(scene, std::make_unique<GpuScene>(scene, kUnusedLightResolution), nullptr,
+                    resolveFrameSettings(settings)) {}
 
-ReferencePass::ReferencePass(const Scene& scene, const FrameSettings& settings)
-    : mScene(scene), mGpuScene(scene, kUnusedLightResolution),
+ReferencePass::ReferencePass(const Scene& scene, const GpuScene& gpuScene, const Settings& settings)
+    : ReferencePass(scene, nullptr, &gpuScene, resolveFrameSettings(settings)) {}
+
+ReferencePass::ReferencePass(const Scene& scene, std::unique_ptr<GpuScene> owned,
+                             const GpuScene* borrowed, const FrameSettings& settings)
+    : mScene(scene), mOwnedScene(std::move(owned)), mGpuScene(borrowed ? *borrowed : *mOwnedScene),
       mProgram(gl::Program::build(getShaderRoot(),
                                   {.label = "reference path tracer",
                                    .stages = {{gl::ShaderStage::Compute, "reference/reference.comp"}},

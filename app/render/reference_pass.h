@@ -10,6 +10,8 @@
 #include "scene/frame_settings.h"
 #include "scene/scene.h"
 
+#include <memory>
+
 namespace ispm {
 
 // Bounces when neither the scene nor the command line sets them: enough for a converged image
@@ -18,8 +20,11 @@ inline constexpr int kReferenceDefaultBounces = 64;
 
 class ReferencePass {
 public:
-    ReferencePass(const Scene& scene, const Settings& settings); // resolves them
-    ReferencePass(const Scene& scene, const FrameSettings& settings);
+    // Builds its own GPU scene (BVH included): the command line's reference renders.
+    ReferencePass(const Scene& scene, const Settings& settings);
+    // Borrows the frame's GPU scene (the viewer's: no second BVH at every restart); it must
+    // outlive the pass.
+    ReferencePass(const Scene& scene, const GpuScene& gpuScene, const Settings& settings);
     void addSample();
     int getSampleCount() const { return mSamples; }
     // Sum of the samples so far (rgb) and their count (a).
@@ -29,8 +34,12 @@ public:
     int getBounces() const { return mBounces; }
 
 private:
+    ReferencePass(const Scene& scene, std::unique_ptr<GpuScene> owned, const GpuScene* borrowed,
+                  const FrameSettings& settings);
+
     const Scene& mScene;
-    GpuScene mGpuScene;
+    std::unique_ptr<GpuScene> mOwnedScene; // null when borrowed
+    const GpuScene& mGpuScene;
     gl::Program mProgram;
     gl::Buffer mFrameConstants;
     gl::Texture mAccumulation;

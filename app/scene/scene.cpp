@@ -72,4 +72,9 @@ glm::mat4 computeClipFromView(const Camera& camera, float aspect, float nearM, f
     return glm::perspective(glm::radians(camera.fovYDeg), aspect, nearM, farM);
 }
 
+bool isSameCamera(const Camera& a, const Camera& b) {
+    return a.position == b.position && a.target == b.target && a.up == b.up &&
+           a.fovYDeg == b.fovYDeg && a.nearM == b.nearM && a.farM == b.farM;
+}
+
 } // namespace ispm

@@ -124,5 +124,7 @@ void selectCamera(Scene& scene, const std::string& name);
 // Camera matrices (OpenGL clip conventions, right-handed, -z forward in view space).
 glm::mat4 computeViewFromWorld(const Camera& camera);
 glm::mat4 computeClipFromView(const Camera& camera, float aspect, float nearM, float farM);
+// Whether two cameras see the same image (every field equal).
+bool isSameCamera(const Camera& a, const Camera& b);
 
 } // namespace ispm

@@ -79,7 +79,7 @@ void ReferenceView::update(const Scene& scene, const FrameRunner& runner) {
     if (mRendering && (mPass || ++mStillFrames >= kStillFramesBeforeRestart)) {
         if (!mPass) {
             try {
-                mPass = std::make_unique<ReferencePass>(scene, runner.getSettings());
+                mPass = std::make_unique<ReferencePass>(scene, runner.getGpuScene(), runner.getSettings());
             } catch (const gl::Error& e) {
                 // Its shader is read anew at every restart: an edit in progress must not end
                 // the session.

@@ -123,11 +123,6 @@ class Viewer {
     std::string mStatus;
 };
 
-bool isSameCamera(const Camera& a, const Camera& b) {
-    return a.position == b.position && a.target == b.target && a.up == b.up &&
-           a.fovYDeg == b.fovYDeg;
-}
-
 gl::WindowOptions makeWindowOptions(const Scene& scene, const ViewerOptions& options) {
     gl::WindowOptions w;
     w.width = scene.settings.getInt("width") + kPanelWidthPx;

@@ -3,6 +3,7 @@
 #include "support/analytic_scenes.h"
 #include "support/render_support.h"
 
+#include "render/frame.h"
 #include "render/reference_pass.h"
 #include "scene/scene_loader.h"
 
@@ -137,6 +138,27 @@ TEST_F(ReferenceTest, IspmDirectLightMatchesReferenceOnCornellBox) {
     }
     // 2% on the mean: shadow-map edges and jittered versus centred pixels differ at edges only.
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(sumIspm[c] / sumRef[c], 1.0, 0.02) << "channel " << c;
+}
+
+TEST_F(ReferenceTest, BorrowedGpuSceneGivesTheSameImage) {
+    // The viewer's path tracer borrows the frame's GPU scene instead of building its own: same
+    // scene, same camera, same random numbers, so the same samples.
+    const Scene scene = loadScene(std::string(ISPM_ASSET_DIR) + "/scenes/cornell.json");
+    Settings settings = scene.settings;
+    settings.set("width", 32, "test");
+    settings.set("height", 32, "test");
+    settings.set("bounces", 3, "test");
+    const Image owned = renderReference(scene, settings, 4, 3);
+    FrameRunner runner(scene, settings, gl::TimingMethod::CpuFinish);
+    ReferencePass borrowing(scene, runner.getGpuScene(), settings);
+    for (int s = 0; s < 4; ++s) borrowing.addSample();
+    const Image borrowed = borrowing.readMean();
+    double sum = 0.0;
+    for (size_t i = 0; i < owned.pixels.size(); ++i) {
+        EXPECT_EQ(owned.pixels[i], borrowed.pixels[i]) << "pixel " << i;
+        sum += double(owned.pixels[i].x);
+    }
+    EXPECT_GT(sum, 0.0) << "a black image matches anything";
 }
 
 } // namespace

@@ -1,0 +1,21 @@
+// Per-frame constants (gpu::FrameConstants) of the scene's camera, shared by the photon mapper
+// and the reference path tracer so that both see the same camera.
+#pragma once
+
+#include "render/gpu_scene.h"
+#include "scene/frame_settings.h"
+#include "scene/scene.h"
+
+#include <shared/scene_data.h>
+
+namespace ispm {
+
+// Camera clip planes when the scene does not set them: enclose the scene bounds.
+void computeCameraRange(const Camera& camera, const Aabb& bounds, float& nearM, float& farM);
+
+// The per-frame constants of the scene's camera at width x height (shared by the photon mapper
+// and the reference path tracer, so both see the same camera).
+gpu::FrameConstants computeFrameConstants(const Scene& scene, const GpuScene& gpuScene,
+                                          const FrameSettings& settings, int width, int height);
+
+} // namespace ispm
