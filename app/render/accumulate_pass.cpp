@@ -22,34 +22,41 @@ float computeAccumulateWeight(int accumulate, uint32_t historyFrames) {
     return 1.0f / static_cast<float>(window);
 }
 
-AccumulatePass::AccumulatePass(const gl::Texture& current)
-    : mCurrent(current),
-      mProgram(ReloadableProgram({.label = "accumulate",
+AccumulatePass::AccumulatePass(const gl::Texture& direct, const gl::Texture& indirect)
+    : mProgram(ReloadableProgram({.label = "accumulate",
                                   .stages = {{gl::ShaderStage::Vertex, "lib/fullscreen.vert"},
                                              {gl::ShaderStage::Fragment, "denoise/accumulate.frag"}}})),
-      mVertexArray("accumulate vao"), mTarget("indirect (accumulated)", gl::Format::RGBA32F) {}
+      mVertexArray("accumulate vao"),
+      mLights({Light{direct, ColorTarget("direct (accumulated)", gl::Format::RGBA32F), {}},
+               Light{indirect, ColorTarget("indirect (accumulated)", gl::Format::RGBA32F), {}}}) {}
 
 void AccumulatePass::resize(int width, int height) {
-    mTarget.resize(width, height);
-    if (mHistory.getWidth() == width && mHistory.getHeight() == height) return;
-    mHistory = gl::Texture::create2D("indirect history", gl::Format::RGBA32F, width, height);
+    for (size_t i = 0; i < mLights.size(); ++i) {
+        Light& light = mLights[i];
+        light.target.resize(width, height);
+        if (light.history.getWidth() == width && light.history.getHeight() == height) continue;
+        light.history = gl::Texture::create2D(i == kDirect ? "direct history" : "indirect history",
+                                              gl::Format::RGBA32F, width, height);
+    }
 }
 
 void AccumulatePass::execute(const FrameInputs& inputs) {
     const float weight = computeAccumulateWeight(inputs.settings.accumulate, inputs.historyFrames);
-    if (weight >= 1.0f) {
-        mTarget.getTexture().copyFrom(mCurrent); // no history to mix with
-    } else {
-        mTarget.bind();
-        gl::applyState({});
-        mProgram.use();
-        mVertexArray.bind();
-        mCurrent.bindUnit(gpu::kUnitFilterSource);
-        mHistory.bindUnit(gpu::kUnitHistory);
-        glUniform1f(kLocationWeight, weight);
-        drawFullscreenTriangle();
+    for (Light& light : mLights) {
+        if (weight >= 1.0f) {
+            light.target.getTexture().copyFrom(light.current); // no history to mix with
+        } else {
+            light.target.bind();
+            gl::applyState({});
+            mProgram.use();
+            mVertexArray.bind();
+            light.current.bindUnit(gpu::kUnitFilterSource);
+            light.history.bindUnit(gpu::kUnitHistory);
+            glUniform1f(kLocationWeight, weight);
+            drawFullscreenTriangle();
+        }
+        if (inputs.settings.accumulate > 0) light.history.copyFrom(light.target.getTexture());
     }
-    if (inputs.settings.accumulate > 0) mHistory.copyFrom(mTarget.getTexture());
 }
 
 } // namespace ispm

@@ -1,13 +1,17 @@
-// AccumulatePass: temporal accumulation of the indirect light while nothing moves. Each frame
-// traces new photons (FrameRunner shifts the seed by the frame count), and this pass averages
-// their light into a history: a running mean over the first `accumulate` frames, then an
-// exponential mean over that many. FrameRunner restarts the history (frame count 0) when the
+// AccumulatePass: temporal accumulation of the direct and indirect light while nothing moves.
+// Each frame traces new photons and looks through a new sub-pixel offset of the camera
+// (FrameRunner moves the seed and the jitter on with the frame count), and this pass averages
+// both lights into their histories: a running mean over the first `accumulate` frames, then an
+// exponential mean over that many. FrameRunner restarts the histories (frame count 0) when the
 // camera, the scene, a light or a setting changes, so no stale light outlives a change by a
-// frame. With `accumulate` 0 the frame's light passes through. Its output is the indirect AOV.
+// frame. With `accumulate` 0 the frame's light passes through. Its outputs are the direct and
+// indirect AOVs.
 #pragma once
 
 #include "render/fullscreen.h"
 #include "render/pass.h"
+
+#include <array>
 
 namespace ispm {
 
@@ -17,19 +21,25 @@ float computeAccumulateWeight(int accumulate, uint32_t historyFrames);
 
 class AccumulatePass final : public Pass {
 public:
-    explicit AccumulatePass(const gl::Texture& current);
+    AccumulatePass(const gl::Texture& direct, const gl::Texture& indirect);
     const char* getName() const override { return "accumulate"; }
     void resize(int width, int height) override;
     void execute(const FrameInputs& inputs) override;
     void reloadPrograms(ShaderReloadReport& report) override { mProgram.reloadIfChanged(report); }
-    const gl::Texture& getOutput() const { return mTarget.getTexture(); }
+    const gl::Texture& getDirect() const { return mLights[kDirect].target.getTexture(); }
+    const gl::Texture& getIndirect() const { return mLights[kIndirect].target.getTexture(); }
 
 private:
-    const gl::Texture& mCurrent;
+    static constexpr size_t kDirect = 0;
+    static constexpr size_t kIndirect = 1;
+    struct Light {
+        const gl::Texture& current;
+        ColorTarget target;  // this frame's average
+        gl::Texture history; // the previous frame's average
+    };
     ReloadableProgram mProgram;
     gl::VertexArray mVertexArray;
-    ColorTarget mTarget;    // this frame's average
-    gl::Texture mHistory;   // the previous frame's average
+    std::array<Light, 2> mLights;
 };
 
 } // namespace ispm

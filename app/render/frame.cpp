@@ -37,9 +37,9 @@ FrameRunner::FrameRunner(const Scene& scene, const Settings& settings, gl::Timin
     mDenoise = std::make_unique<DenoisePass>(mGBuffer->getGBuffer(), mSplat->getOutput());
     mDirect = std::make_unique<DirectPass>(mGBuffer->getGBuffer(), mLightViews->getGBuffer());
     mUpsample = std::make_unique<UpsamplePass>(mGBuffer->getGBuffer(), mDenoise->getOutput());
-    mAccumulate = std::make_unique<AccumulatePass>(mUpsample->getOutput());
-    mCompose = std::make_unique<ComposePass>(mGBuffer->getGBuffer(), mDirect->getOutput(),
-                                             mAccumulate->getOutput());
+    mAccumulate = std::make_unique<AccumulatePass>(mDirect->getOutput(), mUpsample->getOutput());
+    mCompose = std::make_unique<ComposePass>(mGBuffer->getGBuffer(), mAccumulate->getDirect(),
+                                             mAccumulate->getIndirect());
     mTonemap = std::make_unique<TonemapPass>(mCompose->getOutput());
     resizePasses();
 }
@@ -80,7 +80,10 @@ void FrameRunner::setSettings(const Settings& settings) {
 }
 
 void FrameRunner::updateFrameConstants() {
-    const gpu::FrameConstants fc = computeFrameConstants(mScene, mGpuScene, mFrameSettings, mWidth, mHeight);
+    // Accumulated frames look through new sub-pixel offsets: the average is anti-aliased.
+    const glm::vec2 jitter = mFrameSettings.accumulate > 0 ? computePixelJitter(mHistoryFrames) : glm::vec2(0.0f);
+    const gpu::FrameConstants fc =
+        computeFrameConstants(mScene, mGpuScene, mFrameSettings, mWidth, mHeight, jitter);
     mClipFromWorld = fc.clipFromWorld;
     mFrameConstants.upload(0, sizeof(fc), &fc);
 }
@@ -163,8 +166,8 @@ PhotonCounts FrameRunner::readPhotonCounts() const {
 
 const gl::Texture& FrameRunner::getAov(Aov aov) const {
     switch (aov) {
-    case Aov::Direct: return mDirect->getOutput();
-    case Aov::Indirect: return mAccumulate->getOutput();
+    case Aov::Direct: return mAccumulate->getDirect();
+    case Aov::Indirect: return mAccumulate->getIndirect();
     case Aov::Total: return mCompose->getOutput();
     case Aov::Display: return mTonemap->getOutput();
     }
@@ -174,7 +177,8 @@ const gl::Texture& FrameRunner::getAov(Aov aov) const {
 size_t FrameRunner::getGpuBytes() const {
     constexpr size_t kBytesRgba32F = 16;
     constexpr size_t kBytesRgba8 = 4;
-    constexpr size_t kFullResolutionRgba32F = 5; // direct, indirect, total, accumulated, history
+    // direct, indirect, total, and both lights' average and history
+    constexpr size_t kFullResolutionRgba32F = 7;
     // Splat buffer and the filter's two targets, at splat_resolution.
     constexpr size_t kSplatResolutionRgba32F = 3;
     const glm::ivec2 splat = mFrameSettings.splatSize;

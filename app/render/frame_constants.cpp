@@ -1,6 +1,8 @@
 // The per-frame constants of a camera: view and projection, image size, lights, tone map.
 #include "render/frame_constants.h"
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <algorithm>
 #include <cmath>
 
@@ -16,15 +18,39 @@ void computeCameraRange(const Camera& camera, const Aabb& bounds, float& nearM, 
     if (camera.farM > 0.0f) farM = camera.farM;
 }
 
+namespace {
+
+float computeRadicalInverse(uint32_t index, uint32_t base) {
+    float inverse = 0.0f;
+    float digit = 1.0f / static_cast<float>(base);
+    for (uint32_t i = index; i > 0; i /= base) {
+        inverse += static_cast<float>(i % base) * digit;
+        digit /= static_cast<float>(base);
+    }
+    return inverse;
+}
+
+} // namespace
+
+glm::vec2 computePixelJitter(uint32_t frame) {
+    if (frame == 0) return glm::vec2(0.0f);
+    return glm::vec2(computeRadicalInverse(frame, 2), computeRadicalInverse(frame, 3)) - 0.5f;
+}
+
 gpu::FrameConstants computeFrameConstants(const Scene& scene, const GpuScene& gpuScene,
-                                          const FrameSettings& settings, int width, int height) {
+                                          const FrameSettings& settings, int width, int height,
+                                          glm::vec2 jitterPx) {
     const Camera& cam = scene.camera;
     float nearM = 0.0f;
     float farM = 0.0f;
     computeCameraRange(cam, gpuScene.getBounds(), nearM, farM);
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
     gpu::FrameConstants fc{};
-    fc.clipFromWorld = computeClipFromView(cam, aspect, nearM, farM) * computeViewFromWorld(cam);
+    // A shift of jitter pixels is 2 jitter / size in normalised device coordinates.
+    const glm::vec3 shiftNdc(2.0f * jitterPx.x / static_cast<float>(width),
+                             2.0f * jitterPx.y / static_cast<float>(height), 0.0f);
+    fc.clipFromWorld = glm::translate(glm::mat4(1.0f), shiftNdc) *
+                       computeClipFromView(cam, aspect, nearM, farM) * computeViewFromWorld(cam);
     fc.worldFromClip = glm::inverse(fc.clipFromWorld);
     fc.cameraPosition = glm::vec4(cam.position, 1.0f);
     fc.background = glm::vec4(scene.background, 0.0f);

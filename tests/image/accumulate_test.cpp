@@ -1,6 +1,7 @@
-// Temporal accumulation (AccumulatePass, FrameRunner): the accumulated indirect light of N still
-// frames is the mean of N single frames with seeds seed .. seed + N - 1, and a camera cut or a
-// light switched off leaves no stale light one frame later.
+// Temporal accumulation (AccumulatePass, FrameRunner): the accumulated light of N still frames
+// is the mean of N single frames with seeds seed .. seed + N - 1 and the sub-pixel offsets of
+// frames 0 .. N - 1, and a camera cut or a light switched off leaves no stale light one frame
+// later.
 #include "support/gl_fixture.h"
 
 #include "render/frame.h"
@@ -52,24 +53,40 @@ double computeMaxRelativeDifference(const Image& a, const Image& b) {
 
 class AccumulateTest : public GlTest {};
 
-TEST_F(AccumulateTest, StillFramesAverageTheirSeeds) {
+TEST_F(AccumulateTest, StillFramesAverageTheirSeedsAndOffsets) {
     constexpr int kFrames = 4;
     const Scene scene = loadCornell();
     FrameRunner accumulating(scene, makeSettings(scene, kFrames, 7), gl::TimingMethod::CpuFinish);
     const Image accumulated = renderIndirect(accumulating, kFrames);
+    const Image accumulatedDirect = readTextureImage(accumulating.getAov(Aov::Direct));
     EXPECT_EQ(accumulating.getAccumulatedFrames(), uint32_t(kFrames));
+    // A history of one frame: each frame alone, with the same seed and sub-pixel offset as the
+    // accumulating runner's frame of that number.
+    FrameRunner single(scene, makeSettings(scene, 1, 7), gl::TimingMethod::CpuFinish);
     Image mean(kSize, kSize);
+    Image meanDirect(kSize, kSize);
     Image first;
+    Image firstDirect;
     for (int f = 0; f < kFrames; ++f) {
-        FrameRunner single(scene, makeSettings(scene, 0, 7 + f), gl::TimingMethod::CpuFinish);
         const Image frame = renderIndirect(single, 1);
-        if (f == 0) first = frame;
-        for (size_t i = 0; i < mean.pixels.size(); ++i) mean.pixels[i] += frame.pixels[i] / float(kFrames);
+        const Image direct = readTextureImage(single.getAov(Aov::Direct));
+        if (f == 0) {
+            first = frame;
+            firstDirect = direct;
+        }
+        for (size_t i = 0; i < mean.pixels.size(); ++i) {
+            mean.pixels[i] += frame.pixels[i] / float(kFrames);
+            meanDirect.pixels[i] += direct.pixels[i] / float(kFrames);
+        }
     }
-    // The same photons in the same order: only float rounding of the running mean differs.
+    // The same photons and offsets in the same order: only float rounding of the running mean
+    // differs.
     EXPECT_LT(computeMaxRelativeDifference(accumulated, mean), 1e-4);
-    // And the frames did differ (new photons each frame): a fixed seed would pass the line above.
+    EXPECT_LT(computeMaxRelativeDifference(accumulatedDirect, meanDirect), 1e-4);
+    // And the frames did differ: new photons each frame (a fixed seed would pass the lines
+    // above), and new offsets (edges of the direct light move).
     EXPECT_GT(computeMaxRelativeDifference(first, mean), 0.05);
+    EXPECT_GT(computeMaxRelativeDifference(firstDirect, meanDirect), 0.05);
 }
 
 TEST_F(AccumulateTest, CameraCutAndLightSwitchLeaveNoStaleLight) {
@@ -95,6 +112,19 @@ TEST_F(AccumulateTest, CameraCutAndLightSwitchLeaveNoStaleLight) {
     double largest = 0.0;
     for (const glm::vec3& p : dark.pixels) largest = std::max(largest, double(std::max({p.x, p.y, p.z})));
     EXPECT_EQ(largest, 0.0) << "light of the frames before the switch";
+}
+
+TEST(AccumulateJitter, HaltonOffsetsInsideThePixel) {
+    EXPECT_EQ(computePixelJitter(0), glm::vec2(0.0f)); // the first frame is the plain one
+    // 1/2, 1/3 and 1/4, 2/3 minus 1/2, to float rounding.
+    EXPECT_NEAR(computePixelJitter(1).x, 0.0f, 1e-6f);
+    EXPECT_NEAR(computePixelJitter(1).y, -1.0f / 6.0f, 1e-6f);
+    EXPECT_NEAR(computePixelJitter(2).x, -0.25f, 1e-6f);
+    EXPECT_NEAR(computePixelJitter(2).y, 1.0f / 6.0f, 1e-6f);
+    for (uint32_t f = 1; f < 64; ++f) {
+        const glm::vec2 j = computePixelJitter(f);
+        EXPECT_TRUE(j.x >= -0.5f && j.x < 0.5f && j.y >= -0.5f && j.y < 0.5f) << f;
+    }
 }
 
 TEST(AccumulateWeight, RunningMeanThenExponential) {
