@@ -3,14 +3,16 @@
 // not in timed tests.
 #include "cli/bench_command.h"
 
+#include "cli/bench_flicker.h"
 #include "cli/bench_sweep.h"
 #include "cli/cli_common.h"
+#include "core/input_error.h"
 #include "core/strings.h"
 #include "gl/context.h"
 #include "gl/debug.h"
 #include "gl/state.h"
 #include "render/frame.h"
-#include "core/input_error.h"
+#include "render/readback.h"
 #include "scene/scene_loader.h"
 
 #include <shared/photon_data.h>
@@ -20,6 +22,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
@@ -32,6 +35,20 @@ namespace ispm {
 namespace {
 
 constexpr int kMinTimedFrames = 1; // a median needs at least one sample
+constexpr int kMinFlickerFrames = 2; // a standard deviation needs two
+
+// A texture's texels with row 0 at the top (as Image), w kept.
+std::vector<glm::vec4> readTopDown(const gl::Texture& texture) {
+    const std::vector<glm::vec4> texels = texture.readRgba();
+    const auto width = static_cast<size_t>(texture.getWidth());
+    const auto height = static_cast<size_t>(texture.getHeight());
+    std::vector<glm::vec4> out(texels.size());
+    for (size_t y = 0; y < height; ++y) {
+        std::copy_n(texels.begin() + static_cast<std::ptrdiff_t>((height - 1 - y) * width),
+                    width, out.begin() + static_cast<std::ptrdiff_t>(y * width));
+    }
+    return out;
+}
 constexpr int kMinWarmupFrames = 0;
 constexpr double kBytesPerMib = 1024.0 * 1024.0;
 constexpr double kKibPerMib = 1024.0;
@@ -131,6 +148,7 @@ struct BenchReport {
     nlohmann::json settings; // effective overrides: enums by name, integers as integers
     std::string presetName;
     PresetResult preset;
+    std::optional<FlickerResult> flicker;
 };
 
 nlohmann::json describeOverrides(const Settings& settings) {
@@ -181,6 +199,11 @@ void printJson(const BenchReport& r) {
                                                    {"stored", l.stored},
                                                    {"stored_in_view", l.inView}});
         }
+    }
+    if (r.flicker) {
+        out["flicker"] = {{"frames", r.flicker->frames},     {"all", r.flicker->all},
+                          {"away", r.flicker->away},         {"away_m", r.flicker->awayM},
+                          {"pixels", r.flicker->pixels},     {"away_pixels", r.flicker->awayPixels}};
     }
     out["settings"] = r.settings;
     if (!r.presetName.empty()) {
@@ -243,6 +266,13 @@ void printText(const BenchReport& r) {
                                          : std::string("unknown");
     std::printf("memory: peak RSS %s, GL allocations %.1f MiB (%zu bytes)\n", rss.c_str(),
                 static_cast<double>(r.glBytes) / kBytesPerMib, r.glBytes);
+    if (r.flicker) {
+        std::printf("flicker over %d frames (mean temporal std of the indirect light / its mean): "
+                    "all %zu surface pixels %.5f; the %zu farther than %.2f m from moving objects "
+                    "%.5f\n",
+                    r.flicker->frames, r.flicker->pixels, r.flicker->all, r.flicker->awayPixels,
+                    r.flicker->awayM, r.flicker->away);
+    }
 }
 
 // Every input is checked before any GL work: bad values exit 2 without creating a context.
@@ -261,6 +291,17 @@ void checkOptions(const BenchOptions& options) {
     }
     if (options.scenePath.empty() && options.preset.empty()) {
         throw InputError("bench: expected a scene file (SCENE may be left out only with --preset)");
+    }
+    if (options.flickerFrames && *options.flickerFrames < kMinFlickerFrames) {
+        throw InputError(strCat("--flicker: expected an integer >= ", kMinFlickerFrames, ", got ",
+                                *options.flickerFrames));
+    }
+    if (!std::isfinite(options.flickerAwayM) || options.flickerAwayM < 0.0) {
+        throw InputError(strCat("--flicker-away: expected a distance >= 0 in metres, got ",
+                                options.flickerAwayM));
+    }
+    if (options.flickerFrames && isSweepRequested(options)) {
+        throw InputError("--flicker: expected without --sweep/--reference/--csv");
     }
     if (options.animate && isSweepRequested(options)) {
         throw InputError("--animate: expected without --sweep/--reference/--csv (a sweep compares "
@@ -304,6 +345,13 @@ void addBenchCommand(CLI::App& app, BenchOptions& options) {
     cmd->add_flag("--animate", options.animate,
                   "advance animated scenes by 1/60 s per frame and time the scene update (BVH "
                   "top level, light cameras) as a row of its own");
+    cmd->add_option("--flicker", options.flickerFrames,
+                    "time N frames and measure their flicker: the mean over surface pixels of the "
+                    "temporal standard deviation of the indirect light, divided by its mean, for "
+                    "all pixels and for those farther than --flicker-away from moving objects");
+    cmd->add_option("--flicker-away", options.flickerAwayM,
+                    "--flicker: metres from any moving object's box beyond which a pixel counts as "
+                    "away (default 0.5)");
     cmd->add_option("--preset", options.preset,
                     "benchmark configuration: thesis (box city, 1280x1024, photons=50000, "
                     "bounces=3)");
@@ -378,17 +426,25 @@ int runBench(const BenchOptions& options) {
     }
 
     FrameTimes times;
-    for (int i = 0; i < options.frames; ++i) {
+    const int frames = options.flickerFrames.value_or(options.frames);
+    std::optional<FlickerMeter> flicker;
+    if (options.flickerFrames) flicker.emplace(options.flickerAwayM);
+    for (int i = 0; i < frames; ++i) {
         const double updateMs = advance();
         runner.renderFrame();
         runner.waitForTimings(); // this frame's, not an earlier one's
         addFrameTimes(runner, times);
         if (options.animate) addSceneUpdateTime(updateMs, times);
+        if (flicker) {
+            flicker->addFrame(readTextureImage(runner.getAov(Aov::Indirect)),
+                              readTopDown(runner.getViewerGBuffer().getChannel("position")), scene);
+        }
     }
+    if (flicker) report.flicker = flicker->getResult();
 
     report.width = runner.getWidth();
     report.height = runner.getHeight();
-    report.frames = options.frames;
+    report.frames = frames;
     report.warmup = options.warmup;
     report.renderer = info.renderer;
     report.contextPath = gl::getContextPathName(info.path);

@@ -28,6 +28,10 @@ struct BenchOptions {
     // Every frame (warm-up and timed) advances the animation by 1/60 s and re-uploads the moved
     // scene (top-level BVH, light cameras), timed as the row "scene update".
     bool animate = false;
+    // --flicker N: N timed frames whose indirect light is read back and measured for flicker
+    // (bench_flicker.h); pixels farther than flickerAwayM from moving objects count apart.
+    std::optional<int> flickerFrames;
+    double flickerAwayM = 0.5;
     // Sweep mode (bench_sweep.h): any of these turns it on.
     std::vector<std::string> sweeps; // "name=v1,v2,..." each
     std::string referencePath;       // linear .pfm/.exr the configurations are measured against

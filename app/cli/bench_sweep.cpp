@@ -5,6 +5,7 @@
 
 #include "cli/bench_command.h"
 #include "cli/cli_common.h"
+#include "core/input_error.h"
 #include "core/strings.h"
 #include "gl/context.h"
 #include "gl/debug.h"
@@ -13,7 +14,6 @@
 #include "image/metrics.h"
 #include "render/readback.h"
 #include "render/reference_pass.h"
-#include "core/input_error.h"
 
 #include <unistd.h>
 

@@ -1,9 +1,9 @@
 // Shared CLI helpers.
 #include "cli/cli_common.h"
 
+#include "core/input_error.h"
 #include "core/strings.h"
 #include "gl/debug.h"
-#include "core/input_error.h"
 
 #include <CLI/CLI.hpp>
 

@@ -2,6 +2,7 @@
 #include "cli/render_command.h"
 
 #include "cli/cli_common.h"
+#include "core/input_error.h"
 #include "core/strings.h"
 #include "gl/context.h"
 #include "gl/debug.h"
@@ -9,7 +10,6 @@
 #include "render/frame.h"
 #include "render/readback.h"
 #include "render/reference_pass.h"
-#include "core/input_error.h"
 #include "scene/scene_loader.h"
 
 #include <CLI/CLI.hpp>

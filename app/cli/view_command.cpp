@@ -3,9 +3,9 @@
 #include "cli/view_command.h"
 
 #include "cli/cli_common.h"
+#include "core/input_error.h"
 #include "core/strings.h"
 #include "image/image_io.h"
-#include "core/input_error.h"
 #include "scene/scene_loader.h"
 #include "viewer/viewer.h"
 

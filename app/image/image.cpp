@@ -2,8 +2,8 @@
 // or mask of the wrong resolution) as InputError with the sizes involved.
 #include "image/image.h"
 
-#include "core/strings.h"
 #include "core/input_error.h"
+#include "core/strings.h"
 
 namespace ispm {
 

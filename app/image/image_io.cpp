@@ -3,9 +3,9 @@
 // Codecs work on memory buffers so that every failure is reported the same way.
 #include "image/image_io.h"
 
+#include "core/input_error.h"
 #include "core/strings.h"
 #include "image/pfm.h"
-#include "core/input_error.h"
 
 #include <stb_image.h>
 #include <stb_image_write.h>

@@ -3,8 +3,8 @@
 // radiance values would lose digits in float.
 #include "image/metrics.h"
 
-#include "core/strings.h"
 #include "core/input_error.h"
+#include "core/strings.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,9 +1,9 @@
 // FrameRunner: per-frame constants, pass order, timing.
 #include "render/frame.h"
 
+#include "core/input_error.h"
 #include "core/strings.h"
 #include "gl/debug.h"
-#include "core/input_error.h"
 
 #include <shared/photon_data.h>
 #include <shared/scene_data.h>

@@ -2,8 +2,8 @@
 // that errors nlohmann reports without a path (number overflow, duplicate keys) still get one.
 #include "scene/json_reader.h"
 
-#include "core/strings.h"
 #include "core/input_error.h"
+#include "core/strings.h"
 
 #include <array>
 #include <charconv>

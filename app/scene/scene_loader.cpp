@@ -2,8 +2,8 @@
 // and objects have their own files). The format is documented in docs/scene-format.md.
 #include "scene/scene_loader.h"
 
-#include "core/strings.h"
 #include "core/input_error.h"
+#include "core/strings.h"
 #include "scene/scene_parse.h"
 
 #include <cmath>

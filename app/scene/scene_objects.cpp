@@ -1,9 +1,9 @@
 // Objects of a scene file: transforms, inline meshes, boxes, OBJ files and the generators. Each
 // object becomes one mesh in object space plus one instance that holds its transform.
+#include "core/input_error.h"
 #include "core/strings.h"
 #include "scene/box_city.h"
 #include "scene/cornell_box.h"
-#include "core/input_error.h"
 #include "scene/mesh_builder.h"
 #include "scene/obj_io.h"
 #include "scene/scene_parse.h"

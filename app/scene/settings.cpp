@@ -3,8 +3,8 @@
 
 #include "scene/frame_settings.h"
 
-#include "core/strings.h"
 #include "core/input_error.h"
+#include "core/strings.h"
 
 #include <algorithm>
 #include <array>

@@ -1,8 +1,8 @@
 // Parsing and replaying viewer scripts.
 #include "viewer/input_script.h"
 
-#include "core/strings.h"
 #include "core/input_error.h"
+#include "core/strings.h"
 
 #include <cctype>
 #include <fstream>

@@ -2,6 +2,7 @@
 // views in one full-screen program, and the metrics read back on request.
 #include "viewer/reference_view.h"
 
+#include "core/input_error.h"
 #include "core/strings.h"
 #include "gl/gl.h"
 #include "gl/state.h"
@@ -9,7 +10,6 @@
 #include "image/metrics.h"
 #include "render/fullscreen.h"
 #include "render/readback.h"
-#include "core/input_error.h"
 
 #include <imgui.h>
 

@@ -2,6 +2,7 @@
 // debug view -> ImGui panels -> screenshots -> present.
 #include "viewer/viewer.h"
 
+#include "core/input_error.h"
 #include "core/strings.h"
 #include "gl/context.h"
 #include "gl/debug.h"
@@ -11,7 +12,6 @@
 #include "image/image_io.h"
 #include "render/frame.h"
 #include "render/readback.h"
-#include "core/input_error.h"
 #include "scene/scene_loader.h"
 #include "viewer/animation_panel.h"
 #include "viewer/debug_view.h"

@@ -155,6 +155,30 @@ TEST_F(BenchTest, AnimateTimesTheSceneUpdateFirst) {
     EXPECT_NE(r.output.find("--animate"), std::string::npos) << r.output;
 }
 
+TEST_F(BenchTest, FlickerIsZeroForAStillSceneAndNotForAMovingCube) {
+    // A still scene renders the same photons every frame (the seed does not move without
+    // accumulation): nothing flickers, to the last bit.
+    const nlohmann::json still = runJson(mScene + kSmallRun + " --flicker 3");
+    ASSERT_FALSE(still.is_discarded());
+    EXPECT_EQ(still["frames"], 3);
+    EXPECT_EQ(still["flicker"]["all"], 0.0) << still.dump();
+    EXPECT_GT(still["flicker"]["pixels"], 0) << "no surface pixel measured";
+    // The moving cube changes the photons' paths, so its light moves; with the cube's
+    // neighbourhood left out, what remains is the rest of the room's flicker.
+    const std::string cube = std::string(ISPM_ASSET_DIR) + "/scenes/moving_cube.json";
+    const nlohmann::json moving = runJson(cube + kSmallRun + " --animate --flicker 4");
+    ASSERT_FALSE(moving.is_discarded());
+    EXPECT_GT(moving["flicker"]["all"].get<double>(), 0.0) << moving.dump();
+    EXPECT_LT(moving["flicker"]["away_pixels"], moving["flicker"]["pixels"]) << moving.dump();
+    EXPECT_EQ(moving["flicker"]["away_m"], 0.5);
+    // Bad values: one line, exit 2.
+    for (const std::string& args : {mScene + " --flicker 1", mScene + " --flicker 3 --flicker-away -1"}) {
+        const RunResult r = run("bench " + args, true);
+        EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.output;
+        EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+    }
+}
+
 TEST_F(BenchTest, BadCountsExitTwoWithOneLine) {
     for (const std::string& args :
          {mScene + " --frames 0", mScene + " --frames abc", mScene + " --frames -3"}) {

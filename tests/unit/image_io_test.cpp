@@ -1,8 +1,8 @@
 // Image file I/O: bit-exact float round trips at awkward sizes, PFM's byte layout as the standard
 // has it, PNG quantisation, and user-facing errors that name the file.
+#include "core/input_error.h"
 #include "image/image_io.h"
 #include "image/pfm.h"
-#include "core/input_error.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // Error metrics and golden-diff helpers: hand-computed RMSE and relMSE, SSIM's properties
 // (identity, monotonic in noise, exposure independence), masks, mean ratio and size errors.
+#include "core/input_error.h"
 #include "image/image_diff.h"
 #include "image/metrics.h"
-#include "core/input_error.h"
 
 #include <glm/vector_relational.hpp>
 #include <gtest/gtest.h>
