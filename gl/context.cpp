@@ -50,7 +50,7 @@ bool hasExtension(const char* list, std::string_view name) {
 }
 
 class EglContext final : public Context {
-public:
+  public:
     EglContext(ContextPath path, EGLDisplay display, std::string device) : mDisplay(display) {
         if (!gladLoaderLoadEGL(mDisplay)) throw Error("EGL: cannot load EGL 1.5 for the display");
         EGLint major = 0;
@@ -62,11 +62,14 @@ public:
             throw Error("EGL: display lacks EGL_KHR_no_config_context");
         }
         if (!eglBindAPI(EGL_OPENGL_API)) throw Error("EGL: eglBindAPI(OpenGL) failed");
-        const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION, kGlMajor,
-                                     EGL_CONTEXT_MINOR_VERSION, kGlMinor,
+        const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                     kGlMajor,
+                                     EGL_CONTEXT_MINOR_VERSION,
+                                     kGlMinor,
                                      EGL_CONTEXT_OPENGL_PROFILE_MASK,
                                      EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                                     EGL_CONTEXT_OPENGL_DEBUG, EGL_TRUE,
+                                     EGL_CONTEXT_OPENGL_DEBUG,
+                                     EGL_TRUE,
                                      EGL_NONE};
         mContext = eglCreateContext(mDisplay, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
         if (mContext == EGL_NO_CONTEXT) {
@@ -83,7 +86,7 @@ public:
         eglDestroyContext(mDisplay, mContext);
     }
 
-private:
+  private:
     void bindCurrent() override {
         if (!eglMakeCurrent(mDisplay, EGL_NO_SURFACE, EGL_NO_SURFACE, mContext)) {
             throw Error("EGL: eglMakeCurrent failed");
@@ -96,13 +99,18 @@ private:
 };
 
 class OsMesaContext final : public Context {
-public:
+  public:
     OsMesaContext() {
-        const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA,
-                                  OSMESA_DEPTH_BITS, 0,
-                                  OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-                                  OSMESA_CONTEXT_MAJOR_VERSION, kGlMajor,
-                                  OSMESA_CONTEXT_MINOR_VERSION, kGlMinor,
+        const int attributes[] = {OSMESA_FORMAT,
+                                  OSMESA_RGBA,
+                                  OSMESA_DEPTH_BITS,
+                                  0,
+                                  OSMESA_PROFILE,
+                                  OSMESA_CORE_PROFILE,
+                                  OSMESA_CONTEXT_MAJOR_VERSION,
+                                  kGlMajor,
+                                  OSMESA_CONTEXT_MINOR_VERSION,
+                                  kGlMinor,
                                   0};
         mContext = OSMesaCreateContextAttribs(attributes, nullptr);
         if (!mContext) throw Error("OSMesa: cannot create an OpenGL 4.5 core context");
@@ -112,7 +120,7 @@ public:
 
     ~OsMesaContext() override { OSMesaDestroyContext(mContext); }
 
-private:
+  private:
     void loadFunctions() override { loadGlFunctions(loadOsMesaProc, "osmesa"); }
     void bindCurrent() override {
         // OSMesa needs a colour buffer to be current; ispm never draws to it (FBOs only).
@@ -143,7 +151,8 @@ std::unique_ptr<Context> createEglDeviceContext() {
     std::vector<EGLDeviceEXT> ordered;
     for (int pass = 0; pass < 2; ++pass) {
         for (EGLint i = 0; i < count; ++i) {
-            const bool software = isSoftwareDevice(eglQueryDeviceStringEXT(devices[i], EGL_EXTENSIONS));
+            const bool software =
+                isSoftwareDevice(eglQueryDeviceStringEXT(devices[i], EGL_EXTENSIONS));
             if (software == (pass == 1)) ordered.push_back(devices[i]);
         }
     }
@@ -165,8 +174,8 @@ std::unique_ptr<Context> createEglDeviceContext() {
 std::unique_ptr<Context> createEglSurfacelessContext() {
     if (!gladLoaderLoadEGL(EGL_NO_DISPLAY)) throw Error("egl-surfaceless: libEGL not found");
     if (!eglGetPlatformDisplayEXT) throw Error("egl-surfaceless: EGL_EXT_platform_base missing");
-    EGLDisplay display = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY,
-                                                  nullptr);
+    EGLDisplay display =
+        eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
     if (display == EGL_NO_DISPLAY) throw Error("egl-surfaceless: no surfaceless Mesa display");
     return std::make_unique<EglContext>(ContextPath::EglSurfaceless, display, "surfaceless");
 }
@@ -175,10 +184,14 @@ std::unique_ptr<Context> createEglSurfacelessContext() {
 
 const char* getContextPathName(ContextPath path) {
     switch (path) {
-    case ContextPath::EglDevice: return "egl-device";
-    case ContextPath::EglSurfaceless: return "egl-surfaceless";
-    case ContextPath::OSMesa: return "osmesa";
-    case ContextPath::Window: return "glfw-window";
+    case ContextPath::EglDevice:
+        return "egl-device";
+    case ContextPath::EglSurfaceless:
+        return "egl-surfaceless";
+    case ContextPath::OSMesa:
+        return "osmesa";
+    case ContextPath::Window:
+        return "glfw-window";
     }
     return "?";
 }

@@ -25,7 +25,7 @@ struct ContextInfo {
 };
 
 class Context {
-public:
+  public:
     virtual ~Context();
     Context(const Context&) = delete;
     Context& operator=(const Context&) = delete;
@@ -34,7 +34,7 @@ public:
     void makeCurrent();
     const ContextInfo& getInfo() const { return mInfo; }
 
-protected:
+  protected:
     Context() = default;
     virtual void bindCurrent() = 0;
     virtual void loadFunctions() = 0;
@@ -56,12 +56,12 @@ struct WindowOptions {
 };
 
 class WindowContext final : public Context {
-public:
+  public:
     explicit WindowContext(const WindowOptions& options);
     ~WindowContext() override;
     GLFWwindow* getWindow() const { return mWindow; }
 
-private:
+  private:
     void bindCurrent() override;
     void loadFunctions() override;
     GLFWwindow* mWindow = nullptr;

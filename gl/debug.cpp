@@ -22,15 +22,24 @@ std::deque<std::string> gRecentErrors;
 
 const char* describeType(GLenum type) {
     switch (type) {
-    case GL_DEBUG_TYPE_ERROR: return "error";
-    case GL_DEBUG_TYPE_DEPRECATED_BEHAVIOR: return "deprecated";
-    case GL_DEBUG_TYPE_UNDEFINED_BEHAVIOR: return "undefined behaviour";
-    case GL_DEBUG_TYPE_PORTABILITY: return "portability";
-    case GL_DEBUG_TYPE_PERFORMANCE: return "performance";
-    case GL_DEBUG_TYPE_MARKER: return "marker";
-    case GL_DEBUG_TYPE_PUSH_GROUP: return "push group";
-    case GL_DEBUG_TYPE_POP_GROUP: return "pop group";
-    default: return "other";
+    case GL_DEBUG_TYPE_ERROR:
+        return "error";
+    case GL_DEBUG_TYPE_DEPRECATED_BEHAVIOR:
+        return "deprecated";
+    case GL_DEBUG_TYPE_UNDEFINED_BEHAVIOR:
+        return "undefined behaviour";
+    case GL_DEBUG_TYPE_PORTABILITY:
+        return "portability";
+    case GL_DEBUG_TYPE_PERFORMANCE:
+        return "performance";
+    case GL_DEBUG_TYPE_MARKER:
+        return "marker";
+    case GL_DEBUG_TYPE_PUSH_GROUP:
+        return "push group";
+    case GL_DEBUG_TYPE_POP_GROUP:
+        return "pop group";
+    default:
+        return "other";
     }
 }
 
@@ -42,10 +51,10 @@ void GLAPIENTRY onDebugMessage(GLenum source, GLenum type, GLuint id, GLenum sev
     const std::string text(message, length < 0 ? std::char_traits<char>::length(message)
                                                : static_cast<size_t>(length));
     const bool isError = type == GL_DEBUG_TYPE_ERROR;
-    const bool isWarning = type == GL_DEBUG_TYPE_UNDEFINED_BEHAVIOR ||
-                           type == GL_DEBUG_TYPE_DEPRECATED_BEHAVIOR ||
-                           type == GL_DEBUG_TYPE_PORTABILITY ||
-                           (type == GL_DEBUG_TYPE_PERFORMANCE && severity != GL_DEBUG_SEVERITY_NOTIFICATION);
+    const bool isWarning =
+        type == GL_DEBUG_TYPE_UNDEFINED_BEHAVIOR || type == GL_DEBUG_TYPE_DEPRECATED_BEHAVIOR ||
+        type == GL_DEBUG_TYPE_PORTABILITY ||
+        (type == GL_DEBUG_TYPE_PERFORMANCE && severity != GL_DEBUG_SEVERITY_NOTIFICATION);
     if (isError) {
         ++gErrors;
         std::lock_guard lock(gRecentMutex);
@@ -70,7 +79,9 @@ void installDebugOutput() {
     glDebugMessageControl(GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE, 0, nullptr, GL_TRUE);
 }
 
-DebugCounts getDebugCounts() { return {gErrors.load(), gWarnings.load(), gOther.load()}; }
+DebugCounts getDebugCounts() {
+    return {gErrors.load(), gWarnings.load(), gOther.load()};
+}
 
 void resetDebugCounts() {
     gErrors = 0;
@@ -85,12 +96,17 @@ std::vector<std::string> getRecentDebugErrors() {
     return {gRecentErrors.begin(), gRecentErrors.end()};
 }
 
-void setDebugVerbose(bool verbose) { gVerbose = verbose; }
-
-DebugGroup::DebugGroup(std::string_view name) {
-    glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, static_cast<GLsizei>(name.size()), name.data());
+void setDebugVerbose(bool verbose) {
+    gVerbose = verbose;
 }
 
-DebugGroup::~DebugGroup() { glPopDebugGroup(); }
+DebugGroup::DebugGroup(std::string_view name) {
+    glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, static_cast<GLsizei>(name.size()),
+                     name.data());
+}
+
+DebugGroup::~DebugGroup() {
+    glPopDebugGroup();
+}
 
 } // namespace gl

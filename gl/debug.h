@@ -26,7 +26,7 @@ void setDebugVerbose(bool verbose);
 
 // RAII debug group: glPush/PopDebugGroup around a scope.
 class DebugGroup {
-public:
+  public:
     explicit DebugGroup(std::string_view name);
     ~DebugGroup();
     DebugGroup(const DebugGroup&) = delete;

@@ -10,7 +10,7 @@ namespace gl {
 
 // Runtime failures of the GL layer (context creation, shader compile, I/O): carry context.
 class Error : public std::runtime_error {
-public:
+  public:
     using std::runtime_error::runtime_error;
 };
 

@@ -8,9 +8,8 @@
 
 namespace gl {
 
-template <void (*Delete)(GLuint)>
-class Handle {
-public:
+template <void (*Delete)(GLuint)> class Handle {
+  public:
     Handle() = default;
     explicit Handle(GLuint id) : mId(id) {}
     ~Handle() { reset(); }
@@ -32,7 +31,7 @@ public:
         mId = 0;
     }
 
-private:
+  private:
     GLuint mId = 0;
 };
 

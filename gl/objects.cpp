@@ -7,14 +7,30 @@
 
 namespace gl {
 
-void deleteBuffer(GLuint id) { glDeleteBuffers(1, &id); }
-void deleteTexture(GLuint id) { glDeleteTextures(1, &id); }
-void deleteSampler(GLuint id) { glDeleteSamplers(1, &id); }
-void deleteFramebuffer(GLuint id) { glDeleteFramebuffers(1, &id); }
-void deleteVertexArray(GLuint id) { glDeleteVertexArrays(1, &id); }
-void deleteProgram(GLuint id) { glDeleteProgram(id); }
-void deleteQuery(GLuint id) { glDeleteQueries(1, &id); }
-void deleteTransformFeedback(GLuint id) { glDeleteTransformFeedbacks(1, &id); }
+void deleteBuffer(GLuint id) {
+    glDeleteBuffers(1, &id);
+}
+void deleteTexture(GLuint id) {
+    glDeleteTextures(1, &id);
+}
+void deleteSampler(GLuint id) {
+    glDeleteSamplers(1, &id);
+}
+void deleteFramebuffer(GLuint id) {
+    glDeleteFramebuffers(1, &id);
+}
+void deleteVertexArray(GLuint id) {
+    glDeleteVertexArrays(1, &id);
+}
+void deleteProgram(GLuint id) {
+    glDeleteProgram(id);
+}
+void deleteQuery(GLuint id) {
+    glDeleteQueries(1, &id);
+}
+void deleteTransformFeedback(GLuint id) {
+    glDeleteTransformFeedbacks(1, &id);
+}
 
 void setLabel(GLenum kind, GLuint id, std::string_view label) {
     if (!label.empty()) {
@@ -39,8 +55,8 @@ Buffer::Buffer(std::string_view label, size_t bytes, const void* data) : mSize(b
 void Buffer::upload(size_t offsetBytes, size_t bytes, const void* data) const {
     assert(offsetBytes + bytes <= mSize);
     if (bytes == 0) return;
-    glNamedBufferSubData(getId(), static_cast<GLintptr>(offsetBytes), static_cast<GLsizeiptr>(bytes),
-                         data);
+    glNamedBufferSubData(getId(), static_cast<GLintptr>(offsetBytes),
+                         static_cast<GLsizeiptr>(bytes), data);
 }
 
 void Buffer::download(size_t offsetBytes, size_t bytes, void* out) const {
@@ -64,15 +80,21 @@ void Buffer::bindRange(BufferTarget target, GLuint index, size_t offsetBytes, si
                       static_cast<GLintptr>(offsetBytes), static_cast<GLsizeiptr>(bytes));
 }
 
-void Buffer::bind(BufferTarget target) const { glBindBuffer(static_cast<GLenum>(target), getId()); }
+void Buffer::bind(BufferTarget target) const {
+    glBindBuffer(static_cast<GLenum>(target), getId());
+}
 
-void Buffer::unbind(BufferTarget target) { glBindBuffer(static_cast<GLenum>(target), 0); }
+void Buffer::unbind(BufferTarget target) {
+    glBindBuffer(static_cast<GLenum>(target), 0);
+}
 
 // ---- Texture ----
 
 namespace {
 
-bool isDepthFormat(Format format) { return format == Format::Depth32F; }
+bool isDepthFormat(Format format) {
+    return format == Format::Depth32F;
+}
 
 } // namespace
 
@@ -136,8 +158,8 @@ void Texture::uploadRgba(std::span<const glm::vec4> texels, int layer) {
 }
 
 void Texture::copyFrom(const Texture& source) const {
-    glCopyImageSubData(source.getId(), GL_TEXTURE_2D, 0, 0, 0, 0, getId(), GL_TEXTURE_2D, 0, 0, 0, 0,
-                       mWidth, mHeight, 1);
+    glCopyImageSubData(source.getId(), GL_TEXTURE_2D, 0, 0, 0, 0, getId(), GL_TEXTURE_2D, 0, 0, 0,
+                       0, mWidth, mHeight, 1);
 }
 
 void Texture::clear(const glm::vec4& value) {
@@ -148,7 +170,9 @@ void Texture::clear(const glm::vec4& value) {
     }
 }
 
-void Texture::bindUnit(GLuint unit) const { glBindTextureUnit(unit, getId()); }
+void Texture::bindUnit(GLuint unit) const {
+    glBindTextureUnit(unit, getId());
+}
 
 void Texture::bindImage(GLuint unit, bool read, bool write) const {
     const GLenum access = read && write ? GL_READ_WRITE : (write ? GL_WRITE_ONLY : GL_READ_ONLY);
@@ -172,7 +196,9 @@ Sampler::Sampler(std::string_view label, Filter filter, Wrap wrap) {
     setLabel(GL_SAMPLER, id, label);
 }
 
-void Sampler::bindUnit(GLuint unit) const { glBindSampler(unit, getId()); }
+void Sampler::bindUnit(GLuint unit) const {
+    glBindSampler(unit, getId());
+}
 
 // ---- Framebuffer ----
 
@@ -208,7 +234,8 @@ void Framebuffer::setDrawBufferCount(int count) {
     constexpr int kMaxDrawBuffers = 8; // the GL 4.5 minimum of GL_MAX_DRAW_BUFFERS
     assert(count >= 0 && count <= kMaxDrawBuffers);
     GLenum buffers[kMaxDrawBuffers];
-    for (int i = 0; i < count; ++i) buffers[i] = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i);
+    for (int i = 0; i < count; ++i)
+        buffers[i] = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i);
     if (count == 0) {
         glNamedFramebufferDrawBuffer(getId(), GL_NONE);
     } else {
@@ -272,7 +299,9 @@ void VertexArray::setElementBuffer(const Buffer& buffer) {
     glVertexArrayElementBuffer(getId(), buffer.getId());
 }
 
-void VertexArray::bind() const { glBindVertexArray(getId()); }
+void VertexArray::bind() const {
+    glBindVertexArray(getId());
+}
 
 // ---- Query ----
 
@@ -283,9 +312,13 @@ Query::Query(std::string_view label, QueryTarget target) : mTarget(target) {
     setLabel(GL_QUERY, id, label);
 }
 
-void Query::begin() const { glBeginQuery(static_cast<GLenum>(mTarget), getId()); }
+void Query::begin() const {
+    glBeginQuery(static_cast<GLenum>(mTarget), getId());
+}
 
-void Query::end() const { glEndQuery(static_cast<GLenum>(mTarget)); }
+void Query::end() const {
+    glEndQuery(static_cast<GLenum>(mTarget));
+}
 
 uint64_t Query::getResult() const {
     GLuint64 value = 0;
@@ -315,7 +348,8 @@ TransformFeedback::TransformFeedback(std::string_view label) {
 
 void TransformFeedback::attachBuffer(GLuint index, const Buffer& buffer, size_t offsetBytes,
                                      size_t bytes) {
-    glTransformFeedbackBufferRange(getId(), index, buffer.getId(), static_cast<GLintptr>(offsetBytes),
+    glTransformFeedbackBufferRange(getId(), index, buffer.getId(),
+                                   static_cast<GLintptr>(offsetBytes),
                                    static_cast<GLsizeiptr>(bytes));
 }
 

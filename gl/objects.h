@@ -36,25 +36,22 @@ enum class BufferTarget : GLenum {
 };
 
 class Buffer {
-public:
+  public:
     Buffer() = default;
     // Immutable storage, updatable with upload(); data may be null (zero-filled).
     Buffer(std::string_view label, size_t bytes, const void* data = nullptr);
-    template <typename T>
-    static Buffer fromSpan(std::string_view label, std::span<const T> items) {
+    template <typename T> static Buffer fromSpan(std::string_view label, std::span<const T> items) {
         return Buffer(label, items.size_bytes(), items.data());
     }
 
     // Contents are GPU state, not the handle's: writing them through a const handle is allowed,
     // as through a const pointer.
     void upload(size_t offsetBytes, size_t bytes, const void* data) const;
-    template <typename T>
-    void upload(std::span<const T> items, size_t offsetBytes = 0) const {
+    template <typename T> void upload(std::span<const T> items, size_t offsetBytes = 0) const {
         upload(offsetBytes, items.size_bytes(), items.data());
     }
     void download(size_t offsetBytes, size_t bytes, void* out) const;
-    template <typename T>
-    std::vector<T> read(size_t count, size_t offsetBytes = 0) const {
+    template <typename T> std::vector<T> read(size_t count, size_t offsetBytes = 0) const {
         std::vector<T> items(count);
         download(offsetBytes, count * sizeof(T), items.data());
         return items;
@@ -69,7 +66,7 @@ public:
     GLuint getId() const { return mHandle.get(); }
     size_t getSize() const { return mSize; }
 
-private:
+  private:
     Handle<deleteBuffer> mHandle;
     size_t mSize = 0;
 };
@@ -78,7 +75,7 @@ enum class Filter { Nearest, Linear };
 enum class Wrap { ClampToEdge, Repeat };
 
 class Texture {
-public:
+  public:
     Texture() = default;
     static Texture create2D(std::string_view label, Format format, int width, int height);
     // Layers of one size: the faces of a point light, for instance.
@@ -103,7 +100,7 @@ public:
     Format getFormat() const { return mFormat; }
     bool isArray() const { return mIsArray; }
 
-private:
+  private:
     Handle<deleteTexture> mHandle;
     Format mFormat = Format::RGBA8;
     int mWidth = 0;
@@ -113,18 +110,18 @@ private:
 };
 
 class Sampler {
-public:
+  public:
     Sampler() = default;
     Sampler(std::string_view label, Filter filter, Wrap wrap);
     void bindUnit(GLuint unit) const;
     GLuint getId() const { return mHandle.get(); }
 
-private:
+  private:
     Handle<deleteSampler> mHandle;
 };
 
 class Framebuffer {
-public:
+  public:
     Framebuffer() = default;
     explicit Framebuffer(std::string_view label);
     // layer < 0 attaches the whole texture (a layered attachment for arrays).
@@ -144,7 +141,7 @@ public:
     int getWidth() const { return mWidth; }
     int getHeight() const { return mHeight; }
 
-private:
+  private:
     Handle<deleteFramebuffer> mHandle;
     std::string mLabel;
     int mWidth = 0;
@@ -152,7 +149,7 @@ private:
 };
 
 class VertexArray {
-public:
+  public:
     VertexArray() = default;
     explicit VertexArray(std::string_view label);
     // Float vertex attribute `location` read from `buffer` with the given stride and offset.
@@ -163,7 +160,7 @@ public:
     void bind() const;
     GLuint getId() const { return mHandle.get(); }
 
-private:
+  private:
     Handle<deleteVertexArray> mHandle;
 };
 
@@ -175,18 +172,18 @@ enum class QueryTarget : GLenum {
 };
 
 class Query {
-public:
+  public:
     Query() = default;
     Query(std::string_view label, QueryTarget target);
     void begin() const;
     void end() const;
-    uint64_t getResult() const; // waits for the result
+    uint64_t getResult() const;     // waits for the result
     bool isResultAvailable() const; // without waiting
     // Writes the 32-bit result into `buffer` at offsetBytes on the GPU (ARB_query_buffer_object).
     void writeResultTo(const Buffer& buffer, size_t offsetBytes) const;
     GLuint getId() const { return mHandle.get(); }
 
-private:
+  private:
     Handle<deleteQuery> mHandle;
     QueryTarget mTarget = QueryTarget::TimeElapsed;
 };
@@ -199,7 +196,7 @@ enum class Primitive : GLenum {
 };
 
 class TransformFeedback {
-public:
+  public:
     TransformFeedback() = default;
     explicit TransformFeedback(std::string_view label);
     void attachBuffer(GLuint index, const Buffer& buffer, size_t offsetBytes, size_t bytes);
@@ -208,7 +205,7 @@ public:
     void end() const;
     GLuint getId() const { return mHandle.get(); }
 
-private:
+  private:
     Handle<deleteTransformFeedback> mHandle;
 };
 

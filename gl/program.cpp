@@ -30,7 +30,8 @@ struct Expander {
         if (!included.insert(path).second) return; // each file once, like #pragma once
         const std::filesystem::path full = root / path;
         if (!std::filesystem::exists(full)) {
-            if (from.empty()) throw Error(path + ": shader source not found under " + root.string());
+            if (from.empty())
+                throw Error(path + ": shader source not found under " + root.string());
             throw Error(from + ":" + std::to_string(fromLine) + ": cannot find included file \"" +
                         path + "\"");
         }
@@ -64,10 +65,14 @@ struct Expander {
 
 GLenum getStageEnum(ShaderStage stage) {
     switch (stage) {
-    case ShaderStage::Vertex: return GL_VERTEX_SHADER;
-    case ShaderStage::Geometry: return GL_GEOMETRY_SHADER;
-    case ShaderStage::Fragment: return GL_FRAGMENT_SHADER;
-    case ShaderStage::Compute: return GL_COMPUTE_SHADER;
+    case ShaderStage::Vertex:
+        return GL_VERTEX_SHADER;
+    case ShaderStage::Geometry:
+        return GL_GEOMETRY_SHADER;
+    case ShaderStage::Fragment:
+        return GL_FRAGMENT_SHADER;
+    case ShaderStage::Compute:
+        return GL_COMPUTE_SHADER;
     }
     return GL_VERTEX_SHADER;
 }
@@ -94,7 +99,8 @@ ExpandedSource expandShaderSource(const std::filesystem::path& root, const std::
                                   const std::vector<std::string>& defines) {
     Expander expander{root, {}, {}};
     expander.out.text = kVersionLine;
-    for (const std::string& define : defines) expander.out.text += "#define " + define + "\n";
+    for (const std::string& define : defines)
+        expander.out.text += "#define " + define + "\n";
     expander.expand(path, "", 0);
     return std::move(expander.out);
 }
@@ -129,11 +135,13 @@ Program Program::build(const std::filesystem::path& root, const ProgramDesc& des
     program.mHandle = Handle<deleteProgram>(id);
     std::vector<GLuint> shaders;
     auto deleteShaders = [&] {
-        for (GLuint s : shaders) glDeleteShader(s);
+        for (GLuint s : shaders)
+            glDeleteShader(s);
     };
     for (const auto& [stage, path] : desc.stages) {
         ExpandedSource source = expandShaderSource(root, path, desc.defines);
-        for (const std::string& f : source.files) program.mSourceFiles.push_back(root / f);
+        for (const std::string& f : source.files)
+            program.mSourceFiles.push_back(root / f);
         const GLuint shader = glCreateShader(getStageEnum(stage));
         shaders.push_back(shader);
         const char* text = source.text.c_str();
@@ -150,7 +158,8 @@ Program Program::build(const std::filesystem::path& root, const ProgramDesc& des
     }
     if (!desc.feedbackVaryings.empty()) {
         std::vector<const char*> names;
-        for (const std::string& v : desc.feedbackVaryings) names.push_back(v.c_str());
+        for (const std::string& v : desc.feedbackVaryings)
+            names.push_back(v.c_str());
         glTransformFeedbackVaryings(id, static_cast<GLsizei>(names.size()), names.data(),
                                     GL_INTERLEAVED_ATTRIBS);
     }
@@ -163,6 +172,8 @@ Program Program::build(const std::filesystem::path& root, const ProgramDesc& des
     return program;
 }
 
-void Program::use() const { glUseProgram(getId()); }
+void Program::use() const {
+    glUseProgram(getId());
+}
 
 } // namespace gl

@@ -33,7 +33,7 @@ ExpandedSource expandShaderSource(const std::filesystem::path& root, const std::
 std::string translateShaderLog(const std::string& log, const std::vector<std::string>& files);
 
 class Program {
-public:
+  public:
     Program() = default;
     // Compiles and links; throws gl::Error on failure.
     static Program build(const std::filesystem::path& root, const ProgramDesc& desc);
@@ -42,7 +42,7 @@ public:
     // The files the program was built from, for hot reload.
     const std::vector<std::filesystem::path>& getSourceFiles() const { return mSourceFiles; }
 
-private:
+  private:
     Handle<deleteProgram> mHandle;
     std::vector<std::filesystem::path> mSourceFiles;
 };

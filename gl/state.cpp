@@ -36,7 +36,9 @@ void applyState(const PipelineState& state) {
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
-void memoryBarrier(Barrier barriers) { glMemoryBarrier(static_cast<GLbitfield>(barriers)); }
+void memoryBarrier(Barrier barriers) {
+    glMemoryBarrier(static_cast<GLbitfield>(barriers));
+}
 
 void drawArrays(Primitive primitive, int first, int count) {
     glDrawArrays(static_cast<GLenum>(primitive), first, count);
@@ -70,7 +72,9 @@ void dispatchComputeIndirect(const Buffer& arguments, size_t offsetBytes) {
     Buffer::unbind(BufferTarget::DispatchIndirect);
 }
 
-void finish() { glFinish(); }
+void finish() {
+    glFinish();
+}
 
 void bindDefaultFramebuffer(int width, int height) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -87,7 +87,8 @@ std::optional<std::vector<PassTimer::Sample>> PassTimer::collect() {
     for (size_t i = mInFlight.size(); i-- > 0;) {
         if (!isAvailable(mInFlight[i])) continue;
         std::vector<Sample> samples = read(mInFlight[i]);
-        for (size_t j = 0; j < i; ++j) recycle(mInFlight[j]);
+        for (size_t j = 0; j < i; ++j)
+            recycle(mInFlight[j]);
         mInFlight.erase(mInFlight.begin(), mInFlight.begin() + static_cast<std::ptrdiff_t>(i) + 1);
         return samples;
     }
@@ -98,7 +99,8 @@ std::optional<std::vector<PassTimer::Sample>> PassTimer::collectLatest() {
     endFrame();
     if (mInFlight.empty()) return std::nullopt;
     std::vector<Sample> samples = read(mInFlight.back()); // getResult waits
-    for (Frame& frame : mInFlight) recycle(frame);
+    for (Frame& frame : mInFlight)
+        recycle(frame);
     mInFlight.clear();
     return samples;
 }

@@ -21,7 +21,7 @@ enum class TimingMethod { TimerQuery, CpuFinish };
 const char* getTimingMethodName(TimingMethod method);
 
 class PassTimer {
-public:
+  public:
     // Frames whose queries may wait for their results; an older one is dropped unread.
     static constexpr size_t kMaxFramesInFlight = 4;
 
@@ -45,7 +45,7 @@ public:
     void endFrame();
     size_t getFramesInFlight() const { return mInFlight.size(); }
 
-private:
+  private:
     struct Pending {
         std::string name;
         Query query;

@@ -13,8 +13,8 @@ WindowContext::WindowContext(const WindowOptions& options) {
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, GLFW_TRUE);
     glfwWindowHint(GLFW_VISIBLE, options.visible ? GLFW_TRUE : GLFW_FALSE);
-    mWindow = glfwCreateWindow(options.width, options.height, options.title.c_str(), nullptr,
-                               nullptr);
+    mWindow =
+        glfwCreateWindow(options.width, options.height, options.title.c_str(), nullptr, nullptr);
     if (!mWindow) {
         glfwTerminate();
         throw Error("GLFW: cannot create a window with an OpenGL 4.5 core context");
@@ -34,10 +34,13 @@ WindowContext::~WindowContext() {
     glfwTerminate();
 }
 
-void WindowContext::bindCurrent() { glfwMakeContextCurrent(mWindow); }
+void WindowContext::bindCurrent() {
+    glfwMakeContextCurrent(mWindow);
+}
 
 void WindowContext::loadFunctions() {
-    if (!gladLoadGL(glfwGetProcAddress)) throw Error("GLFW: OpenGL 4.5 entry points could not be loaded");
+    if (!gladLoadGL(glfwGetProcAddress))
+        throw Error("GLFW: OpenGL 4.5 entry points could not be loaded");
 }
 
 } // namespace gl

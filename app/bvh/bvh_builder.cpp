@@ -38,7 +38,8 @@ class Builder {
     Builder(std::span<const Aabb> bounds, const BvhBuildParams& params)
         : mBounds(bounds), mParams(params), mCentroids(bounds.size()) {
         assert(params.maxLeafSize >= 1 && params.binCount >= 2);
-        for (size_t i = 0; i < bounds.size(); ++i) mCentroids[i] = bounds[i].getCenter();
+        for (size_t i = 0; i < bounds.size(); ++i)
+            mCentroids[i] = bounds[i].getCenter();
     }
 
     BvhTree build() {
@@ -128,8 +129,8 @@ class Builder {
         for (uint32_t b = 1; b < binCount; ++b) {
             leftBox.extend(bins[b - 1].bounds);
             leftCount += bins[b - 1].count;
-            const float cost = computeSurfaceArea(leftBox) * static_cast<float>(leftCount) +
-                               rightCost[b];
+            const float cost =
+                computeSurfaceArea(leftBox) * static_cast<float>(leftCount) + rightCost[b];
             if (leftCount > 0 && leftCount < count && cost < bestCost) {
                 bestCost = cost;
                 bestSplit = b;
@@ -138,13 +139,12 @@ class Builder {
         // A node small enough for a leaf stays one unless the SAH says splitting is cheaper; a
         // bigger node is split even when the SAH would keep it whole.
         const float area = computeSurfaceArea(box);
-        const float splitCost = mParams.traversalCost +
-                                mParams.intersectionCost * bestCost / std::max(area, kMinArea);
+        const float splitCost =
+            mParams.traversalCost + mParams.intersectionCost * bestCost / std::max(area, kMinArea);
         const float leafCost = mParams.intersectionCost * static_cast<float>(count);
         if (mayBeLeaf && (area <= 0.0f || splitCost >= leafCost)) return makeLeaf();
-        auto* midPtr = std::partition(first, last, [&](uint32_t prim) {
-            return getBin(prim) < bestSplit;
-        });
+        auto* midPtr =
+            std::partition(first, last, [&](uint32_t prim) { return getBin(prim) < bestSplit; });
         const auto mid = static_cast<uint32_t>(midPtr - tree.order.data());
         assert(mid > task.begin && mid < task.end);
         return mid;

@@ -2,8 +2,8 @@
 // components carry uint bits, so every access goes through std::bit_cast.
 #pragma once
 
-#include <shared/bvh_data.h>
 #include "scene/scene.h"
+#include <shared/bvh_data.h>
 
 #include <bit>
 #include <cstdint>

@@ -10,7 +10,8 @@ namespace {
 
 Aabb computeTriangleBounds(const Mesh& mesh, const glm::uvec3& tri) {
     Aabb box;
-    for (int k = 0; k < 3; ++k) box.extend(mesh.positions[tri[k]]);
+    for (int k = 0; k < 3; ++k)
+        box.extend(mesh.positions[tri[k]]);
     return box;
 }
 
@@ -28,7 +29,8 @@ void appendBottomLevel(BvhScene& bvh, const BvhTree& tree, uint32_t firstTriangl
                                                      getRightChild(node) + nodeBase));
         }
     }
-    for (uint32_t local : tree.order) bvh.blasTriangleOrder.push_back(firstTriangle + local);
+    for (uint32_t local : tree.order)
+        bvh.blasTriangleOrder.push_back(firstTriangle + local);
     bvh.meshBlasRoots.push_back(nodeBase);
 }
 
@@ -79,7 +81,8 @@ void rebuildTopLevel(BvhScene& bvh, const Scene& scene) {
         kept.push_back(i);
     }
     BvhTree tree = buildBvh(bounds, kTlasBuildParams);
-    for (uint32_t& slot : tree.order) slot = kept[slot];
+    for (uint32_t& slot : tree.order)
+        slot = kept[slot];
     bvh.tlasNodes = std::move(tree.nodes);
     bvh.tlasInstanceOrder = std::move(tree.order);
     bvh.tlasDepth = tree.depth;

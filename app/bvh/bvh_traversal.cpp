@@ -86,15 +86,14 @@ struct HitRecord {
 };
 
 // Tests one triangle of one instance; returns true when an any-hit query may stop.
-bool testTriangle(const Scene& scene, uint32_t meshIndex, uint32_t firstTriangle,
-                  uint32_t instance, uint32_t globalTriangle, const ObjectRay& ray,
-                  HitRecord& record, bool isAnyHit) {
+bool testTriangle(const Scene& scene, uint32_t meshIndex, uint32_t firstTriangle, uint32_t instance,
+                  uint32_t globalTriangle, const ObjectRay& ray, HitRecord& record, bool isAnyHit) {
     const Mesh& mesh = scene.meshes[meshIndex];
     const glm::uvec3 tri = mesh.triangles[globalTriangle - firstTriangle];
     float t = 0.0f;
     glm::vec2 bary{0.0f};
-    if (!intersectTriangle(mesh.positions[tri.x], mesh.positions[tri.y], mesh.positions[tri.z],
-                           ray, t, bary)) {
+    if (!intersectTriangle(mesh.positions[tri.x], mesh.positions[tri.y], mesh.positions[tri.z], ray,
+                           t, bary)) {
         return false;
     }
     return record.consider(instance, globalTriangle, t, bary) && isAnyHit;
@@ -103,9 +102,8 @@ bool testTriangle(const Scene& scene, uint32_t meshIndex, uint32_t firstTriangle
 // Visits the leaves of one tree whose boxes the ray enters before record.tMax, nearest child
 // first; visitLeaf returns true to stop.
 template <typename VisitLeaf>
-bool traverseTree(const std::vector<gpu::GpuBvhNode>& nodes, uint32_t root,
-                  const glm::vec3& origin, const glm::vec3& invDirection,
-                  const HitRecord& record, VisitLeaf&& visitLeaf) {
+bool traverseTree(const std::vector<gpu::GpuBvhNode>& nodes, uint32_t root, const glm::vec3& origin,
+                  const glm::vec3& invDirection, const HitRecord& record, VisitLeaf&& visitLeaf) {
     std::array<uint32_t, gpu::kBvhStackSize> stack{};
     std::array<float, gpu::kBvhStackSize> stackEntry{};
     size_t top = 0;
@@ -158,30 +156,30 @@ std::optional<Hit> traverseScene(const BvhScene& bvh, const Scene& scene, const 
     HitRecord record;
     record.tMax = ray.tMax;
     const glm::vec3 invDirection = 1.0f / ray.direction;
-    traverseTree(bvh.tlasNodes, 0, ray.origin, invDirection, record,
-                 [&](const gpu::GpuBvhNode& tlasLeaf) {
-        for (uint32_t k = 0; k < getPrimitiveCount(tlasLeaf); ++k) {
-            const uint32_t instance = bvh.tlasInstanceOrder[getFirstPrimitive(tlasLeaf) + k];
-            const uint32_t meshIndex = scene.instances[instance].meshIndex;
-            const uint32_t firstTriangle = bvh.meshFirstTriangles[meshIndex];
-            const ObjectRay objectRay = transformRay(bvh.objectFromWorld[instance], ray);
-            const bool stop = traverseTree(
-                bvh.blasNodes, bvh.meshBlasRoots[meshIndex], objectRay.origin,
-                objectRay.invDirection, record, [&](const gpu::GpuBvhNode& blasLeaf) {
-                    const uint32_t first = getFirstPrimitive(blasLeaf);
-                    for (uint32_t j = 0; j < getPrimitiveCount(blasLeaf); ++j) {
-                        if (testTriangle(scene, meshIndex, firstTriangle, instance,
-                                         bvh.blasTriangleOrder[first + j], objectRay, record,
-                                         isAnyHit)) {
-                            return true;
+    traverseTree(
+        bvh.tlasNodes, 0, ray.origin, invDirection, record, [&](const gpu::GpuBvhNode& tlasLeaf) {
+            for (uint32_t k = 0; k < getPrimitiveCount(tlasLeaf); ++k) {
+                const uint32_t instance = bvh.tlasInstanceOrder[getFirstPrimitive(tlasLeaf) + k];
+                const uint32_t meshIndex = scene.instances[instance].meshIndex;
+                const uint32_t firstTriangle = bvh.meshFirstTriangles[meshIndex];
+                const ObjectRay objectRay = transformRay(bvh.objectFromWorld[instance], ray);
+                const bool stop = traverseTree(
+                    bvh.blasNodes, bvh.meshBlasRoots[meshIndex], objectRay.origin,
+                    objectRay.invDirection, record, [&](const gpu::GpuBvhNode& blasLeaf) {
+                        const uint32_t first = getFirstPrimitive(blasLeaf);
+                        for (uint32_t j = 0; j < getPrimitiveCount(blasLeaf); ++j) {
+                            if (testTriangle(scene, meshIndex, firstTriangle, instance,
+                                             bvh.blasTriangleOrder[first + j], objectRay, record,
+                                             isAnyHit)) {
+                                return true;
+                            }
                         }
-                    }
-                    return false;
-                });
-            if (stop) return true;
-        }
-        return false;
-    });
+                        return false;
+                    });
+                if (stop) return true;
+            }
+            return false;
+        });
     if (!record.found) return std::nullopt;
     return record.hit;
 }

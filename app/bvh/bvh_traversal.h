@@ -21,8 +21,8 @@ struct Ray {
 
 struct Hit {
     uint32_t instanceIndex = 0;
-    uint32_t triangleIndex = 0; // global, as GpuScene numbers triangles
-    float t = 0.0f;             // world-space distance along the ray
+    uint32_t triangleIndex = 0;   // global, as GpuScene numbers triangles
+    float t = 0.0f;               // world-space distance along the ray
     glm::vec2 barycentrics{0.0f}; // weights of the triangle's second and third vertex
 };
 

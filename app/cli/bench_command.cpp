@@ -34,7 +34,7 @@
 namespace ispm {
 namespace {
 
-constexpr int kMinTimedFrames = 1; // a median needs at least one sample
+constexpr int kMinTimedFrames = 1;   // a median needs at least one sample
 constexpr int kMinFlickerFrames = 2; // a standard deviation needs two
 
 // A texture's texels with row 0 at the top (as Image), w kept.
@@ -44,8 +44,8 @@ std::vector<glm::vec4> readTopDown(const gl::Texture& texture) {
     const auto height = static_cast<size_t>(texture.getHeight());
     std::vector<glm::vec4> out(texels.size());
     for (size_t y = 0; y < height; ++y) {
-        std::copy_n(texels.begin() + static_cast<std::ptrdiff_t>((height - 1 - y) * width),
-                    width, out.begin() + static_cast<std::ptrdiff_t>(y * width));
+        std::copy_n(texels.begin() + static_cast<std::ptrdiff_t>((height - 1 - y) * width), width,
+                    out.begin() + static_cast<std::ptrdiff_t>(y * width));
     }
     return out;
 }
@@ -66,11 +66,12 @@ struct PresetSetting {
 // travel distance, splats at full resolution, no filter after them.
 constexpr const char* kThesisPresetName = "thesis";
 constexpr const char* kThesisScene = "scenes/box_city.json"; // under ISPM_ASSET_DIR
-constexpr double kSplatFullResolution = 1; // splat_resolution's choice "1"
+constexpr double kSplatFullResolution = 1;                   // splat_resolution's choice "1"
 constexpr PresetSetting kThesisSettings[] = {
-    {"width", 1280},  {"height", 1024},    {"photons", 50000},
-    {"bounces", 3},   {"importance", 0},   {"radius_mode", gpu::kRadiusTravel},
-    {"denoise", 0},   {"splat_resolution", kSplatFullResolution}};
+    {"width", 1280},    {"height", 1024},
+    {"photons", 50000}, {"bounces", 3},
+    {"importance", 0},  {"radius_mode", gpu::kRadiusTravel},
+    {"denoise", 0},     {"splat_resolution", kSplatFullResolution}};
 
 // Preset settings that name no entry in the settings table (yet) are skipped and reported, so the
 // preset keeps its meaning as the photon pipeline's settings arrive.
@@ -187,12 +188,10 @@ void printJson(const BenchReport& r) {
     out["peak_rss_mib"] = r.peakRssMib ? nlohmann::json(*r.peakRssMib) : nlohmann::json(nullptr);
     out["gl_bytes"] = r.glBytes;
     if (r.photons) {
-        out["photons"] = {{"emitted", r.photons->emitted},
-                          {"bounced", r.photons->bounced},
-                          {"stored", r.photons->stored},
-                          {"stored_in_view", r.photons->inView},
-                          {"overflow", r.photons->overflow},
-                          {"per_light", nlohmann::json::array()}};
+        out["photons"] = {
+            {"emitted", r.photons->emitted},   {"bounced", r.photons->bounced},
+            {"stored", r.photons->stored},     {"stored_in_view", r.photons->inView},
+            {"overflow", r.photons->overflow}, {"per_light", nlohmann::json::array()}};
         for (const LightCounts& l : r.photons->perLight) {
             out["photons"]["per_light"].push_back({{"emitted", l.emitted},
                                                    {"bounced", l.bounced},
@@ -201,9 +200,9 @@ void printJson(const BenchReport& r) {
         }
     }
     if (r.flicker) {
-        out["flicker"] = {{"frames", r.flicker->frames},     {"all", r.flicker->all},
-                          {"away", r.flicker->away},         {"away_m", r.flicker->awayM},
-                          {"pixels", r.flicker->pixels},     {"away_pixels", r.flicker->awayPixels}};
+        out["flicker"] = {{"frames", r.flicker->frames}, {"all", r.flicker->all},
+                          {"away", r.flicker->away},     {"away_m", r.flicker->awayM},
+                          {"pixels", r.flicker->pixels}, {"away_pixels", r.flicker->awayPixels}};
     }
     out["settings"] = r.settings;
     if (!r.presetName.empty()) {
@@ -258,8 +257,9 @@ void printText(const BenchReport& r) {
                     r.photons->overflow);
         for (size_t i = 0; i < r.photons->perLight.size(); ++i) {
             const LightCounts& l = r.photons->perLight[i];
-            std::printf("  light %zu: emitted %u, after the first bounce %u, stored %u (%u in view)\n",
-                        i, l.emitted, l.bounced, l.stored, l.inView);
+            std::printf(
+                "  light %zu: emitted %u, after the first bounce %u, stored %u (%u in view)\n", i,
+                l.emitted, l.bounced, l.stored, l.inView);
         }
     }
     const std::string rss = r.peakRssMib ? strCat(static_cast<int64_t>(*r.peakRssMib + 0.5), " MiB")

@@ -14,9 +14,9 @@ class App;
 namespace ispm {
 
 struct BenchOptions {
-    std::string scenePath; // optional only with a preset, which then supplies the scene
+    std::string scenePath;  // optional only with a preset, which then supplies the scene
     std::string cameraName; // --camera: one of the file's `cameras` ("" = `camera`)
-    int frames = 10;       // timed frames
+    int frames = 10;        // timed frames
     // The first use of a program costs about 60 ms on llvmpipe (DESIGN.md): frames before the
     // timed ones absorb that.
     int warmup = 2;

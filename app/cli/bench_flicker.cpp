@@ -14,7 +14,9 @@ float computeDistanceToBox(const glm::vec3& p, const Aabb& box) {
     return glm::length(outside);
 }
 
-double computeMeanLight(const glm::vec3& rgb) { return (double(rgb.x) + double(rgb.y) + double(rgb.z)) / 3.0; }
+double computeMeanLight(const glm::vec3& rgb) {
+    return (double(rgb.x) + double(rgb.y) + double(rgb.z)) / 3.0;
+}
 
 } // namespace
 
@@ -26,7 +28,8 @@ void FlickerMeter::addFrame(const Image& indirect, const std::vector<glm::vec4>&
         mSumSquares.assign(n, 0.0);
         mNearestMovingM.assign(n, std::numeric_limits<float>::max());
         mSurface.assign(n, false);
-        for (size_t i = 0; i < n && i < positions.size(); ++i) mSurface[i] = positions[i].w > 0.5f;
+        for (size_t i = 0; i < n && i < positions.size(); ++i)
+            mSurface[i] = positions[i].w > 0.5f;
     }
     std::vector<Aabb> moving;
     for (const InstanceAnimation& a : scene.instanceAnimations) {
@@ -40,7 +43,8 @@ void FlickerMeter::addFrame(const Image& indirect, const std::vector<glm::vec4>&
         mSumSquares[i] += light * light;
         if (i >= positions.size() || positions[i].w <= 0.5f) continue;
         for (const Aabb& box : moving) {
-            mNearestMovingM[i] = std::min(mNearestMovingM[i], computeDistanceToBox(glm::vec3(positions[i]), box));
+            mNearestMovingM[i] =
+                std::min(mNearestMovingM[i], computeDistanceToBox(glm::vec3(positions[i]), box));
         }
     }
     ++mFrames;

@@ -13,22 +13,23 @@ namespace ispm {
 
 struct FlickerResult {
     int frames = 0;
-    double all = 0.0;     // mean std / mean light, every surface pixel
-    double away = 0.0;    // the same over the pixels away from moving objects (0 when none)
-    double awayM = 0.0;   // the distance that defines "away"
-    size_t pixels = 0;    // surface pixels
+    double all = 0.0;   // mean std / mean light, every surface pixel
+    double away = 0.0;  // the same over the pixels away from moving objects (0 when none)
+    double awayM = 0.0; // the distance that defines "away"
+    size_t pixels = 0;  // surface pixels
     size_t awayPixels = 0;
 };
 
 class FlickerMeter {
-public:
+  public:
     explicit FlickerMeter(double awayM) : mAwayM(awayM) {}
     // One frame: its indirect light, the viewer G-buffer's positions (w > 0.5: a surface) and
     // the scene as drawn (the animated instances' boxes are taken from it).
-    void addFrame(const Image& indirect, const std::vector<glm::vec4>& positions, const Scene& scene);
+    void addFrame(const Image& indirect, const std::vector<glm::vec4>& positions,
+                  const Scene& scene);
     FlickerResult getResult() const;
 
-private:
+  private:
     double mAwayM;
     int mFrames = 0;
     std::vector<double> mSum;

@@ -8,8 +8,8 @@
 #include "core/input_error.h"
 #include "core/strings.h"
 #include "gl/context.h"
-#include "gl/timer.h"
 #include "gl/gl.h"
+#include "gl/timer.h"
 #include "image/image_io.h"
 #include "image/metrics.h"
 #include "scene/scene_loader.h"
@@ -33,7 +33,8 @@ int runInfo() {
     std::printf("context path:  %s\n", gl::getContextPathName(info.path));
     std::printf("device:        %s\n", info.device.c_str());
     std::printf("vendor:        %s\n", info.vendor.c_str());
-    std::printf("renderer:      %s%s\n", info.renderer.c_str(), info.isSoftware ? " (software)" : "");
+    std::printf("renderer:      %s%s\n", info.renderer.c_str(),
+                info.isSoftware ? " (software)" : "");
     std::printf("version:       %s\n", info.version.c_str());
     std::printf("GLSL:          %s\n", info.glslVersion.c_str());
     std::printf("pass timing:   %s\n",
@@ -107,8 +108,8 @@ int runCompare(const std::string& a, const std::string& b, const std::string& mi
     std::printf("SSIM        %.6f\n", m.ssim);
     std::printf("mean ratio  %.6f %.6f %.6f\n", m.meanRatio.x, m.meanRatio.y, m.meanRatio.z);
     if (m.litPixelCount > 0) {
-        std::printf("energy        %.6f (mean ratio over the %zu pixels not black in B)\n", m.energy,
-                    m.litPixelCount);
+        std::printf("energy        %.6f (mean ratio over the %zu pixels not black in B)\n",
+                    m.energy, m.litPixelCount);
         std::printf("rel RMSE 4x4  %.6f\n", m.relRmse4);
         std::printf("rel RMSE 1x1  %.6f\n", m.relRmse1);
     } else {
@@ -147,7 +148,8 @@ int runCli(int argc, char** argv) {
         "info", "Print the OpenGL context: path taken, vendor, renderer, version, limits");
 
     CLI::App* settingsCmd = app.add_subcommand(
-        "settings", "Print the settings table (name, type, default, range, unit, meaning) as Markdown");
+        "settings",
+        "Print the settings table (name, type, default, range, unit, meaning) as Markdown");
 
     std::string compareA;
     std::string compareB;
@@ -174,8 +176,10 @@ int runCli(int argc, char** argv) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
         if (argc > 1 && app.get_subcommands().empty() && argv[1][0] != '-') {
-            std::fprintf(stderr, "ispm: unknown subcommand '%s' (expected render, view, bench, export, "
-                                 "info, settings or compare; see ispm --help)\n", argv[1]);
+            std::fprintf(stderr,
+                         "ispm: unknown subcommand '%s' (expected render, view, bench, export, "
+                         "info, settings or compare; see ispm --help)\n",
+                         argv[1]);
         } else {
             std::fprintf(stderr, "ispm: %s\n", e.what());
         }
@@ -197,7 +201,8 @@ int runCli(int argc, char** argv) {
             std::fputs(formatSettingsMarkdown().c_str(), stdout);
             return 0;
         }
-        if (app.got_subcommand(compareCmd)) return runCompare(compareA, compareB, minusPath, maskPath, maxRelMse);
+        if (app.got_subcommand(compareCmd))
+            return runCompare(compareA, compareB, minusPath, maskPath, maxRelMse);
     } catch (const InputError& e) {
         std::fprintf(stderr, "ispm: %s\n", e.what());
         return kExitBadInput;

@@ -26,13 +26,15 @@ OutputKind classifyOutput(const std::string& path, const std::string& where) {
     if (ext == ".png") return OutputKind::Png;
     if (ext == ".pfm") return OutputKind::Pfm;
     if (ext == ".exr") return OutputKind::Exr;
-    throw InputError(strCat(where, ": expected a file ending in .png, .pfm or .exr, got '", path, "'"));
+    throw InputError(
+        strCat(where, ": expected a file ending in .png, .pfm or .exr, got '", path, "'"));
 }
 
 Settings makeCommandLineSettings(const std::vector<std::string>& sets, std::optional<int> width,
                                  std::optional<int> height) {
     Settings settings;
-    for (const std::string& s : sets) settings.setFromString(s, "--set " + s);
+    for (const std::string& s : sets)
+        settings.setFromString(s, "--set " + s);
     if (width) settings.set("width", *width, "--width");
     if (height) settings.set("height", *height, "--height");
     return settings;
@@ -40,7 +42,8 @@ Settings makeCommandLineSettings(const std::vector<std::string>& sets, std::opti
 
 void printTimings(const FrameRunner& runner, const gl::ContextInfo& info) {
     std::printf("renderer: %s (%s); pass times by %s\n", info.renderer.c_str(),
-                gl::getContextPathName(info.path), gl::getTimingMethodName(runner.getTimingMethod()));
+                gl::getContextPathName(info.path),
+                gl::getTimingMethodName(runner.getTimingMethod()));
     double total = 0.0;
     for (const PassTiming& t : runner.getLastTimings()) {
         std::printf("  %-12s %9.2f ms\n", t.name.c_str(), t.ms);

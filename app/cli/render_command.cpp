@@ -54,13 +54,16 @@ void addRenderCommand(CLI::App& app, RenderOptions& options) {
 
 namespace {
 
-bool isTerminal() { return ::isatty(::fileno(stderr)) != 0; }
+bool isTerminal() {
+    return ::isatty(::fileno(stderr)) != 0;
+}
 
 void printProgress(int done, int total, double elapsedS) {
     constexpr int kBarWidth = 30;
     const int filled = total > 0 ? done * kBarWidth / total : kBarWidth;
     const double left = done > 0 ? elapsedS / done * (total - done) : 0.0;
-    std::fprintf(stderr, "\r[%s%s] %d/%d spp, %.1f s left  ", std::string(size_t(filled), '#').c_str(),
+    std::fprintf(stderr, "\r[%s%s] %d/%d spp, %.1f s left  ",
+                 std::string(size_t(filled), '#').c_str(),
                  std::string(size_t(kBarWidth - filled), '.').c_str(), done, total, left);
     if (done == total) std::fprintf(stderr, "\n");
 }
@@ -100,8 +103,9 @@ int runRender(const RenderOptions& options) {
     }
     const bool isReference = options.mode == "reference";
     if (kind == OutputKind::Png && aov != Aov::Total) {
-        throw InputError(strCat("--aov: a PNG holds the tone-mapped total; write .pfm or .exr for '",
-                                options.aov, "'"));
+        throw InputError(
+            strCat("--aov: a PNG holds the tone-mapped total; write .pfm or .exr for '",
+                   options.aov, "'"));
     }
     if (isReference && kind == OutputKind::Png) {
         throw InputError("--output: reference mode writes linear radiance: expected .pfm or .exr");
@@ -124,24 +128,27 @@ int runRender(const RenderOptions& options) {
     if (isReference) return runReference(options, scene, settings, start);
 
     auto context = gl::createHeadlessContext();
-    const gl::TimingMethod timing = context->getInfo().isSoftware ? gl::TimingMethod::CpuFinish
-                                                                  : gl::TimingMethod::TimerQuery;
+    const gl::TimingMethod timing =
+        context->getInfo().isSoftware ? gl::TimingMethod::CpuFinish : gl::TimingMethod::TimerQuery;
     FrameRunner runner(scene, settings, timing);
     // The first frame compiles shaders in the driver and touches every resource once; time the
     // second, which is what every later frame costs. Accumulating, every frame counts: the image
     // is the average of `accumulate` frames.
     const int accumulate = settings.getInt("accumulate");
     const int frames = accumulate > 0 ? accumulate : 2;
-    for (int i = 0; i < frames; ++i) runner.renderFrame();
+    for (int i = 0; i < frames; ++i)
+        runner.renderFrame();
     runner.waitForTimings(); // one frame to report: the frame is over, waiting costs nothing
-    const Image image = readTextureImage(runner.getAov(kind == OutputKind::Png ? Aov::Display : aov));
+    const Image image =
+        readTextureImage(runner.getAov(kind == OutputKind::Png ? Aov::Display : aov));
     writeImage(options.outputPath, image);
     if (!options.quiet) {
-        const double totalMs = std::chrono::duration<double, std::milli>(
-                                   std::chrono::steady_clock::now() - start)
-                                   .count();
+        const double totalMs =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count();
         std::printf("wrote %s (%dx%d, %s)\n", options.outputPath.c_str(), runner.getWidth(),
-                    runner.getHeight(), kind == OutputKind::Png ? "tone mapped" : options.aov.c_str());
+                    runner.getHeight(),
+                    kind == OutputKind::Png ? "tone mapped" : options.aov.c_str());
         if (accumulate > 0) {
             std::printf("indirect light: %u frames accumulated (seeds %d to %d)\n",
                         runner.getAccumulatedFrames(), settings.getInt("seed"),

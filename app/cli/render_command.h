@@ -21,10 +21,10 @@ struct RenderOptions {
     std::string aov = "total";
     bool quiet = false;
     std::string mode = "ispm";
-    int spp = 64;                // reference mode: samples per pixel
-    std::optional<int> bounces;  // setting `bounces`
+    int spp = 64;                  // reference mode: samples per pixel
+    std::optional<int> bounces;    // setting `bounces`
     std::optional<int> accumulate; // setting `accumulate`: that many frames are rendered
-    double timeS = 0.0;          // animation time (seconds); scenes without animation ignore it
+    double timeS = 0.0;            // animation time (seconds); scenes without animation ignore it
 };
 
 void addRenderCommand(CLI::App& app, RenderOptions& options);

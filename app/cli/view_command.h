@@ -14,7 +14,7 @@ namespace ispm {
 
 struct ViewOptions {
     std::string scenePath;
-    std::string cameraName; // --camera: one of the file's `cameras` ("" = `camera`)
+    std::string cameraName;   // --camera: one of the file's `cameras` ("" = `camera`)
     std::optional<int> width; // unset: from the settings
     std::optional<int> height;
     std::vector<std::string> sets;

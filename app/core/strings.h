@@ -6,8 +6,7 @@
 
 namespace ispm {
 
-template <typename... Args>
-std::string strCat(const Args&... args) {
+template <typename... Args> std::string strCat(const Args&... args) {
     std::ostringstream out;
     out.precision(9); // enough digits that a float survives the round trip
     (out << ... << args);

@@ -30,7 +30,7 @@ struct Image {
     glm::vec3& at(int x, int y) { return pixels[getIndex(x, y)]; }
     const glm::vec3& at(int x, int y) const { return pixels[getIndex(x, y)]; }
 
-private:
+  private:
     size_t getIndex(int x, int y) const {
         assert(x >= 0 && x < width && y >= 0 && y < height);
         return static_cast<size_t>(y) * static_cast<size_t>(width) + static_cast<size_t>(x);

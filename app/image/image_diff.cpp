@@ -45,8 +45,8 @@ ImageDiff computeImageDiff(const Image& test, const Image& reference, float pixe
         absErrorSum += static_cast<double>(error.r) + static_cast<double>(error.g) +
                        static_cast<double>(error.b);
         // Comparisons with NaN are false: a NaN pixel does not pass.
-        const bool passes = error.r <= pixelTolerance && error.g <= pixelTolerance &&
-                            error.b <= pixelTolerance;
+        const bool passes =
+            error.r <= pixelTolerance && error.g <= pixelTolerance && error.b <= pixelTolerance;
         failingCount += passes ? 0 : 1;
     }
     const double pixelCount = static_cast<double>(test.getPixelCount());

@@ -28,10 +28,10 @@
 namespace ispm {
 namespace {
 
-constexpr int kRgbChannels = 3;           // an Image holds RGB; alpha is neither read nor written
-constexpr int kRgbaChannels = 4;          // tinyexr's LoadEXR always returns RGBA
-constexpr float kMax8Bit = 255.0f;        // largest 8-bit PNG sample
-constexpr float kMax16Bit = 65535.0f;     // largest 16-bit PNG sample
+constexpr int kRgbChannels = 3;       // an Image holds RGB; alpha is neither read nor written
+constexpr int kRgbaChannels = 4;      // tinyexr's LoadEXR always returns RGBA
+constexpr float kMax8Bit = 255.0f;    // largest 8-bit PNG sample
+constexpr float kMax16Bit = 65535.0f; // largest 16-bit PNG sample
 constexpr std::string_view kPngSignature = "\x89PNG\r\n\x1a\n";
 constexpr std::string_view kExrSignature = "\x76\x2f\x31\x01"; // OpenEXR magic number 20000630
 // Images narrower and shorter than this are stored uncompressed, as tinyexr's own SaveEXR does:
@@ -123,8 +123,7 @@ Image decodePng(std::string_view bytes) {
         }
     } else {
         std::unique_ptr<stbi_uc, void (*)(void*)> samples(
-            stbi_load_from_memory(buffer, length, &width, &height, &channelsInFile,
-                                  kRgbChannels),
+            stbi_load_from_memory(buffer, length, &width, &height, &channelsInFile, kRgbChannels),
             stbi_image_free);
         if (samples) {
             return convertSamples(samples.get(), width, height, kMax8Bit);
@@ -177,8 +176,7 @@ std::string encodeExr(const Image& image) {
     header.requested_pixel_types = pixelTypes.data(); // type stored in the file
     const bool isSmall =
         image.width < kExrMinCompressedSizePx && image.height < kExrMinCompressedSizePx;
-    header.compression_type =
-        isSmall ? TINYEXR_COMPRESSIONTYPE_NONE : TINYEXR_COMPRESSIONTYPE_ZIP;
+    header.compression_type = isSmall ? TINYEXR_COMPRESSIONTYPE_NONE : TINYEXR_COMPRESSIONTYPE_ZIP;
 
     unsigned char* memory = nullptr;
     const char* error = nullptr;
@@ -197,10 +195,9 @@ Image decodeExr(std::string_view bytes) {
     int width = 0;
     int height = 0;
     const char* error = nullptr;
-    const int result =
-        LoadEXRFromMemory(&rgba, &width, &height,
-                          reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(),
-                          &error);
+    const int result = LoadEXRFromMemory(&rgba, &width, &height,
+                                         reinterpret_cast<const unsigned char*>(bytes.data()),
+                                         bytes.size(), &error);
     if (result != TINYEXR_SUCCESS) {
         throwExrError("decoding", error);
     }
@@ -236,15 +233,21 @@ bool isLinearImageFormat(ImageFormat format) {
 void writeImage(const std::string& path, const Image& image) {
     const ImageFormat format = getImageFormatFromPath(path);
     if (image.isEmpty()) {
-        throw std::runtime_error(strCat(path, ": cannot write an empty (", image.width, "x",
-                                        image.height, ") image"));
+        throw std::runtime_error(
+            strCat(path, ": cannot write an empty (", image.width, "x", image.height, ") image"));
     }
     std::string bytes;
     try {
         switch (format) {
-        case ImageFormat::Png: bytes = encodePng(image); break;
-        case ImageFormat::Pfm: bytes = encodePfm(image); break;
-        case ImageFormat::Exr: bytes = encodeExr(image); break;
+        case ImageFormat::Png:
+            bytes = encodePng(image);
+            break;
+        case ImageFormat::Pfm:
+            bytes = encodePfm(image);
+            break;
+        case ImageFormat::Exr:
+            bytes = encodeExr(image);
+            break;
         }
     } catch (const std::runtime_error& e) {
         throw std::runtime_error(strCat(path, ": ", e.what()));

@@ -24,9 +24,9 @@ struct ImageMetrics {
     // DESIGN.md's quality figures, over included pixels where the reference is not black; left
     // at these values (and litPixelCount 0) when the reference is black everywhere.
     size_t litPixelCount = 0;
-    double energy = 1.0;    // computeEnergyRatio
-    double relRmse4 = 0.0;  // computeRelRmse, 4x4 blocks
-    double relRmse1 = 0.0;  // computeRelRmse, per pixel
+    double energy = 1.0;   // computeEnergyRatio
+    double relRmse4 = 0.0; // computeRelRmse, 4x4 blocks
+    double relRmse1 = 0.0; // computeRelRmse, per pixel
 };
 
 // Side of the pixel blocks of the quality figure "rel RMSE (4x4)" (DESIGN.md): errors are
@@ -60,7 +60,8 @@ glm::dvec3 computeMeanRatio(const Image& test, const Image& reference,
 PixelMask selectLitPixels(const Image& reference, const PixelMask* mask);
 
 // mean(test) / mean(reference) over the lit pixels, all channels together (DESIGN.md "energy").
-double computeEnergyRatio(const Image& test, const Image& reference, const PixelMask* mask = nullptr);
+double computeEnergyRatio(const Image& test, const Image& reference,
+                          const PixelMask* mask = nullptr);
 
 // DESIGN.md's rel RMSE: each channel averaged over the lit pixels of every blockPx x blockPx
 // block (blocks without one are left out), then sqrt(mean over blocks and channels of

@@ -28,7 +28,7 @@ bool isPfmSpace(char c) {
 
 // Walks the text header token by token; `pos` ends on the byte after the last token read.
 class HeaderReader {
-public:
+  public:
     explicit HeaderReader(std::string_view bytes) : mBytes(bytes), mPos(kMagicLength) {}
 
     std::string_view readToken(const char* what) {
@@ -45,8 +45,7 @@ public:
         return mBytes.substr(start, mPos - start);
     }
 
-    template <typename T>
-    T readNumber(const char* what) {
+    template <typename T> T readNumber(const char* what) {
         const std::string_view token = readToken(what);
         T value{};
         const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
@@ -64,7 +63,7 @@ public:
         return mPos + 1;
     }
 
-private:
+  private:
     std::string_view mBytes;
     size_t mPos;
 };

@@ -12,11 +12,11 @@
 namespace ispm {
 namespace {
 
-constexpr int kWindowRadiusPx = 5;            // 11x11 window, as in Wang et al.
-constexpr double kWindowSigmaPx = 1.5;        // Gaussian sigma of the window, as in Wang et al.
-constexpr double kDynamicRange = 1.0;         // L: tone-mapped values lie in [0, 1)
-constexpr double kK1 = 0.01;                  // Wang et al.'s constants for C1 = (K1 L)^2 ...
-constexpr double kK2 = 0.03;                  // ... and C2 = (K2 L)^2
+constexpr int kWindowRadiusPx = 5;     // 11x11 window, as in Wang et al.
+constexpr double kWindowSigmaPx = 1.5; // Gaussian sigma of the window, as in Wang et al.
+constexpr double kDynamicRange = 1.0;  // L: tone-mapped values lie in [0, 1)
+constexpr double kK1 = 0.01;           // Wang et al.'s constants for C1 = (K1 L)^2 ...
+constexpr double kK2 = 0.03;           // ... and C2 = (K2 L)^2
 constexpr double kC1 = (kK1 * kDynamicRange) * (kK1 * kDynamicRange);
 constexpr double kC2 = (kK2 * kDynamicRange) * (kK2 * kDynamicRange);
 // Rec. 709 / sRGB primaries: the renderer's linear RGB.

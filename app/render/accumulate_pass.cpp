@@ -23,9 +23,10 @@ float computeAccumulateWeight(int accumulate, uint32_t historyFrames) {
 }
 
 AccumulatePass::AccumulatePass(const gl::Texture& direct, const gl::Texture& indirect)
-    : mProgram(ReloadableProgram({.label = "accumulate",
-                                  .stages = {{gl::ShaderStage::Vertex, "lib/fullscreen.vert"},
-                                             {gl::ShaderStage::Fragment, "denoise/accumulate.frag"}}})),
+    : mProgram(
+          ReloadableProgram({.label = "accumulate",
+                             .stages = {{gl::ShaderStage::Vertex, "lib/fullscreen.vert"},
+                                        {gl::ShaderStage::Fragment, "denoise/accumulate.frag"}}})),
       mVertexArray("accumulate vao"),
       mLights({Light{direct, ColorTarget("direct (accumulated)", gl::Format::RGBA32F), {}},
                Light{indirect, ColorTarget("indirect (accumulated)", gl::Format::RGBA32F), {}}}) {}

@@ -20,7 +20,7 @@ namespace ispm {
 float computeAccumulateWeight(int accumulate, uint32_t historyFrames);
 
 class AccumulatePass final : public Pass {
-public:
+  public:
     AccumulatePass(const gl::Texture& direct, const gl::Texture& indirect);
     const char* getName() const override { return "accumulate"; }
     void resize(int width, int height) override;
@@ -29,7 +29,7 @@ public:
     const gl::Texture& getDirect() const { return mLights[kDirect].target.getTexture(); }
     const gl::Texture& getIndirect() const { return mLights[kIndirect].target.getTexture(); }
 
-private:
+  private:
     static constexpr size_t kDirect = 0;
     static constexpr size_t kIndirect = 1;
     struct Light {

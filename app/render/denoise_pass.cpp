@@ -26,7 +26,8 @@ DenoisePass::DenoisePass(const GBuffer& viewer, const gl::Texture& indirect)
 void DenoisePass::execute(const FrameInputs& inputs) {
     const int width = mIndirect.getWidth();
     const int height = mIndirect.getHeight();
-    for (ColorTarget& target : mTargets) target.resize(width, height);
+    for (ColorTarget& target : mTargets)
+        target.resize(width, height);
     const int iterations = inputs.settings.denoiseIterations;
     const int divisor = inputs.settings.splatDivisor;
     if (iterations == 0) {

@@ -12,7 +12,7 @@
 namespace ispm {
 
 class DenoisePass final : public Pass {
-public:
+  public:
     DenoisePass(const GBuffer& viewer, const gl::Texture& indirect);
     const char* getName() const override { return "denoise"; }
     // The targets follow the splat buffer's size at each execute.
@@ -20,7 +20,7 @@ public:
     void reloadPrograms(ShaderReloadReport& report) override { mProgram.reloadIfChanged(report); }
     const gl::Texture& getOutput() const { return mTargets[kOutput].getTexture(); }
 
-private:
+  private:
     // The output and one more target: iterations alternate between them so that the last
     // writes the output.
     static constexpr size_t kOutput = 0;

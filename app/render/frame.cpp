@@ -22,18 +22,19 @@ Aov parseAov(const std::string& text, const std::string& where) {
 
 FrameRunner::FrameRunner(const Scene& scene, const Settings& settings, gl::TimingMethod timing)
     : mScene(scene), mSettings(settings), mFrameSettings(resolveFrameSettings(settings)),
-      mBaseSeed(mFrameSettings.seed),
-      mWidth(mFrameSettings.width), mHeight(mFrameSettings.height), mTimer(timing),
-      mGpuScene(scene, mFrameSettings.shadowMapSize),
+      mBaseSeed(mFrameSettings.seed), mWidth(mFrameSettings.width), mHeight(mFrameSettings.height),
+      mTimer(timing), mGpuScene(scene, mFrameSettings.shadowMapSize),
       mFrameConstants("frame constants", sizeof(gpu::FrameConstants)) {
     mGBuffer = std::make_unique<GBufferPass>();
     mLightViews = std::make_unique<LightViewPass>();
-    mImportance = std::make_unique<ImportancePass>(mGBuffer->getGBuffer(), mLightViews->getGBuffer());
+    mImportance =
+        std::make_unique<ImportancePass>(mGBuffer->getGBuffer(), mLightViews->getGBuffer());
     mEmit = std::make_unique<PhotonEmitPass>(mLightViews->getGBuffer(), mImportance->getCdf(),
                                              mPhotonBuffers);
     mTrace = std::make_unique<PhotonTracePass>(mPhotonBuffers);
     mDensity = std::make_unique<PhotonDensityPass>(mPhotonBuffers);
-    mSplat = std::make_unique<SplatPass>(mGBuffer->getGBuffer(), mPhotonBuffers, mDensity->getClip());
+    mSplat =
+        std::make_unique<SplatPass>(mGBuffer->getGBuffer(), mPhotonBuffers, mDensity->getClip());
     mDenoise = std::make_unique<DenoisePass>(mGBuffer->getGBuffer(), mSplat->getOutput());
     mDirect = std::make_unique<DirectPass>(mGBuffer->getGBuffer(), mLightViews->getGBuffer());
     mUpsample = std::make_unique<UpsamplePass>(mGBuffer->getGBuffer(), mDenoise->getOutput());
@@ -45,19 +46,21 @@ FrameRunner::FrameRunner(const Scene& scene, const Settings& settings, gl::Timin
 }
 
 std::array<Pass*, 13> FrameRunner::getPasses() const {
-    return {mGBuffer.get(),  mLightViews.get(), mImportance.get(), mEmit.get(),
-            mDirect.get(),   mTrace.get(),      mDensity.get(),    mSplat.get(),
-            mDenoise.get(),  mUpsample.get(),   mAccumulate.get(), mCompose.get(),
+    return {mGBuffer.get(), mLightViews.get(), mImportance.get(), mEmit.get(),
+            mDirect.get(),  mTrace.get(),      mDensity.get(),    mSplat.get(),
+            mDenoise.get(), mUpsample.get(),   mAccumulate.get(), mCompose.get(),
             mTonemap.get()};
 }
 
 void FrameRunner::resizePasses() {
-    for (Pass* pass : getPasses()) pass->resize(mWidth, mHeight);
+    for (Pass* pass : getPasses())
+        pass->resize(mWidth, mHeight);
 }
 
 ShaderReloadReport FrameRunner::reloadShaders() {
     ShaderReloadReport report;
-    for (Pass* pass : getPasses()) pass->reloadPrograms(report);
+    for (Pass* pass : getPasses())
+        pass->reloadPrograms(report);
     return report;
 }
 
@@ -81,7 +84,8 @@ void FrameRunner::setSettings(const Settings& settings) {
 
 void FrameRunner::updateFrameConstants() {
     // Accumulated frames look through new sub-pixel offsets: the average is anti-aliased.
-    const glm::vec2 jitter = mFrameSettings.accumulate > 0 ? computePixelJitter(mHistoryFrames) : glm::vec2(0.0f);
+    const glm::vec2 jitter =
+        mFrameSettings.accumulate > 0 ? computePixelJitter(mHistoryFrames) : glm::vec2(0.0f);
     const gpu::FrameConstants fc =
         computeFrameConstants(mScene, mGpuScene, mFrameSettings, mWidth, mHeight, jitter);
     mClipFromWorld = fc.clipFromWorld;
@@ -96,8 +100,9 @@ void FrameRunner::runPass(Pass& pass, const FrameInputs& inputs) {
 }
 
 FrameInputs FrameRunner::getFrameInputs() const {
-    return {mScene,         mGpuScene,          mFrameSettings, mFrameConstants,
-            mClipFromWorld, mScene.camera.position, mWidth,         mHeight, mHistoryFrames};
+    return {mScene,          mGpuScene,      mFrameSettings,
+            mFrameConstants, mClipFromWorld, mScene.camera.position,
+            mWidth,          mHeight,        mHistoryFrames};
 }
 
 void FrameRunner::updateScene() {
@@ -152,7 +157,8 @@ void FrameRunner::waitForTimings() {
 
 void FrameRunner::setTimings(const std::vector<gl::PassTimer::Sample>& samples) {
     mTimings.clear();
-    for (const gl::PassTimer::Sample& s : samples) mTimings.push_back({s.name, s.ms});
+    for (const gl::PassTimer::Sample& s : samples)
+        mTimings.push_back({s.name, s.ms});
 }
 
 bool FrameRunner::hasIndirect() const {
@@ -166,10 +172,14 @@ PhotonCounts FrameRunner::readPhotonCounts() const {
 
 const gl::Texture& FrameRunner::getAov(Aov aov) const {
     switch (aov) {
-    case Aov::Direct: return mAccumulate->getDirect();
-    case Aov::Indirect: return mAccumulate->getIndirect();
-    case Aov::Total: return mCompose->getOutput();
-    case Aov::Display: return mTonemap->getOutput();
+    case Aov::Direct:
+        return mAccumulate->getDirect();
+    case Aov::Indirect:
+        return mAccumulate->getIndirect();
+    case Aov::Total:
+        return mCompose->getOutput();
+    case Aov::Display:
+        return mTonemap->getOutput();
     }
     return mCompose->getOutput();
 }
@@ -184,8 +194,7 @@ size_t FrameRunner::getGpuBytes() const {
     const glm::ivec2 splat = mFrameSettings.splatSize;
     const size_t pixels = static_cast<size_t>(mWidth) * static_cast<size_t>(mHeight);
     return mGpuScene.getGpuBytes() + mPhotonBuffers.getGpuBytes() + mImportance->getGpuBytes() +
-           mDensity->getGpuBytes() +
-           mGBuffer->getGBuffer().getGpuBytes() +
+           mDensity->getGpuBytes() + mGBuffer->getGBuffer().getGpuBytes() +
            mLightViews->getGBuffer().getGpuBytes() +
            pixels * (kFullResolutionRgba32F * kBytesRgba32F + kBytesRgba8) +
            size_t(splat.x) * size_t(splat.y) * kSplatResolutionRgba32F * kBytesRgba32F;

@@ -3,18 +3,18 @@
 #pragma once
 
 #include "gl/timer.h"
-#include "render/gbuffer_pass.h"
-#include "render/gpu_scene.h"
 #include "render/accumulate_pass.h"
 #include "render/denoise_pass.h"
 #include "render/frame_constants.h"
-#include "render/upsample_pass.h"
+#include "render/gbuffer_pass.h"
+#include "render/gpu_scene.h"
 #include "render/importance_pass.h"
 #include "render/photon_density_pass.h"
 #include "render/photon_emit_pass.h"
 #include "render/photon_trace_pass.h"
-#include "render/splat_pass.h"
 #include "render/shading_passes.h"
+#include "render/splat_pass.h"
+#include "render/upsample_pass.h"
 #include "scene/scene.h"
 
 #include <shared/scene_data.h>
@@ -37,7 +37,7 @@ struct PassTiming {
 };
 
 class FrameRunner {
-public:
+  public:
     // `settings` are the effective settings (scene overrides with the command line on top).
     FrameRunner(const Scene& scene, const Settings& settings, gl::TimingMethod timing);
 
@@ -86,7 +86,7 @@ public:
     int getHeight() const { return mHeight; }
     size_t getGpuBytes() const;
 
-private:
+  private:
     void resizePasses();
     void updateFrameConstants();
     // Every pass in frame order, for resize and shader reload.

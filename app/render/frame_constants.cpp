@@ -57,8 +57,8 @@ gpu::FrameConstants computeFrameConstants(const Scene& scene, const GpuScene& gp
     fc.imageSize = glm::vec4(width, height, 1.0f / static_cast<float>(width),
                              1.0f / static_cast<float>(height));
     fc.counts = glm::uvec4(gpuScene.getLightCount(),
-                           static_cast<uint32_t>(gpuScene.getLightCameras().size()),
-                           settings.seed, settings.toneMap);
+                           static_cast<uint32_t>(gpuScene.getLightCameras().size()), settings.seed,
+                           settings.toneMap);
     fc.shadow = glm::vec4(settings.shadowBiasTexels,
                           static_cast<float>(gpuScene.getLightResolution()), 0.0f, 0.0f);
     fc.tonemap = glm::vec4(0.0f, std::exp2(settings.exposureStops), 1.0f / settings.gamma,

@@ -11,13 +11,13 @@ namespace ispm {
 
 // One colour texture and the framebuffer that draws into it, made anew when the size changes.
 class ColorTarget {
-public:
+  public:
     ColorTarget(std::string label, gl::Format format) : mLabel(std::move(label)), mFormat(format) {}
     void resize(int width, int height);
     void bind() const { mFramebuffer.bind(); } // with the viewport
     const gl::Texture& getTexture() const { return mTexture; }
 
-private:
+  private:
     std::string mLabel;
     gl::Format mFormat;
     gl::Texture mTexture;
@@ -29,7 +29,7 @@ private:
 void drawFullscreenTriangle();
 
 class FullscreenTarget {
-public:
+  public:
     FullscreenTarget(std::string label, gl::Format format, const std::string& fragmentPath,
                      std::vector<std::string> defines);
     void resize(int width, int height) { mTarget.resize(width, height); }
@@ -38,7 +38,7 @@ public:
     const gl::Texture& getTexture() const { return mTarget.getTexture(); }
     void reloadProgram(ShaderReloadReport& report) { mProgram.reloadIfChanged(report); }
 
-private:
+  private:
     ColorTarget mTarget;
     ReloadableProgram mProgram;
     gl::VertexArray mVertexArray;

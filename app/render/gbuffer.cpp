@@ -32,7 +32,9 @@ constexpr GBufferChannel kChannels[] = {
 
 } // namespace
 
-std::span<const GBufferChannel> getGBufferChannels() { return kChannels; }
+std::span<const GBufferChannel> getGBufferChannels() {
+    return kChannels;
+}
 
 std::vector<std::string> getGBufferDefines() {
     std::vector<std::string> defines;
@@ -47,8 +49,9 @@ GBuffer::GBuffer(std::string_view label, int width, int height, int layers, bool
     const std::string base(label);
     for (const GBufferChannel& c : kChannels) {
         const std::string name = base + " " + std::string(c.name);
-        mChannels.push_back(isArray ? gl::Texture::create2DArray(name, c.format, width, height, layers)
-                                    : gl::Texture::create2D(name, c.format, width, height));
+        mChannels.push_back(isArray
+                                ? gl::Texture::create2DArray(name, c.format, width, height, layers)
+                                : gl::Texture::create2D(name, c.format, width, height));
     }
     mDepth = isArray ? gl::Texture::create2DArray(base + " depth", gl::Format::Depth32F, width,
                                                   height, layers)
@@ -67,11 +70,14 @@ GBuffer::GBuffer(std::string_view label, int width, int height, int layers, bool
 
 void GBuffer::clear(int layer) const {
     const gl::Framebuffer& fb = mTargets[static_cast<size_t>(layer)];
-    for (size_t i = 0; i < mChannels.size(); ++i) fb.clearColor(static_cast<int>(i), glm::vec4(0.0f));
+    for (size_t i = 0; i < mChannels.size(); ++i)
+        fb.clearColor(static_cast<int>(i), glm::vec4(0.0f));
     fb.clearDepth(1.0f);
 }
 
-void GBuffer::bindTarget(int layer) const { mTargets[static_cast<size_t>(layer)].bind(); }
+void GBuffer::bindTarget(int layer) const {
+    mTargets[static_cast<size_t>(layer)].bind();
+}
 
 void GBuffer::bindTextures(int firstUnit) const {
     for (size_t i = 0; i < mChannels.size(); ++i) {

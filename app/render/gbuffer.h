@@ -27,7 +27,7 @@ std::span<const GBufferChannel> getGBufferChannels();
 std::vector<std::string> getGBufferDefines();
 
 class GBuffer {
-public:
+  public:
     GBuffer() = default;
     GBuffer(std::string_view label, int width, int height, int layers, bool isArray);
 
@@ -41,7 +41,7 @@ public:
     int getLayers() const { return mLayers; }
     size_t getGpuBytes() const;
 
-private:
+  private:
     std::vector<gl::Texture> mChannels;
     gl::Texture mDepth;
     std::vector<gl::Framebuffer> mTargets; // one per layer

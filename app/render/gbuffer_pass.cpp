@@ -39,8 +39,8 @@ void LightViewPass::execute(const FrameInputs& inputs) {
         const int layer = static_cast<int>(i);
         mGBuffer.clear(layer);
         mGBuffer.bindTarget(layer);
-        const glm::vec4 eye = cam.isOrthographic ? glm::vec4(-cam.axis, 0.0f)
-                                                 : glm::vec4(cam.origin, 1.0f);
+        const glm::vec4 eye =
+            cam.isOrthographic ? glm::vec4(-cam.axis, 0.0f) : glm::vec4(cam.origin, 1.0f);
         drawSceneGBuffer(mProgram.get(), inputs.scene, cam.getClipFromWorld(), eye);
     }
 }

@@ -8,7 +8,7 @@
 namespace ispm {
 
 class GBufferPass final : public Pass {
-public:
+  public:
     GBufferPass();
     const char* getName() const override { return "gbuffer"; }
     void resize(int width, int height) override;
@@ -16,21 +16,21 @@ public:
     void reloadPrograms(ShaderReloadReport& report) override { mProgram.reloadIfChanged(report); }
     const GBuffer& getGBuffer() const { return mGBuffer; }
 
-private:
+  private:
     ReloadableProgram mProgram;
     gl::VertexArray mVertexArray;
     GBuffer mGBuffer;
 };
 
 class LightViewPass final : public Pass {
-public:
+  public:
     LightViewPass();
     const char* getName() const override { return "light_views"; }
     void execute(const FrameInputs& inputs) override;
     void reloadPrograms(ShaderReloadReport& report) override { mProgram.reloadIfChanged(report); }
     const GBuffer& getGBuffer() const { return mGBuffer; }
 
-private:
+  private:
     ReloadableProgram mProgram;
     gl::VertexArray mVertexArray;
     GBuffer mGBuffer;

@@ -10,9 +10,12 @@ namespace {
 
 uint32_t getGpuLightType(LightType type) {
     switch (type) {
-    case LightType::Point: return gpu::kLightPoint;
-    case LightType::Spot: return gpu::kLightSpot;
-    case LightType::Sun: return gpu::kLightSun;
+    case LightType::Point:
+        return gpu::kLightPoint;
+    case LightType::Spot:
+        return gpu::kLightSpot;
+    case LightType::Sun:
+        return gpu::kLightSun;
     }
     return gpu::kLightPoint;
 }
@@ -53,7 +56,8 @@ GpuScene::GpuScene(const Scene& scene, int lightResolution) : mLightResolution(l
     std::vector<glm::uvec4> triangles;
     for (const Mesh& mesh : scene.meshes) {
         const auto base = static_cast<uint32_t>(positions.size());
-        for (const glm::vec3& p : mesh.positions) positions.emplace_back(p, 1.0f);
+        for (const glm::vec3& p : mesh.positions)
+            positions.emplace_back(p, 1.0f);
         for (size_t t = 0; t < mesh.triangles.size(); ++t) {
             const glm::uvec3 tri = mesh.triangles[t] + base;
             triangles.emplace_back(tri, mesh.triangleMaterials[t]);
@@ -114,8 +118,8 @@ void GpuScene::uploadLights(const Scene& scene) {
         gpu::GpuLight g{};
         const bool isSun = light.type == LightType::Sun;
         g.position = glm::vec4(light.position, 0.0f);
-        g.directionCos = glm::vec4(glm::normalize(light.direction),
-                                   std::cos(glm::radians(light.outerDeg)));
+        g.directionCos =
+            glm::vec4(glm::normalize(light.direction), std::cos(glm::radians(light.outerDeg)));
         g.power = glm::vec4(isSun ? light.irradiance : light.intensity,
                             std::cos(glm::radians(light.innerDeg)));
         const uint32_t viewCount = light.type == LightType::Point ? 6u : 1u;

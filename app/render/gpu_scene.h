@@ -15,7 +15,7 @@
 namespace ispm {
 
 class GpuScene {
-public:
+  public:
     GpuScene(const Scene& scene, int lightResolution);
 
     // Re-uploads instance transforms and lights (animation, viewer edits); same topology.
@@ -37,7 +37,7 @@ public:
     // round-off of hit positions never makes a ray hit its own surface again.
     float getRayEpsilon() const;
 
-private:
+  private:
     void uploadLights(const Scene& scene);
     void uploadTopLevel();
 

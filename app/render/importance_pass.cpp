@@ -31,9 +31,10 @@ ImportancePass::ImportancePass(const GBuffer& viewer, const GBuffer& lights)
           {.label = "importance gather",
            .stages = {{gl::ShaderStage::Compute, "importance/importance_gather.comp"}},
            .defines = getGBufferDefines()})),
-      mCdf(ReloadableProgram({.label = "importance tables",
-                              .stages = {{gl::ShaderStage::Compute, "importance/importance_cdf.comp"}},
-                              .defines = getGBufferDefines()})),
+      mCdf(ReloadableProgram(
+          {.label = "importance tables",
+           .stages = {{gl::ShaderStage::Compute, "importance/importance_cdf.comp"}},
+           .defines = getGBufferDefines()})),
       mParams("importance parameters", sizeof(gpu::ImportanceParams)) {}
 
 void ImportancePass::execute(const FrameInputs& inputs) {
@@ -50,7 +51,8 @@ void ImportancePass::execute(const FrameInputs& inputs) {
     // Gather samples on a grid of the image's aspect, at most one per pixel.
     const double samples = inputs.settings.importanceSamples;
     const double aspect = double(inputs.width) / double(inputs.height);
-    const auto across = uint32_t(std::clamp(std::lround(std::sqrt(samples * aspect)), 1L, long(inputs.width)));
+    const auto across =
+        uint32_t(std::clamp(std::lround(std::sqrt(samples * aspect)), 1L, long(inputs.width)));
     const auto down = uint32_t(std::clamp(std::lround(samples / across), 1L, long(inputs.height)));
     // Without gather samples nothing is aimed (FrameSettings: share 0): the tables follow the
     // light's power alone.

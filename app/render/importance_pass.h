@@ -12,7 +12,7 @@
 namespace ispm {
 
 class ImportancePass final : public Pass {
-public:
+  public:
     ImportancePass(const GBuffer& viewer, const GBuffer& lights);
     const char* getName() const override { return "importance"; }
     void execute(const FrameInputs& inputs) override;
@@ -31,7 +31,7 @@ public:
                mViewCount * gpu::kImportanceTexels * kBytesRgba32F;
     }
 
-private:
+  private:
     const GBuffer& mViewer;
     const GBuffer& mLights;
     ReloadableProgram mGather;

@@ -11,9 +11,9 @@
 namespace ispm {
 namespace {
 
-constexpr float kNearFraction = 1e-4f;   // near plane as a fraction of far: depth is 32-bit float
-constexpr float kMinNearM = 1e-4f;       // never put the near plane on the eye
-constexpr float kBoundsMargin = 1.01f;   // grow fitted volumes so border texels are inside
+constexpr float kNearFraction = 1e-4f; // near plane as a fraction of far: depth is 32-bit float
+constexpr float kMinNearM = 1e-4f;     // never put the near plane on the eye
+constexpr float kBoundsMargin = 1.01f; // grow fitted volumes so border texels are inside
 constexpr float kPointFaceFovDeg = 90.0f;
 
 glm::vec3 pickUp(const glm::vec3& axis) {
@@ -25,7 +25,8 @@ glm::vec3 pickUp(const glm::vec3& axis) {
 
 std::array<glm::vec3, kAabbCornerCount> getCorners(const Aabb& b) {
     std::array<glm::vec3, kAabbCornerCount> corners;
-    for (int i = 0; i < kAabbCornerCount; ++i) corners[static_cast<size_t>(i)] = b.getCorner(i);
+    for (int i = 0; i < kAabbCornerCount; ++i)
+        corners[static_cast<size_t>(i)] = b.getCorner(i);
     return corners;
 }
 
@@ -41,7 +42,8 @@ LightCamera makePerspective(uint32_t lightIndex, const glm::vec3& eye, const glm
     float farM = 0.0f;
     computeDepthRange(bounds, eye, cam.axis, nearM, farM);
     cam.clipFromView = glm::perspective(glm::radians(fovYDeg), 1.0f, nearM, farM);
-    cam.texelPerDepth = 2.0f * std::tan(glm::radians(fovYDeg) * 0.5f) / static_cast<float>(resolution);
+    cam.texelPerDepth =
+        2.0f * std::tan(glm::radians(fovYDeg) * 0.5f) / static_cast<float>(resolution);
     return cam;
 }
 
@@ -50,7 +52,8 @@ LightCamera makePerspective(uint32_t lightIndex, const glm::vec3& eye, const glm
 void computeDepthRange(const Aabb& bounds, const glm::vec3& eye, const glm::vec3& axis,
                        float& nearM, float& farM) {
     float maxDepth = 0.0f;
-    for (const glm::vec3& c : getCorners(bounds)) maxDepth = std::max(maxDepth, glm::dot(c - eye, axis));
+    for (const glm::vec3& c : getCorners(bounds))
+        maxDepth = std::max(maxDepth, glm::dot(c - eye, axis));
     farM = std::max(maxDepth * kBoundsMargin, 2.0f * kMinNearM);
     // The near plane must not clip anything in front of the eye: keep it small.
     nearM = std::max(kMinNearM, farM * kNearFraction);
@@ -70,8 +73,8 @@ std::vector<LightCamera> computeLightCameras(const Scene& scene, int resolution)
         }
         case LightType::Point: {
             // Cube faces in the usual +x, -x, +y, -y, +z, -z order.
-            const glm::vec3 axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0},
-                                       {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+            const glm::vec3 axes[6] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
+                                       {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
             for (const glm::vec3& axis : axes) {
                 cameras.push_back(makePerspective(i, light.position, axis, pickUp(axis),
                                                   kPointFaceFovDeg, bounds, resolution));
@@ -94,7 +97,8 @@ std::vector<LightCamera> computeLightCameras(const Scene& scene, int resolution)
                 halfSize = std::max({halfSize, std::abs(v.x), std::abs(v.y)});
             }
             halfSize = std::max(halfSize * kBoundsMargin, kMinNearM);
-            cam.clipFromView = glm::ortho(-halfSize, halfSize, -halfSize, halfSize, 0.0f, 2.0f * radius);
+            cam.clipFromView =
+                glm::ortho(-halfSize, halfSize, -halfSize, halfSize, 0.0f, 2.0f * radius);
             cam.origin = eye;
             cam.texelSizeM = 2.0f * halfSize / static_cast<float>(resolution);
             cameras.push_back(cam);

@@ -18,7 +18,7 @@ struct Scene;
 struct FrameInputs {
     const Scene& model; // the scene model (lights, materials) the GPU scene was made from
     const GpuScene& scene;
-    const FrameSettings& settings; // resolved once per settings change
+    const FrameSettings& settings;    // resolved once per settings change
     const gl::Buffer& frameConstants; // gpu::FrameConstants, bound at kBindingFrameConstants
     glm::mat4 clipFromWorld{1.0f};
     glm::vec3 cameraPosition{0.0f};
@@ -28,7 +28,7 @@ struct FrameInputs {
 };
 
 class Pass {
-public:
+  public:
     virtual ~Pass() = default;
     virtual const char* getName() const = 0;
     virtual void resize(int width, int height) {

@@ -21,7 +21,8 @@ double integrateSpotFalloff(float innerDeg, float outerDeg) {
     double sum = 0.0;
     for (int i = 0; i < kSteps; ++i) {
         const double theta = (i + 0.5) * outer / kSteps;
-        sum += double(computeSpotFalloff(float(std::cos(theta)), innerDeg, outerDeg)) * std::sin(theta);
+        sum += double(computeSpotFalloff(float(std::cos(theta)), innerDeg, outerDeg)) *
+               std::sin(theta);
     }
     return sum * outer / kSteps;
 }
@@ -32,7 +33,8 @@ double computeLightViewPower(const Light& light, const std::vector<LightCamera>&
                              uint32_t lightIndex, int resolution) {
     const double twoPi = glm::two_pi<double>();
     switch (light.type) {
-    case LightType::Point: return 2.0 * twoPi * computeLuminance(light.intensity);
+    case LightType::Point:
+        return 2.0 * twoPi * computeLuminance(light.intensity);
     case LightType::Spot:
         return twoPi * integrateSpotFalloff(light.innerDeg, light.outerDeg) *
                computeLuminance(light.intensity);
@@ -83,7 +85,8 @@ std::vector<EmissionGrid> computeEmissionGrids(const Scene& scene,
                                                int resolution, uint32_t photons) {
     const std::vector<double> shares = computeLightShares(scene, cameras, resolution);
     std::vector<uint32_t> viewsPerLight(scene.lights.size(), 0);
-    for (const LightCamera& cam : cameras) ++viewsPerLight[cam.lightIndex];
+    for (const LightCamera& cam : cameras)
+        ++viewsPerLight[cam.lightIndex];
     std::vector<EmissionGrid> grids;
     uint32_t first = 0;
     for (uint32_t v = 0; v < cameras.size(); ++v) {
@@ -104,7 +107,8 @@ std::vector<EmissionGrid> computeEmissionGrids(const Scene& scene,
 
 uint32_t countPhotons(const std::vector<EmissionGrid>& grids) {
     uint32_t total = 0;
-    for (const EmissionGrid& g : grids) total += g.getCount();
+    for (const EmissionGrid& g : grids)
+        total += g.getCount();
     return total;
 }
 

@@ -20,7 +20,8 @@ void PhotonBuffers::startFrame(std::span<const glm::uvec4> grids, size_t lightCo
     // Never empty: a zero-size buffer cannot be bound (no grids: one that matches no photon).
     const glm::uvec4 none(0u);
     const std::span<const glm::uvec4> items = grids.empty() ? std::span(&none, 1) : grids;
-    if (mGrids.getSize() != items.size_bytes()) mGrids = gl::Buffer("emission grids", items.size_bytes());
+    if (mGrids.getSize() != items.size_bytes())
+        mGrids = gl::Buffer("emission grids", items.size_bytes());
     mGrids.upload(items);
     const size_t bytes = std::max<size_t>(lightCount, 1) * sizeof(gpu::LightPhotonCounters);
     if (mLightCounts.getSize() != bytes) mLightCounts = gl::Buffer("light photon counters", bytes);
@@ -44,7 +45,8 @@ void PhotonBuffers::bindLightCounters() const {
 PhotonCounts PhotonBuffers::readCounts(const std::vector<uint32_t>& emitted) const {
     const gpu::PhotonCounters c = mCounters.read<gpu::PhotonCounters>(1)[0];
     PhotonCounts counts;
-    for (uint32_t e : emitted) counts.emitted += e;
+    for (uint32_t e : emitted)
+        counts.emitted += e;
     if (mLightCount > 0) {
         const std::vector<gpu::LightPhotonCounters> lights =
             mLightCounts.read<gpu::LightPhotonCounters>(mLightCount);

@@ -30,7 +30,7 @@ struct PhotonCounts {
 };
 
 class PhotonBuffers {
-public:
+  public:
     // Grows (never shrinks) to hold `bounceCapacity` bounce photons and `resultCapacity` results.
     void reserve(uint32_t bounceCapacity, uint32_t resultCapacity);
     // The frame's emission grids ({first photon, view} in photon order, for the GPU to find a
@@ -56,12 +56,12 @@ public:
                mGrids.getSize() + mLightCounts.getSize();
     }
 
-private:
+  private:
     gl::Buffer mBounce;
     gl::Buffer mResult;
     gl::Buffer mCounters{"photon counters", sizeof(gpu::PhotonCounters)};
     gl::Buffer mSplatDraws{"splat draw commands",
-                           gpu::kMaxSplatPasses * gpu::kSplatDrawUvec4s * sizeof(glm::uvec4)};
+                           gpu::kMaxSplatPasses* gpu::kSplatDrawUvec4s * sizeof(glm::uvec4)};
     // One entry each until the first frame sets them: bindable from the start (a zero-size buffer
     // is not), and matching no light.
     gl::Buffer mGrids{"emission grids", sizeof(glm::uvec4)};

@@ -40,8 +40,8 @@ constexpr size_t kUintsPerSlot = 4; // key, count, power, padding (16-byte slots
 } // namespace
 
 float computeEvenRadius(double surfaceAreaM2, int photons, int neighbours) {
-    const double evenRadius = std::sqrt(double(neighbours) * surfaceAreaM2 /
-                                        (glm::pi<double>() * std::max(photons, 1)));
+    const double evenRadius =
+        std::sqrt(double(neighbours) * surfaceAreaM2 / (glm::pi<double>() * std::max(photons, 1)));
     return std::max(float(evenRadius), std::numeric_limits<float>::min());
 }
 
@@ -52,21 +52,26 @@ PhotonDensityPass::PhotonDensityPass(PhotonBuffers& buffers)
            .stages = {{gl::ShaderStage::Compute, "photon/photon_density.comp"}}})) {}
 
 void PhotonDensityPass::execute(const FrameInputs& inputs) {
-    const uint32_t slots = std::bit_ceil(std::max(mBuffers.getResultCapacity(), 1u) * kSlotsPerPhoton);
+    const uint32_t slots =
+        std::bit_ceil(std::max(mBuffers.getResultCapacity(), 1u) * kSlotsPerPhoton);
     // The table, then the clip list (a uint per result photon).
-    const size_t cellBytes = (size_t(slots) * kUintsPerSlot + mBuffers.getResultCapacity()) * sizeof(uint32_t);
-    if (cellBytes != mCells.getSize()) mCells = gl::Buffer("photon density cells and clip list", cellBytes);
-    const size_t clipBytes = size_t(std::max(mBuffers.getResultCapacity(), 1u)) * gpu::kClipVec4s *
-                             sizeof(glm::vec4);
+    const size_t cellBytes =
+        (size_t(slots) * kUintsPerSlot + mBuffers.getResultCapacity()) * sizeof(uint32_t);
+    if (cellBytes != mCells.getSize())
+        mCells = gl::Buffer("photon density cells and clip list", cellBytes);
+    const size_t clipBytes =
+        size_t(std::max(mBuffers.getResultCapacity(), 1u)) * gpu::kClipVec4s * sizeof(glm::vec4);
     if (mClip.getSize() != clipBytes) mClip = gl::Buffer("splat clip distances", clipBytes);
     // The list starts empty; stage 1 grows its dispatch (x) and count (w).
     const glm::uvec4 emptyList(0u, 1u, 1u, 0u);
-    mBuffers.getCounters().upload(offsetof(gpu::PhotonCounters, clipDispatch), sizeof(emptyList), &emptyList);
+    mBuffers.getCounters().upload(offsetof(gpu::PhotonCounters, clipDispatch), sizeof(emptyList),
+                                  &emptyList);
     mCells.clearToZero();
     const int neighbours = inputs.settings.splatNeighbours;
     const float scale = inputs.settings.radiusScale;
     const float radiusMin = inputs.settings.radiusMinM.value_or(0.0f) * scale;
-    const float even = computeEvenRadius(inputs.scene.getSurfaceArea(), inputs.settings.photons, neighbours);
+    const float even =
+        computeEvenRadius(inputs.scene.getSurfaceArea(), inputs.settings.photons, neighbours);
     const float radiusMax = inputs.settings.radiusMaxM.value_or(kMaxRadiusFactor * even) * scale;
     const float cell = kFinestCellFraction * even;
 
@@ -89,7 +94,8 @@ void PhotonDensityPass::execute(const FrameInputs& inputs) {
     gl::memoryBarrier(gl::Barrier::Storage);
     gl::memoryBarrier(gl::Barrier::Command);
     glUniform1ui(kLocationStage, kStageClip);
-    gl::dispatchComputeIndirect(mBuffers.getCounters(), offsetof(gpu::PhotonCounters, clipDispatch));
+    gl::dispatchComputeIndirect(mBuffers.getCounters(),
+                                offsetof(gpu::PhotonCounters, clipDispatch));
     // The splat's vertex stage reads the radii.
     gl::memoryBarrier(gl::Barrier::Storage);
 }

@@ -16,7 +16,7 @@ namespace ispm {
 float computeEvenRadius(double surfaceAreaM2, int photons, int neighbours);
 
 class PhotonDensityPass final : public Pass {
-public:
+  public:
     explicit PhotonDensityPass(PhotonBuffers& buffers);
     const char* getName() const override { return "density"; }
     void execute(const FrameInputs& inputs) override;
@@ -25,7 +25,7 @@ public:
     const gl::Buffer& getClip() const { return mClip; }
     size_t getGpuBytes() const { return mCells.getSize() + mClip.getSize(); }
 
-private:
+  private:
     PhotonBuffers& mBuffers;
     ReloadableProgram mProgram;
     gl::Buffer mCells;

@@ -85,7 +85,8 @@ void PhotonEmitPass::execute(const FrameInputs& inputs) {
 
 std::vector<uint32_t> PhotonEmitPass::getEmittedPerLight() const {
     std::vector<uint32_t> emitted(mLightCount, 0u);
-    for (size_t i = 0; i < mGrids.size(); ++i) emitted[mGridLights[i]] += mGrids[i].getCount();
+    for (size_t i = 0; i < mGrids.size(); ++i)
+        emitted[mGridLights[i]] += mGrids[i].getCount();
     return emitted;
 }
 

@@ -11,8 +11,9 @@
 namespace ispm {
 
 class PhotonEmitPass final : public Pass {
-public:
-    // `importanceCdf`: the light views' sampling tables (ImportancePass), read by the geometry stage.
+  public:
+    // `importanceCdf`: the light views' sampling tables (ImportancePass), read by the geometry
+    // stage.
     PhotonEmitPass(const GBuffer& lightGBuffer, const gl::Buffer& importanceCdf,
                    PhotonBuffers& buffers);
     const char* getName() const override { return "emit"; }
@@ -23,7 +24,7 @@ public:
     // Photons emitted per light (light index order) in the last frame.
     std::vector<uint32_t> getEmittedPerLight() const;
 
-private:
+  private:
     const GBuffer& mLightGBuffer;
     const gl::Buffer& mImportanceCdf;
     PhotonBuffers& mBuffers;

@@ -26,9 +26,10 @@ PhotonTracePass::PhotonTracePass(PhotonBuffers& buffers)
       mPrepare(ReloadableProgram(
           {.label = "photon prepare",
            .stages = {{gl::ShaderStage::Compute, "photon/photon_prepare.comp"}}})),
-      mTrace(ReloadableProgram(
-          {.label = "photon trace",
-           .stages = {{gl::ShaderStage::Compute, "photon/photon_trace.comp"}}})) {}
+      mTrace(
+          ReloadableProgram({.label = "photon trace",
+                             .stages = {{gl::ShaderStage::Compute, "photon/photon_trace.comp"}}})) {
+}
 
 void PhotonTracePass::execute(const FrameInputs& inputs) {
     mBuffers.bind();
@@ -41,10 +42,11 @@ void PhotonTracePass::execute(const FrameInputs& inputs) {
     gl::memoryBarrier(gl::Barrier::Command | gl::Barrier::Storage);
 
     mTrace.use();
-    glUniform4ui(kLocationParams, static_cast<GLuint>(inputs.settings.bounces), inputs.settings.seed,
-                 inputs.settings.rng, 0u);
+    glUniform4ui(kLocationParams, static_cast<GLuint>(inputs.settings.bounces),
+                 inputs.settings.seed, inputs.settings.rng, 0u);
     glUniform1f(kLocationEpsilon, inputs.scene.getRayEpsilon());
-    gl::dispatchComputeIndirect(mBuffers.getCounters(), offsetof(gpu::PhotonCounters, traceDispatch));
+    gl::dispatchComputeIndirect(mBuffers.getCounters(),
+                                offsetof(gpu::PhotonCounters, traceDispatch));
     gl::memoryBarrier(gl::Barrier::Storage);
 
     mPrepare.use();

@@ -9,7 +9,7 @@
 namespace ispm {
 
 class PhotonTracePass final : public Pass {
-public:
+  public:
     explicit PhotonTracePass(PhotonBuffers& buffers);
     const char* getName() const override { return "trace"; }
     void execute(const FrameInputs& inputs) override;
@@ -18,7 +18,7 @@ public:
         mTrace.reloadIfChanged(report);
     }
 
-private:
+  private:
     PhotonBuffers& mBuffers;
     ReloadableProgram mPrepare;
     ReloadableProgram mTrace;

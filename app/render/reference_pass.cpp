@@ -33,16 +33,19 @@ ReferencePass::ReferencePass(const Scene& scene, const GpuScene& gpuScene, const
 ReferencePass::ReferencePass(const Scene& scene, std::unique_ptr<GpuScene> owned,
                              const GpuScene* borrowed, const FrameSettings& settings)
     : mScene(scene), mOwnedScene(std::move(owned)), mGpuScene(borrowed ? *borrowed : *mOwnedScene),
-      mProgram(gl::Program::build(getShaderRoot(),
-                                  {.label = "reference path tracer",
-                                   .stages = {{gl::ShaderStage::Compute, "reference/reference.comp"}},
-                                   .defines = getGBufferDefines()})),
+      mProgram(gl::Program::build(
+          getShaderRoot(), {.label = "reference path tracer",
+                            .stages = {{gl::ShaderStage::Compute, "reference/reference.comp"}},
+                            .defines = getGBufferDefines()})),
       mFrameConstants("reference frame constants", sizeof(gpu::FrameConstants)),
       mWidth(settings.width), mHeight(settings.height),
-      mBounces(settings.bouncesSet ? settings.bounces : kReferenceDefaultBounces), mSeed(settings.seed) {
-    mAccumulation = gl::Texture::create2D("reference accumulation", gl::Format::RGBA32F, mWidth, mHeight);
+      mBounces(settings.bouncesSet ? settings.bounces : kReferenceDefaultBounces),
+      mSeed(settings.seed) {
+    mAccumulation =
+        gl::Texture::create2D("reference accumulation", gl::Format::RGBA32F, mWidth, mHeight);
     mAccumulation.clear(glm::vec4(0.0f));
-    const gpu::FrameConstants fc = computeFrameConstants(scene, mGpuScene, settings, mWidth, mHeight);
+    const gpu::FrameConstants fc =
+        computeFrameConstants(scene, mGpuScene, settings, mWidth, mHeight);
     mFrameConstants.upload(0, sizeof(fc), &fc);
 }
 
@@ -64,7 +67,8 @@ void ReferencePass::addSample() {
 Image ReferencePass::readMean() const {
     Image image = readTextureImage(mAccumulation);
     const float scale = mSamples > 0 ? 1.0f / static_cast<float>(mSamples) : 0.0f;
-    for (glm::vec3& p : image.pixels) p *= scale;
+    for (glm::vec3& p : image.pixels)
+        p *= scale;
     return image;
 }
 

@@ -19,7 +19,7 @@ namespace ispm {
 inline constexpr int kReferenceDefaultBounces = 64;
 
 class ReferencePass {
-public:
+  public:
     // Builds its own GPU scene (BVH included): the command line's reference renders.
     ReferencePass(const Scene& scene, const Settings& settings);
     // Borrows the frame's GPU scene (the viewer's: no second BVH at every restart); it must
@@ -33,7 +33,7 @@ public:
     Image readMean() const;
     int getBounces() const { return mBounces; }
 
-private:
+  private:
     ReferencePass(const Scene& scene, std::unique_ptr<GpuScene> owned, const GpuScene* borrowed,
                   const FrameSettings& settings);
 

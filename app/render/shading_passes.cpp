@@ -54,7 +54,8 @@ void TonemapPass::execute(const FrameInputs& inputs) {
         mExposure.clearToZero();
         mHistogram.use();
         const auto groups = [](int size) {
-            return (static_cast<unsigned>(size) + gpu::kExposureGroupSize - 1) / gpu::kExposureGroupSize;
+            return (static_cast<unsigned>(size) + gpu::kExposureGroupSize - 1) /
+                   gpu::kExposureGroupSize;
         };
         gl::dispatchCompute(groups(inputs.width), groups(inputs.height));
         gl::memoryBarrier(gl::Barrier::Storage);

@@ -10,7 +10,7 @@
 namespace ispm {
 
 class DirectPass final : public Pass {
-public:
+  public:
     DirectPass(const GBuffer& viewer, const GBuffer& lights);
     const char* getName() const override { return "direct"; }
     void resize(int width, int height) override { mTarget.resize(width, height); }
@@ -18,14 +18,14 @@ public:
     void reloadPrograms(ShaderReloadReport& report) override { mTarget.reloadProgram(report); }
     const gl::Texture& getOutput() const { return mTarget.getTexture(); }
 
-private:
+  private:
     const GBuffer& mViewer;
     const GBuffer& mLights;
     FullscreenTarget mTarget;
 };
 
 class ComposePass final : public Pass {
-public:
+  public:
     ComposePass(const GBuffer& viewer, const gl::Texture& direct, const gl::Texture& indirect);
     const char* getName() const override { return "compose"; }
     void resize(int width, int height) override { mTarget.resize(width, height); }
@@ -33,7 +33,7 @@ public:
     void reloadPrograms(ShaderReloadReport& report) override { mTarget.reloadProgram(report); }
     const gl::Texture& getOutput() const { return mTarget.getTexture(); }
 
-private:
+  private:
     const GBuffer& mViewer;
     const gl::Texture& mDirect;
     const gl::Texture& mIndirect;
@@ -41,7 +41,7 @@ private:
 };
 
 class TonemapPass final : public Pass {
-public:
+  public:
     explicit TonemapPass(const gl::Texture& hdr);
     const char* getName() const override { return "tonemap"; }
     void resize(int width, int height) override { mTarget.resize(width, height); }
@@ -55,7 +55,7 @@ public:
         mTarget.reloadProgram(report);
     }
 
-private:
+  private:
     const gl::Texture& mHdr;
     ReloadableProgram mHistogram;
     ReloadableProgram mResolve;

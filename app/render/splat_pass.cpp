@@ -41,8 +41,7 @@ constexpr float kMaxRadiusFactor = 2.0f;
 
 SplatRadii computeSplatRadii(double surfaceAreaM2, float diagonalM, const FrameSettings& settings) {
     const double photons = std::max(1, settings.photons);
-    const auto r0 =
-        float(std::sqrt(kSplatOverlap * surfaceAreaM2 / (glm::pi<double>() * photons)));
+    const auto r0 = float(std::sqrt(kSplatOverlap * surfaceAreaM2 / (glm::pi<double>() * photons)));
     SplatRadii r;
     r.radiusMinM = settings.radiusMinM.value_or(kMinRadiusFactor * r0) * settings.radiusScale;
     r.radiusMaxM = settings.radiusMaxM.value_or(kMaxRadiusFactor * r0) * settings.radiusScale;
@@ -82,8 +81,8 @@ void SplatPass::execute(const FrameInputs& inputs) {
     mFramebuffer.bind();
     // Additive float accumulation; only back faces count, so each box covers a pixel once.
     const bool cullInRasteriser = inputs.settings.splatBackFacesOnly;
-    gl::applyState({.blend = gl::Blend::Additive,
-                    .cull = cullInRasteriser ? gl::Cull::Front : gl::Cull::Off});
+    gl::applyState(
+        {.blend = gl::Blend::Additive, .cull = cullInRasteriser ? gl::Cull::Front : gl::Cull::Off});
     mProgram.use();
     mVertexArray.bind();
     mBuffers.bind();

@@ -26,7 +26,7 @@ struct SplatRadii {
 SplatRadii computeSplatRadii(double surfaceAreaM2, float diagonalM, const FrameSettings& settings);
 
 class SplatPass final : public Pass {
-public:
+  public:
     // `clip`: the density pass's clip distances, used when radius_mode is density.
     SplatPass(const GBuffer& viewer, const PhotonBuffers& buffers, const gl::Buffer& clip);
     const char* getName() const override { return "splat"; }
@@ -37,7 +37,7 @@ public:
     // No photons this frame: the buffer, sized as execute would, holds no light.
     void clear(const FrameInputs& inputs);
 
-private:
+  private:
     void resizeBuffer(int width, int height);
 
     const GBuffer& mViewer;

@@ -13,7 +13,7 @@
 namespace ispm {
 
 class UpsamplePass final : public Pass {
-public:
+  public:
     UpsamplePass(const GBuffer& viewer, const gl::Texture& filtered);
     const char* getName() const override { return "upsample"; }
     void resize(int width, int height) override { mTarget.resize(width, height); }
@@ -21,7 +21,7 @@ public:
     void reloadPrograms(ShaderReloadReport& report) override { mProgram.reloadIfChanged(report); }
     const gl::Texture& getOutput() const { return mTarget.getTexture(); }
 
-private:
+  private:
     const GBuffer& mViewer;
     const gl::Texture& mFiltered;
     ReloadableProgram mProgram;

@@ -19,9 +19,11 @@ namespace ispm {
 // Choices of the enum settings, in the order of their constants in shaders/shared/.
 inline constexpr std::array<std::string_view, 3> kToneMapChoices = {"thesis", "filmic", "linear"};
 inline constexpr std::array<std::string_view, 2> kRngChoices = {"pcg", "lcg"};
-inline constexpr std::array<std::string_view, 3> kRadiusModeChoices = {"travel", "path_density", "density"};
+inline constexpr std::array<std::string_view, 3> kRadiusModeChoices = {"travel", "path_density",
+                                                                       "density"};
 inline constexpr std::array<std::string_view, 2> kSplatFacesChoices = {"back", "all"};
-inline constexpr std::array<std::string_view, 4> kSplatResolutionChoices = {"auto", "1", "1/2", "1/4"};
+inline constexpr std::array<std::string_view, 4> kSplatResolutionChoices = {"auto", "1", "1/2",
+                                                                            "1/4"};
 
 struct FrameSettings {
     int width = 0;  // px
@@ -39,7 +41,7 @@ struct FrameSettings {
     int photons = 0;
     int bounces = 0;
     bool bouncesSet = false; // the reference path tracer has its own default
-    float importance = 0.0f;   // aimed share; 0 when importanceSamples is 0
+    float importance = 0.0f; // aimed share; 0 when importanceSamples is 0
     int importanceSamples = 0;
     uint32_t rng = 0; // gpu::kRng*
     // Splats.

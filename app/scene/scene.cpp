@@ -10,9 +10,12 @@ namespace ispm {
 
 const char* getLightTypeName(LightType type) {
     switch (type) {
-    case LightType::Point: return "point";
-    case LightType::Spot: return "spot";
-    case LightType::Sun: return "sun";
+    case LightType::Point:
+        return "point";
+    case LightType::Spot:
+        return "spot";
+    case LightType::Sun:
+        return "sun";
     }
     return "light";
 }
@@ -48,8 +51,8 @@ Aabb Scene::computeWorldBounds() const {
     // Each mesh's box, transformed: cheap enough to call every frame.
     Aabb bounds;
     for (const Instance& instance : instances) {
-        const Aabb world =
-            transformBounds(meshes.at(instance.meshIndex).computeBounds(), instance.worldFromObject);
+        const Aabb world = transformBounds(meshes.at(instance.meshIndex).computeBounds(),
+                                           instance.worldFromObject);
         if (!world.isEmpty()) bounds.extend(world);
     }
     return bounds;

@@ -19,8 +19,14 @@ namespace ispm {
 struct Aabb {
     glm::vec3 lo{std::numeric_limits<float>::max()};
     glm::vec3 hi{-std::numeric_limits<float>::max()};
-    void extend(const glm::vec3& p) { lo = glm::min(lo, p); hi = glm::max(hi, p); }
-    void extend(const Aabb& b) { lo = glm::min(lo, b.lo); hi = glm::max(hi, b.hi); }
+    void extend(const glm::vec3& p) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    void extend(const Aabb& b) {
+        lo = glm::min(lo, b.lo);
+        hi = glm::max(hi, b.hi);
+    }
     bool isEmpty() const { return lo.x > hi.x; }
     glm::vec3 getCenter() const { return 0.5f * (lo + hi); }
     glm::vec3 getExtent() const { return hi - lo; }
@@ -61,11 +67,11 @@ enum class LightType : uint32_t { Point = 0, Spot = 1, Sun = 2 };
 
 struct Light {
     LightType type = LightType::Point;
-    glm::vec3 position{0.0f};  // point, spot
+    glm::vec3 position{0.0f};               // point, spot
     glm::vec3 direction{0.0f, -1.0f, 0.0f}; // spot axis; sun: the direction light travels (unit)
-    glm::vec3 intensity{0.0f}; // point, spot: W/sr (spot: on the axis)
-    glm::vec3 irradiance{0.0f}; // sun: W/m^2 on a surface facing it
-    float innerDeg = 0.0f;     // spot half-angles
+    glm::vec3 intensity{0.0f};              // point, spot: W/sr (spot: on the axis)
+    glm::vec3 irradiance{0.0f};             // sun: W/m^2 on a surface facing it
+    float innerDeg = 0.0f;                  // spot half-angles
     float outerDeg = 0.0f;
     float photonShare = -1.0f; // < 0: derived from the light's power
     // Set for lights that move; position and direction above are then its state at the last

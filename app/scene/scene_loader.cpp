@@ -129,16 +129,16 @@ void selectCamera(Scene& scene, const std::string& name) {
         }
         known += (known.empty() ? "" : ", ") + cameraName;
     }
-    throwInputError(scene.sourcePath, "/cameras",
-                    strCat("a camera named '", name, "' (named: ", known.empty() ? "none" : known, ")"));
+    throwInputError(
+        scene.sourcePath, "/cameras",
+        strCat("a camera named '", name, "' (named: ", known.empty() ? "none" : known, ")"));
 }
 
 Scene parseScene(const nlohmann::json& doc, const std::string& file, const std::string& baseDir) {
     const JsonNode root(doc, "", file);
-    root.checkKeys(
-        {"name", "description", "camera", "cameras", "background", "materials", "objects", "lights",
-         "render"},
-        "a scene");
+    root.checkKeys({"name", "description", "camera", "cameras", "background", "materials",
+                    "objects", "lights", "render"},
+                   "a scene");
     Scene scene;
     scene.sourcePath = file;
     ParseContext context{scene, baseDir, {}};

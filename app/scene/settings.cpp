@@ -27,28 +27,80 @@ const std::vector<SettingDesc>& table() {
          "tone-map operator: thesis (luminance clamped at luminance_max), filmic (ACES fit), "
          "linear (exposure only, clipped)",
          toChoices(kToneMapChoices)},
-        {"exposure", SettingType::Float, 0, -30, 30, "stops", "scale before tone mapping, 2^exposure",
+        {"exposure",
+         SettingType::Float,
+         0,
+         -30,
+         30,
+         "stops",
+         "scale before tone mapping, 2^exposure",
          {}},
-        {"luminance_max", SettingType::Float, 0, 1e-6, 1e9, "W/(m^2 sr)",
+        {"luminance_max",
+         SettingType::Float,
+         0,
+         1e-6,
+         1e9,
+         "W/(m^2 sr)",
          "luminance mapped to white by the thesis operator; derived from the image (99th "
          "percentile of luminance) when not set",
-         {}, true},
-        {"gamma", SettingType::Float, 2.2, 0.1, 10, "", "display gamma applied after tone mapping",
+         {},
+         true},
+        {"gamma",
+         SettingType::Float,
+         2.2,
+         0.1,
+         10,
+         "",
+         "display gamma applied after tone mapping",
          {}},
-        {"shadow_map_size", SettingType::Int, 1024, 16, 8192, "px",
-         "resolution of every light camera's G-buffer and shadow map", {}},
-        {"shadow_bias", SettingType::Float, 1.5, 0, 100, "texels",
-         "shadow-map depth bias, in light-camera texels at the receiver's depth", {}},
+        {"shadow_map_size",
+         SettingType::Int,
+         1024,
+         16,
+         8192,
+         "px",
+         "resolution of every light camera's G-buffer and shadow map",
+         {}},
+        {"shadow_bias",
+         SettingType::Float,
+         1.5,
+         0,
+         100,
+         "texels",
+         "shadow-map depth bias, in light-camera texels at the receiver's depth",
+         {}},
         {"seed", SettingType::Int, 1, 0, 2147483647, "", "random seed of the frame", {}},
-        {"photons", SettingType::Int, 50000, 0, 16777216, "",
-         "photon budget of the frame, shared among the lights (photon_share, else by power)", {}},
-        {"bounces", SettingType::Int, 3, 0, 16, "",
-         "indirect light that reflected 1..bounces times is kept (0: direct light only)", {}},
-        {"importance", SettingType::Float, 0.75, 0, 1, "",
+        {"photons",
+         SettingType::Int,
+         50000,
+         0,
+         16777216,
+         "",
+         "photon budget of the frame, shared among the lights (photon_share, else by power)",
+         {}},
+        {"bounces",
+         SettingType::Int,
+         3,
+         0,
+         16,
+         "",
+         "indirect light that reflected 1..bounces times is kept (0: direct light only)",
+         {}},
+        {"importance",
+         SettingType::Float,
+         0.75,
+         0,
+         1,
+         "",
          "share of each light view's photons aimed at what the viewer sees (its importance map); "
          "the rest follow the light's power alone (0: the thesis's uniform grid)",
          {}},
-        {"importance_samples", SettingType::Int, 8192, 0, 1048576, "",
+        {"importance_samples",
+         SettingType::Int,
+         8192,
+         0,
+         1048576,
+         "",
          "viewer pixels per frame that build the importance maps (each also casts one bounce ray)",
          {}},
         {"rng", SettingType::Enum, 0, 0, 1, "",
@@ -60,40 +112,100 @@ const std::vector<SettingDesc>& table() {
          "(path_density, McGuire and Luebke 2009) or from the local density of stored photons "
          "(density: each disc holds about splat_neighbours photons)",
          toChoices(kRadiusModeChoices)},
-        {"splat_neighbours", SettingType::Int, 0, 1, 4096, "",
+        {"splat_neighbours",
+         SettingType::Int,
+         0,
+         1,
+         4096,
+         "",
          "radius_mode density: photons a splat disc holds; derived: 0.11 sqrt(photons), 16 to 128",
-         {}, true},
-        {"radius_min", SettingType::Float, 0, 1e-6, 1e6, "m",
+         {},
+         true},
+        {"radius_min",
+         SettingType::Float,
+         0,
+         1e-6,
+         1e6,
+         "m",
          "travel modes: splat radius at dist_min or less; derived: r0 / 2, where `photons` discs "
-         "of radius r0 cover the scene's surface area 32 times; density: a floor when set", {},
+         "of radius r0 cover the scene's surface area 32 times; density: a floor when set",
+         {},
          true},
-        {"radius_max", SettingType::Float, 0, 1e-6, 1e6, "m",
+        {"radius_max",
+         SettingType::Float,
+         0,
+         1e-6,
+         1e6,
+         "m",
          "travel modes: splat radius at dist_max or more; derived: 2 r0; density: the largest "
-         "radius, derived: 4 r0 with r0 for splat_neighbours discs", {},
+         "radius, derived: 4 r0 with r0 for splat_neighbours discs",
+         {},
          true},
-        {"dist_min", SettingType::Float, 0, 0, 1e9, "m",
-         "travel distance where the radius starts to grow; derived: 0", {}, true},
-        {"dist_max", SettingType::Float, 0, 1e-6, 1e9, "m",
-         "travel distance where the radius reaches radius_max; derived: the scene's diagonal", {},
+        {"dist_min",
+         SettingType::Float,
+         0,
+         0,
+         1e9,
+         "m",
+         "travel distance where the radius starts to grow; derived: 0",
+         {},
          true},
-        {"radius_scale", SettingType::Float, 1, 1e-3, 1e3, "",
-         "multiplies every splat radius (derived or set)", {}},
-        {"squash", SettingType::Float, 0.1, 1e-3, 1, "",
-         "splat ellipsoid thickness along the surface normal, as a fraction of its radius", {}},
-        {"splat_passes", SettingType::Int, 1, 1, 64, "",
-         "number of draw calls the splats are split into", {}},
+        {"dist_max",
+         SettingType::Float,
+         0,
+         1e-6,
+         1e9,
+         "m",
+         "travel distance where the radius reaches radius_max; derived: the scene's diagonal",
+         {},
+         true},
+        {"radius_scale",
+         SettingType::Float,
+         1,
+         1e-3,
+         1e3,
+         "",
+         "multiplies every splat radius (derived or set)",
+         {}},
+        {"squash",
+         SettingType::Float,
+         0.1,
+         1e-3,
+         1,
+         "",
+         "splat ellipsoid thickness along the surface normal, as a fraction of its radius",
+         {}},
+        {"splat_passes",
+         SettingType::Int,
+         1,
+         1,
+         64,
+         "",
+         "number of draw calls the splats are split into",
+         {}},
         {"splat_resolution", SettingType::Enum, 0, 0, 3, "",
          "resolution of the splat buffer against the image: 1, 1/2 or 1/4, upsampled by a "
          "joint-bilateral filter on the viewer G-buffer (normals, planes, reflectance); auto: "
          "1/2 from 256 px on (min(width, height)), else 1",
          toChoices(kSplatResolutionChoices)},
-        {"denoise", SettingType::Int, 0, 0, 8, "",
+        {"denoise",
+         SettingType::Int,
+         0,
+         0,
+         8,
+         "",
          "iterations of an edge-aware a-trous filter on the indirect light (steps of 1, 2, 4 ... "
          "pixels of the splat buffer, guided by normals and planes of the viewer G-buffer); 0 = "
          "the splats as they are; derived: log2(min(w, h) / 32) of the splat buffer's size, at "
          "most 3 (2 at 256 px with the splats at 1/2)",
-         {}, true},
-        {"accumulate", SettingType::Int, 0, 0, 65536, "frames",
+         {},
+         true},
+        {"accumulate",
+         SettingType::Int,
+         0,
+         0,
+         65536,
+         "frames",
          "temporal accumulation of the indirect light: while the camera, the scene and the "
          "settings stay as they are, each frame traces new photons (seed + frame) and is "
          "averaged in, a running mean over this many frames and then an exponential one over as "
@@ -109,7 +221,9 @@ const std::vector<SettingDesc>& table() {
 
 } // namespace
 
-std::span<const SettingDesc> getSettingTable() { return table(); }
+std::span<const SettingDesc> getSettingTable() {
+    return table();
+}
 
 const SettingDesc* findSetting(std::string_view name) {
     for (const SettingDesc& d : table()) {
@@ -131,9 +245,12 @@ std::string formatNumber(double value) {
 
 std::string describeType(const SettingDesc& d) {
     switch (d.type) {
-    case SettingType::Int: return "int";
-    case SettingType::Float: return "float";
-    case SettingType::Enum: return "enum";
+    case SettingType::Int:
+        return "int";
+    case SettingType::Float:
+        return "float";
+    case SettingType::Enum:
+        return "enum";
     }
     return "";
 }
@@ -148,13 +265,14 @@ std::string formatSettingsMarkdown() {
         std::string range;
         if (d.type == SettingType::Enum) {
             defaultText = strCat("`", d.choices.at(static_cast<size_t>(d.defaultValue)), "`");
-            for (std::string_view c : d.choices) range += (range.empty() ? "" : ", ") + strCat("`", c, "`");
+            for (std::string_view c : d.choices)
+                range += (range.empty() ? "" : ", ") + strCat("`", c, "`");
         } else {
             defaultText = d.derived ? "derived" : formatNumber(d.defaultValue);
             range = strCat(formatNumber(d.minValue), " to ", formatNumber(d.maxValue));
         }
-        out += strCat("| `", d.name, "` | ", describeType(d), " | ", defaultText, " | ", range, " | ",
-                      d.unit, " | ", d.help, " |\n");
+        out += strCat("| `", d.name, "` | ", describeType(d), " | ", defaultText, " | ", range,
+                      " | ", d.unit, " | ", d.help, " |\n");
     }
     return out;
 }
@@ -163,7 +281,8 @@ static const SettingDesc& requireSetting(std::string_view name, const std::strin
     const SettingDesc* desc = findSetting(name);
     if (!desc) {
         std::string known;
-        for (const SettingDesc& d : table()) known += (known.empty() ? "" : ", ") + std::string(d.name);
+        for (const SettingDesc& d : table())
+            known += (known.empty() ? "" : ", ") + std::string(d.name);
         throw InputError(strCat(where, ": unknown setting '", name, "' (known: ", known, ")"));
     }
     return *desc;
@@ -172,7 +291,8 @@ static const SettingDesc& requireSetting(std::string_view name, const std::strin
 void Settings::set(std::string_view name, double value, const std::string& where) {
     const SettingDesc& desc = requireSetting(name, where);
     if (!std::isfinite(value) || value < desc.minValue || value > desc.maxValue) {
-        throw InputError(strCat(where, ": expected ", desc.name, " in [", desc.minValue, ", ", desc.maxValue, "], got ", value));
+        throw InputError(strCat(where, ": expected ", desc.name, " in [", desc.minValue, ", ",
+                                desc.maxValue, "], got ", value));
     }
     if (desc.type != SettingType::Float && value != std::floor(value)) {
         throw InputError(strCat(where, ": expected an integer for ", desc.name, ", got ", value));
@@ -188,8 +308,10 @@ void Settings::setEnum(std::string_view name, std::string_view choice, const std
     auto it = std::find(desc.choices.begin(), desc.choices.end(), choice);
     if (it == desc.choices.end()) {
         std::string options;
-        for (std::string_view c : desc.choices) options += (options.empty() ? "" : "|") + std::string(c);
-        throw InputError(strCat(where, ": expected ", name, " to be one of ", options, ", got '", choice, "'"));
+        for (std::string_view c : desc.choices)
+            options += (options.empty() ? "" : "|") + std::string(c);
+        throw InputError(
+            strCat(where, ": expected ", name, " to be one of ", options, ", got '", choice, "'"));
     }
     mValues[std::string(name)] = static_cast<double>(it - desc.choices.begin());
 }
@@ -214,7 +336,9 @@ void Settings::setFromString(std::string_view assignment, const std::string& whe
     set(name, value, where);
 }
 
-bool Settings::isSet(std::string_view name) const { return mValues.find(name) != mValues.end(); }
+bool Settings::isSet(std::string_view name) const {
+    return mValues.find(name) != mValues.end();
+}
 
 double Settings::get(std::string_view name) const {
     auto it = mValues.find(name);
@@ -233,7 +357,8 @@ std::string_view Settings::getEnum(std::string_view name) const {
 }
 
 void Settings::merge(const Settings& other) {
-    for (const auto& [name, value] : other.mValues) mValues[name] = value;
+    for (const auto& [name, value] : other.mValues)
+        mValues[name] = value;
 }
 
 } // namespace ispm

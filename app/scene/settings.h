@@ -36,7 +36,7 @@ std::string formatSettingsMarkdown();
 // Values that differ from the table's defaults. Values are checked against the table on entry;
 // a bad name or value throws InputError with `where` as context (a file and JSON path, or a flag).
 class Settings {
-public:
+  public:
     void set(std::string_view name, double value, const std::string& where);
     // Parses "name=value" as given on the command line (enum values by name).
     void setFromString(std::string_view assignment, const std::string& where);
@@ -52,7 +52,7 @@ public:
     void merge(const Settings& other);
     const std::map<std::string, double, std::less<>>& getOverrides() const { return mValues; }
 
-private:
+  private:
     std::map<std::string, double, std::less<>> mValues;
 };
 

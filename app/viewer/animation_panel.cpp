@@ -11,7 +11,7 @@ namespace ispm {
 namespace {
 
 constexpr double kMinScrubRangeS = 60.0;
-constexpr float kMaxSpeed = 8.0f; // faster than this a 30 Hz software frame skips whole motions
+constexpr float kMaxSpeed = 8.0f;     // faster than this a 30 Hz software frame skips whole motions
 constexpr double kStepS = 1.0 / 60.0; // one 60 Hz frame: the step bench --animate uses
 
 } // namespace

@@ -17,7 +17,7 @@ namespace {
 constexpr GLint kLocationRegion = 0;
 constexpr GLint kLocationTransform = 1;
 constexpr GLuint kUnitSource = 0;
-constexpr float kDisplayGamma = 2.2f; // linear views are encoded like the default tone map
+constexpr float kDisplayGamma = 2.2f;     // linear views are encoded like the default tone map
 constexpr float kImportanceWhite = 20.0f; // light importance: this pdf (x uniform) shows white
 
 ReloadableProgram buildBlitProgram(bool isArray) {

@@ -26,7 +26,7 @@ constexpr GLint kLocationRegion = 0;
 constexpr GLint kLocationParams = 1;
 constexpr GLuint kUnitTotal = 0;
 constexpr GLuint kUnitReference = 1;
-constexpr float kDisplayGamma = 2.2f; // as the other linear views (debug_view.cpp)
+constexpr float kDisplayGamma = 2.2f;    // as the other linear views (debug_view.cpp)
 constexpr float kLegendHeightPx = 12.0f; // the legend bar of reference_view.frag
 // The path tracer restarts only after the camera has been still this long: flying would
 // otherwise rebuild its GPU scene every frame for a single sample.
@@ -79,7 +79,8 @@ void ReferenceView::update(const Scene& scene, const FrameRunner& runner) {
     if (mRendering && (mPass || ++mStillFrames >= kStillFramesBeforeRestart)) {
         if (!mPass) {
             try {
-                mPass = std::make_unique<ReferencePass>(scene, runner.getGpuScene(), runner.getSettings());
+                mPass = std::make_unique<ReferencePass>(scene, runner.getGpuScene(),
+                                                        runner.getSettings());
             } catch (const gl::Error& e) {
                 // Its shader is read anew at every restart: an edit in progress must not end
                 // the session.

@@ -106,7 +106,7 @@ class Viewer {
     std::string mPendingScenePath;
     ScriptPlayer mScript;
     TimingHistory mTimings;
-    PhotonCounts mCounts;      // of a recent frame (see kStatsReadbackFrames)
+    PhotonCounts mCounts;       // of a recent frame (see kStatsReadbackFrames)
     float mLuminanceMax = 0.0f; // likewise
     uint64_t mFrameIndex = 0;
     int mWindowWidth = 0;
@@ -413,8 +413,8 @@ void Viewer::drawPanels() {
     if (mScene.isAnimated() && ImGui::CollapsingHeader("Animation")) drawAnimationPanel(mClock);
     if (ImGui::CollapsingHeader("Stats", ImGuiTreeNodeFlags_DefaultOpen)) {
         drawStatsPanel(mTimings, mCounts, mContext.getInfo().renderer,
-                       gl::getTimingMethodName(mRunner->getTimingMethod()),
-                       mLuminanceMax, mRunner->getAccumulatedFrames());
+                       gl::getTimingMethodName(mRunner->getTimingMethod()), mLuminanceMax,
+                       mRunner->getAccumulatedFrames());
     }
     if (!mStatus.empty()) ImGui::TextWrapped("%s", mStatus.c_str());
     ImGui::End();

@@ -5,8 +5,8 @@
 #define ISPM_HOST_DEVICE_H
 
 #ifdef __cplusplus
-#include <glm/glm.hpp>
 #include <cstdint>
+#include <glm/glm.hpp>
 #define ISPM_NAMESPACE_BEGIN namespace ispm::gpu {
 #define ISPM_NAMESPACE_END }
 #define ISPM_CONST inline constexpr

@@ -49,9 +49,9 @@ ISPM_INLINE float computePlaneSolidAngleDensity(vec2 p) {
 
 // Parameters of the importance passes (std140 uniform block).
 struct ImportanceParams {
-    uvec4 counts;   // x = gather samples across, y = down, z = light view count, w = frame seed
-    vec4 weights;   // x = importance share (1 - uniform floor), y = weight of a visible point,
-                    // z = weight of a point one bounce away, w = ray offset (m)
+    uvec4 counts; // x = gather samples across, y = down, z = light view count, w = frame seed
+    vec4 weights; // x = importance share (1 - uniform floor), y = weight of a visible point,
+                  // z = weight of a point one bounce away, w = ray offset (m)
 };
 ISPM_STATIC_ASSERT_SIZE(ImportanceParams, 32);
 ISPM_CONST int kBindingImportanceParams = 1; // uniform buffer

@@ -36,11 +36,11 @@ ISPM_STATIC_ASSERT_SIZE(LightPhotonCounters, 16);
 
 // Counters and indirect arguments in one buffer, so one bind serves every stage.
 struct PhotonCounters {
-    uvec4 bounce;        // x = bounce photons written (transform feedback query result)
-    uvec4 result;        // x = result photons appended (may pass capacity), y = capacity,
-                         // z = overflow (appends dropped), w = bounce capacity
-    uvec4 traceDispatch; // glDispatchComputeIndirect arguments (x, y, z)
-    uvec4 splatDraw;     // glDrawArraysIndirect: count, instanceCount, first, baseInstance
+    uvec4 bounce;          // x = bounce photons written (transform feedback query result)
+    uvec4 result;          // x = result photons appended (may pass capacity), y = capacity,
+                           // z = overflow (appends dropped), w = bounce capacity
+    uvec4 traceDispatch;   // glDispatchComputeIndirect arguments (x, y, z)
+    uvec4 splatDraw;       // glDrawArraysIndirect: count, instanceCount, first, baseInstance
     uvec4 densityDispatch; // glDispatchComputeIndirect over the stored result photons (xyz)
     uvec4 clipDispatch;    // glDispatchComputeIndirect over the photons whose discs may meet a
                            // surface (xyz), w = their count (photon_density.comp)
@@ -59,12 +59,12 @@ ISPM_CONST uint kSplatDrawUvec4s = 2u;
 ISPM_CONST int kBindingBouncePhotons = 11;
 ISPM_CONST int kBindingResultPhotons = 12;
 ISPM_CONST int kBindingPhotonCounters = 13;
-ISPM_CONST int kBindingSplatDraws = 14; // indexed draw commands, kSplatDrawUvec4s per splat pass
-ISPM_CONST int kBindingLightCounts = 19;  // uvec4 per light (LightPhotonCounters)
+ISPM_CONST int kBindingSplatDraws = 14;    // indexed draw commands, kSplatDrawUvec4s per splat pass
+ISPM_CONST int kBindingLightCounts = 19;   // uvec4 per light (LightPhotonCounters)
 ISPM_CONST int kBindingEmissionGrids = 20; // uvec4 per grid: first photon, view, 0, 0
 ISPM_CONST uint kReflectionBits = 8u;      // ResultPhoton.incoming.w: reflections, then light
-ISPM_CONST int kBindingDensityCells = 17; // photon_density.comp's hashed grid (4 uints a slot),
-                                          // then its clip list (a uint per result photon)
+ISPM_CONST int kBindingDensityCells = 17;  // photon_density.comp's hashed grid (4 uints a slot),
+                                           // then its clip list (a uint per result photon)
 
 // Splat radius modes (setting radius_mode, checked against the table in splat_pass.cpp).
 ISPM_CONST uint kRadiusTravel = 0u;

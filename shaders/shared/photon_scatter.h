@@ -84,7 +84,9 @@ ISPM_INLINE float computeFresnel(float cosIncident, float eta) {
     return 0.5f * (rs * rs + rp * rp);
 }
 
-ISPM_INLINE float computeMean(vec3 v) { return (v.x + v.y + v.z) * (1.0f / 3.0f); }
+ISPM_INLINE float computeMean(vec3 v) {
+    return (v.x + v.y + v.z) * (1.0f / 3.0f);
+}
 
 // Scatters a path travelling along `dir` that hit a surface with unit normal `n` facing the side
 // it came from. `entering`: it hit the front face (for the index of refraction). A lobe is chosen
@@ -92,8 +94,8 @@ ISPM_INLINE float computeMean(vec3 v) { return (v.x + v.y + v.z) * (1.0f / 3.0f)
 // probability. selectScale = 1 is Russian roulette on the albedo (photons: absorbed paths end);
 // selectScale = 1 / (sum of the means) always picks a lobe (camera paths of the reference, which
 // apply their own roulette). Updates dir and weight; returns the kScatter* event.
-ISPM_INLINE uint scatterSurface(ISPM_INOUT(vec3) dir, ISPM_INOUT(vec3) weight, vec3 n,
-                                vec3 diffuse, vec4 specular, vec4 transmissive, bool entering,
+ISPM_INLINE uint scatterSurface(ISPM_INOUT(vec3) dir, ISPM_INOUT(vec3) weight, vec3 n, vec3 diffuse,
+                                vec4 specular, vec4 transmissive, bool entering,
                                 ISPM_INOUT(uint) rng, uint mode, float selectScale) {
     float pd = computeMean(diffuse) * selectScale;
     float ps = computeMean(vec3(specular)) * selectScale;
@@ -137,7 +139,8 @@ ISPM_INLINE uint scatterSurface(ISPM_INOUT(vec3) dir, ISPM_INOUT(vec3) weight, v
 ISPM_INLINE uint scatterPhoton(ISPM_INOUT(vec3) dir, ISPM_INOUT(vec3) power, vec3 n, vec3 diffuse,
                                vec4 specular, vec4 transmissive, bool entering,
                                ISPM_INOUT(uint) rng, uint mode) {
-    return scatterSurface(dir, power, n, diffuse, specular, transmissive, entering, rng, mode, 1.0f);
+    return scatterSurface(dir, power, n, diffuse, specular, transmissive, entering, rng, mode,
+                          1.0f);
 }
 
 // Path density: how much the scattering so far has concentrated the photon's path, relative to

@@ -30,39 +30,39 @@ ISPM_CONST uint kLightSpot = 1u;
 ISPM_CONST uint kLightSun = 2u;
 
 struct GpuLight {
-    vec4 position;      // xyz position (point, spot), w unused
-    vec4 directionCos;  // xyz unit axis (spot) or travel direction (sun), w = cos(outer)
-    vec4 power;         // rgb intensity W/sr (point, spot) or irradiance W/m^2 (sun), w = cos(inner)
-    uvec4 views;        // x = first light view, y = view count (6 for a point light), z = type
-                        // (kLight*)
+    vec4 position;     // xyz position (point, spot), w unused
+    vec4 directionCos; // xyz unit axis (spot) or travel direction (sun), w = cos(outer)
+    vec4 power;        // rgb intensity W/sr (point, spot) or irradiance W/m^2 (sun), w = cos(inner)
+    uvec4 views;       // x = first light view, y = view count (6 for a point light), z = type
+                       // (kLight*)
 };
 ISPM_STATIC_ASSERT_SIZE(GpuLight, 64);
 
 // One light camera (a layer of the light G-buffer array).
 struct GpuLightView {
     mat4 clipFromWorld;
-    vec4 originAxis;   // xyz: eye (perspective) or a point on the near plane (ortho)
-    vec4 axisTexel;    // xyz: unit view axis; w: texel size per metre of depth (perspective,
-                       // 2 tan(fov/2) / res) or texel size in metres (ortho)
-    uvec4 info;        // x = light index, y = 1 if orthographic
+    vec4 originAxis; // xyz: eye (perspective) or a point on the near plane (ortho)
+    vec4 axisTexel;  // xyz: unit view axis; w: texel size per metre of depth (perspective,
+                     // 2 tan(fov/2) / res) or texel size in metres (ortho)
+    uvec4 info;      // x = light index, y = 1 if orthographic
 };
 ISPM_STATIC_ASSERT_SIZE(GpuLightView, 112);
 
 // Binding points (storage buffers).
-ISPM_CONST int kBindingPositions = 0;   // vec4 per vertex, object space
-ISPM_CONST int kBindingTriangles = 1;   // uvec4 (i0, i1, i2, material)
-ISPM_CONST int kBindingInstances = 2;   // GpuInstance
-ISPM_CONST int kBindingMaterials = 3;   // GpuMaterial
-ISPM_CONST int kBindingLights = 4;      // GpuLight
-ISPM_CONST int kBindingLightViews = 5;  // GpuLightView
-ISPM_CONST int kBindingExposure = 6;    // tone-map statistics
+ISPM_CONST int kBindingPositions = 0;  // vec4 per vertex, object space
+ISPM_CONST int kBindingTriangles = 1;  // uvec4 (i0, i1, i2, material)
+ISPM_CONST int kBindingInstances = 2;  // GpuInstance
+ISPM_CONST int kBindingMaterials = 3;  // GpuMaterial
+ISPM_CONST int kBindingLights = 4;     // GpuLight
+ISPM_CONST int kBindingLightViews = 5; // GpuLightView
+ISPM_CONST int kBindingExposure = 6;   // tone-map statistics
 // 7..10: the BVH (shared/bvh_data.h); 11..: the photon buffers (shared/photon_data.h)
 
 // Binding points (uniform buffers).
 ISPM_CONST int kBindingFrameConstants = 0;
 
 // Texture units.
-ISPM_CONST int kUnitGBufferFirst = 0;    // viewer G-buffer channels, in table order
+ISPM_CONST int kUnitGBufferFirst = 0;      // viewer G-buffer channels, in table order
 ISPM_CONST int kUnitLightGBufferFirst = 8; // light G-buffer channels (2D arrays), in table order
 ISPM_CONST int kUnitDirect = 16;
 ISPM_CONST int kUnitIndirect = 17;

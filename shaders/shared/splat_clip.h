@@ -31,8 +31,9 @@ ISPM_CONST float kSameLineFraction = 0.02f;
 // axis-aligned walls of box scenes t and b follow the walls.
 ISPM_INLINE void buildSplatBasis(vec3 n, ISPM_OUT(vec3) t, ISPM_OUT(vec3) b) {
     vec3 a = abs(n);
-    vec3 axis = a.x <= a.y && a.x <= a.z ? vec3(1.0f, 0.0f, 0.0f)
-                                          : (a.y <= a.z ? vec3(0.0f, 1.0f, 0.0f) : vec3(0.0f, 0.0f, 1.0f));
+    vec3 axis = a.x <= a.y && a.x <= a.z
+                    ? vec3(1.0f, 0.0f, 0.0f)
+                    : (a.y <= a.z ? vec3(0.0f, 1.0f, 0.0f) : vec3(0.0f, 0.0f, 1.0f));
     t = normalize(cross(n, axis));
     b = cross(n, t);
 }

@@ -10,13 +10,13 @@ ISPM_NAMESPACE_BEGIN
 ISPM_CONST uint kLuminanceBins = 256u;
 ISPM_CONST float kLog2LuminanceMin = -24.0f; // below: treated as black, not counted
 ISPM_CONST float kLog2LuminanceMax = 40.0f;
-ISPM_CONST float kWhitePercentile = 0.99f;   // derived luminance_max: 99% of lit pixels are below
+ISPM_CONST float kWhitePercentile = 0.99f; // derived luminance_max: 99% of lit pixels are below
 ISPM_CONST uint kExposureGroupSize = 16u;
 
 struct ExposureData {
     uint histogram[kLuminanceBins];
-    uvec4 counts;        // x = pixels counted
-    vec4 luminanceMax;   // x = derived white point, W/(m^2 sr)
+    uvec4 counts;      // x = pixels counted
+    vec4 luminanceMax; // x = derived white point, W/(m^2 sr)
 };
 ISPM_STATIC_ASSERT_SIZE(ExposureData, 1056);
 

@@ -34,8 +34,8 @@ TEST(FlickerMeter, StandardDeviationOverMeanAwayFromMovingObjects) {
     for (int f = 0; f < 4; ++f) {
         Image frame(3, 1);
         const float light = f % 2 == 0 ? 1.0f : 3.0f;
-        frame.pixels[0] = glm::vec3(light);         // flickers
-        frame.pixels[1] = glm::vec3(2.0f);          // steady
+        frame.pixels[0] = glm::vec3(light);          // flickers
+        frame.pixels[1] = glm::vec3(2.0f);           // steady
         frame.pixels[2] = glm::vec3(100.0f * light); // background: ignored
         meter.addFrame(frame, positions, scene);
     }

@@ -135,7 +135,8 @@ TEST_F(BenchTest, PresetAppliesOnlyKnownSettings) {
         << j.dump();
     // Every preset setting is either applied or reported as skipped.
     EXPECT_EQ(applied.size() + skipped.size(), 8u) << j.dump();
-    EXPECT_NE(std::find(applied.begin(), applied.end(), "splat_resolution=1"), applied.end()) << j.dump();
+    EXPECT_NE(std::find(applied.begin(), applied.end(), "splat_resolution=1"), applied.end())
+        << j.dump();
 }
 
 TEST_F(BenchTest, AnimateTimesTheSceneUpdateFirst) {
@@ -172,7 +173,8 @@ TEST_F(BenchTest, FlickerIsZeroForAStillSceneAndNotForAMovingCube) {
     EXPECT_LT(moving["flicker"]["away_pixels"], moving["flicker"]["pixels"]) << moving.dump();
     EXPECT_EQ(moving["flicker"]["away_m"], 0.5);
     // Bad values: one line, exit 2.
-    for (const std::string& args : {mScene + " --flicker 1", mScene + " --flicker 3 --flicker-away -1"}) {
+    for (const std::string& args :
+         {mScene + " --flicker 1", mScene + " --flicker 3 --flicker-away -1"}) {
         const RunResult r = run("bench " + args, true);
         EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.output;
         EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;

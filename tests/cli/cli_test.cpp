@@ -16,10 +16,12 @@
 namespace ispm::test {
 namespace {
 
-RunResult run(const std::string& args) { return runIspm(args); }
+RunResult run(const std::string& args) {
+    return runIspm(args);
+}
 
 class CliTest : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override {
         mDir = std::filesystem::temp_directory_path() /
                ("ispm_cli_test_" +
@@ -39,7 +41,8 @@ protected:
         EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.output;
         EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
         for (const std::string& f : fragments) {
-            EXPECT_NE(r.output.find(f), std::string::npos) << "missing '" << f << "' in: " << r.output;
+            EXPECT_NE(r.output.find(f), std::string::npos)
+                << "missing '" << f << "' in: " << r.output;
         }
     }
     std::filesystem::path mDir;
@@ -62,7 +65,8 @@ TEST_F(CliTest, RendersPngAndPfm) {
     EXPECT_EQ(image.width, 32);
     EXPECT_EQ(image.height, 24);
     float maxValue = 0.0f;
-    for (const glm::vec3& p : image.pixels) maxValue = std::max(maxValue, p.x);
+    for (const glm::vec3& p : image.pixels)
+        maxValue = std::max(maxValue, p.x);
     EXPECT_GT(maxValue, 0.5f) << "not a black image";
 
     const std::string pfm = (mDir / "out.pfm").string();
@@ -72,7 +76,8 @@ TEST_F(CliTest, RendersPngAndPfm) {
 }
 
 TEST_F(CliTest, BadSceneFilesExitTwoWithFileAndPath) {
-    expectBadInput("render " + writeScene("broken.json", "{ \"camera\": ") + " -o x.png", {"broken.json"});
+    expectBadInput("render " + writeScene("broken.json", "{ \"camera\": ") + " -o x.png",
+                   {"broken.json"});
     std::string text = kGoodScene;
     text.replace(text.find("\"point\""), 7, "\"laser\"");
     expectBadInput("render " + writeScene("laser.json", text) + " -o x.png",
@@ -88,7 +93,8 @@ TEST_F(CliTest, BadSceneFilesExitTwoWithFileAndPath) {
     text = kGoodScene;
     text.replace(text.find("{\"type\": \"box\""), 0,
                  "{\"type\": \"mesh\", \"obj\": \"missing.obj\"}, ");
-    expectBadInput("render " + writeScene("obj.json", text) + " -o x.png", {"obj.json", "missing.obj"});
+    expectBadInput("render " + writeScene("obj.json", text) + " -o x.png",
+                   {"obj.json", "missing.obj"});
     expectBadInput("render " + (mDir / "nothere.json").string() + " -o x.png", {"nothere.json"});
 }
 
@@ -111,14 +117,19 @@ TEST_F(CliTest, CompareReportsMetricsAndThreshold) {
     const std::string a = (mDir / "a.pfm").string();
     const std::string b = (mDir / "b.pfm").string();
     ASSERT_EQ(run("render " + scene + " -o " + a + " --width 16 --height 16 -q").exitCode, 0);
-    ASSERT_EQ(run("render " + scene + " -o " + b + " --width 16 --height 16 -q --set exposure=1").exitCode, 0);
+    ASSERT_EQ(run("render " + scene + " -o " + b + " --width 16 --height 16 -q --set exposure=1")
+                  .exitCode,
+              0);
     RunResult same = run("compare " + a + " " + a + " --max-relmse 0");
     EXPECT_EQ(same.exitCode, 0) << same.output;
     EXPECT_NE(same.output.find("SSIM"), std::string::npos);
     // Exposure does not change linear output, so a and b agree too.
     EXPECT_EQ(run("compare " + a + " " + b + " --max-relmse 0").exitCode, 0);
     const std::string c = (mDir / "c.pfm").string();
-    ASSERT_EQ(run("render " + scene + " -o " + c + " --width 16 --height 16 -q --set shadow_bias=50").exitCode, 0);
+    ASSERT_EQ(
+        run("render " + scene + " -o " + c + " --width 16 --height 16 -q --set shadow_bias=50")
+            .exitCode,
+        0);
     expectBadInput("compare " + a + " " + (mDir / "none.pfm").string(), {"none.pfm"});
 }
 
@@ -129,7 +140,7 @@ TEST_F(CliTest, CompareMaskRestrictsThePixels) {
     Image mask(kSize, kSize, glm::vec3(0.0f));
     for (int y = 0; y < kSize; ++y) {
         for (int x = 0; x < kSize; ++x) {
-            if (x >= kSize / 2) b.at(x, y) = glm::vec3(2.0f); // differs on the right half
+            if (x >= kSize / 2) b.at(x, y) = glm::vec3(2.0f);   // differs on the right half
             if (x < kSize / 2) mask.at(x, y) = glm::vec3(1.0f); // compares the left half
         }
     }
@@ -156,7 +167,8 @@ TEST_F(CliTest, CompareMinusGivesTheQualityFiguresOfADifference) {
     Image b(kSize, kSize, glm::vec3(3.0f));
     Image c(kSize, kSize, glm::vec3(2.0f));
     for (int y = 0; y < kSize / 2; ++y) {
-        for (int x = 0; x < kSize / 2; ++x) c.at(x, y) = glm::vec3(3.0f);
+        for (int x = 0; x < kSize / 2; ++x)
+            c.at(x, y) = glm::vec3(3.0f);
     }
     const std::string pa = (mDir / "a.pfm").string();
     const std::string pb = (mDir / "b.pfm").string();
@@ -167,7 +179,8 @@ TEST_F(CliTest, CompareMinusGivesTheQualityFiguresOfADifference) {
     const RunResult r = run("compare " + pa + " " + pb + " --minus " + pc);
     EXPECT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("energy        1.500000 (mean ratio over the 48 pixels"),
-              std::string::npos) << r.output;
+              std::string::npos)
+        << r.output;
     EXPECT_NE(r.output.find("rel RMSE 4x4  0.500000"), std::string::npos) << r.output;
     writeImage((mDir / "small.pfm").string(), Image(2, 2));
     expectBadInput("compare " + pa + " " + pb + " --minus " + (mDir / "small.pfm").string(),

@@ -57,9 +57,9 @@ struct GpuHit {
 };
 
 gl::Program buildTraceRaysProgram() {
-    return gl::Program::build(
-        getShaderRoot(), {.label = "debug trace rays",
-                          .stages = {{gl::ShaderStage::Compute, "debug/trace_rays.comp"}}});
+    return gl::Program::build(getShaderRoot(),
+                              {.label = "debug trace rays",
+                               .stages = {{gl::ShaderStage::Compute, "debug/trace_rays.comp"}}});
 }
 
 std::vector<GpuHit> traceOnGpu(const GpuScene& scene, std::span<const Ray> rays) {
@@ -193,8 +193,7 @@ TEST_F(BvhGpuTest, MatchesCpuOnBoxCity) {
     std::mt19937 rng(kSeed);
     std::vector<Ray> rays(kRayCount);
     for (Ray& ray : rays) {
-        ray.origin =
-            lo + size * glm::vec3(drawUniform(rng), drawUniform(rng), drawUniform(rng));
+        ray.origin = lo + size * glm::vec3(drawUniform(rng), drawUniform(rng), drawUniform(rng));
         ray.direction = drawDirection(rng);
         ray.tMax = kLongRayM;
     }
@@ -219,8 +218,7 @@ TEST_F(BvhGpuTest, MatchesCpuOnBoxCity) {
             if (!sameTriangle && closeT) {
                 const std::optional<float> tClaimed =
                     intersectClaimedTriangle(bvh, scene, rays[i], gpu.instance, gpu.triangle);
-                isTie = tClaimed &&
-                        std::abs(*tClaimed - cpu->t) <= kRelativeTolerance * cpu->t;
+                isTie = tClaimed && std::abs(*tClaimed - cpu->t) <= kRelativeTolerance * cpu->t;
             }
             agrees = sameTriangle && closeT;
         }
@@ -230,17 +228,17 @@ TEST_F(BvhGpuTest, MatchesCpuOnBoxCity) {
             continue;
         }
         if (++hardMismatches <= kMaxReportedMismatches) {
-            ADD_FAILURE() << strCat(
-                "ray ", i, " origin (", rays[i].origin.x, ", ", rays[i].origin.y, ", ",
-                rays[i].origin.z, ") direction (", rays[i].direction.x, ", ",
-                rays[i].direction.y, ", ", rays[i].direction.z, "): cpu ",
-                cpu ? strCat("hit triangle ", cpu->triangleIndex, " instance ",
-                             cpu->instanceIndex, " t ", cpu->t)
-                    : std::string("miss"),
-                ", gpu ",
-                gpu.found ? strCat("hit triangle ", gpu.triangle, " instance ", gpu.instance,
-                                   " t ", gpu.t)
-                          : std::string("miss"));
+            ADD_FAILURE() << strCat("ray ", i, " origin (", rays[i].origin.x, ", ",
+                                    rays[i].origin.y, ", ", rays[i].origin.z, ") direction (",
+                                    rays[i].direction.x, ", ", rays[i].direction.y, ", ",
+                                    rays[i].direction.z, "): cpu ",
+                                    cpu ? strCat("hit triangle ", cpu->triangleIndex, " instance ",
+                                                 cpu->instanceIndex, " t ", cpu->t)
+                                        : std::string("miss"),
+                                    ", gpu ",
+                                    gpu.found ? strCat("hit triangle ", gpu.triangle, " instance ",
+                                                       gpu.instance, " t ", gpu.t)
+                                              : std::string("miss"));
         }
     }
     EXPECT_EQ(hardMismatches, 0);
@@ -263,8 +261,8 @@ TEST_F(BvhGpuTest, ReportsNoHitForRaysThatMissEverything) {
     scene.materials.push_back(grey);
     Mesh quad;
     quad.name = "quad";
-    quad.positions = {{-1.0f, -1.0f, kQuadZ}, {1.0f, -1.0f, kQuadZ}, {1.0f, 1.0f, kQuadZ},
-                      {-1.0f, 1.0f, kQuadZ}};
+    quad.positions = {
+        {-1.0f, -1.0f, kQuadZ}, {1.0f, -1.0f, kQuadZ}, {1.0f, 1.0f, kQuadZ}, {-1.0f, 1.0f, kQuadZ}};
     quad.triangles = {{0, 1, 2}, {0, 2, 3}};
     quad.triangleMaterials = {0, 0};
     scene.meshes.push_back(quad);

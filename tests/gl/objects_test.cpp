@@ -46,7 +46,8 @@ TEST_F(ObjectsTest, TextureUploadReadAndArrays) {
     constexpr int kH = 3;
     gl::Texture t = gl::Texture::create2D("test texture", gl::Format::RGBA32F, kW, kH);
     std::vector<glm::vec4> texels(kW * kH);
-    for (size_t i = 0; i < texels.size(); ++i) texels[i] = glm::vec4(float(i), -float(i), 0.5f, 1.0f);
+    for (size_t i = 0; i < texels.size(); ++i)
+        texels[i] = glm::vec4(float(i), -float(i), 0.5f, 1.0f);
     t.uploadRgba(texels);
     EXPECT_EQ(t.readRgba(), texels);
     EXPECT_EQ(getLabel(GL_TEXTURE, t.getId()), "test texture");
@@ -83,8 +84,10 @@ TEST_F(ObjectsTest, FramebufferClearsAttachments) {
     fb.checkComplete();
     fb.clearColor(0, glm::vec4(0.25f, 0.5f, 0.75f, 1.0f));
     fb.clearDepth(0.5f);
-    for (const glm::vec4& c : color.readRgba()) EXPECT_EQ(c, glm::vec4(0.25f, 0.5f, 0.75f, 1.0f));
-    for (float d : depth.readDepth()) EXPECT_EQ(d, 0.5f);
+    for (const glm::vec4& c : color.readRgba())
+        EXPECT_EQ(c, glm::vec4(0.25f, 0.5f, 0.75f, 1.0f));
+    for (float d : depth.readDepth())
+        EXPECT_EQ(d, 0.5f);
     gl::Framebuffer incomplete("incomplete framebuffer");
     EXPECT_THROW(incomplete.checkComplete(), gl::Error);
 }
@@ -99,11 +102,13 @@ TEST_F(ObjectsTest, GeometryShaderTransformFeedbackWithQueryBuffer) {
     std::ofstream(root / "tf.geom")
         << "layout(points) in;\nlayout(points, max_vertices = 1) out;\nin int vIndex[];\n"
            "out float outValue;\n"
-           "void main() { if (vIndex[0] % 3 == 0) { outValue = float(vIndex[0]); EmitVertex(); } }\n";
+           "void main() { if (vIndex[0] % 3 == 0) { outValue = float(vIndex[0]); EmitVertex(); } "
+           "}\n";
     gl::Program program = gl::Program::build(
-        root, {.label = "tf test",
-               .stages = {{gl::ShaderStage::Vertex, "tf.vert"}, {gl::ShaderStage::Geometry, "tf.geom"}},
-               .feedbackVaryings = {"outValue"}});
+        root,
+        {.label = "tf test",
+         .stages = {{gl::ShaderStage::Vertex, "tf.vert"}, {gl::ShaderStage::Geometry, "tf.geom"}},
+         .feedbackVaryings = {"outValue"}});
     constexpr int kPoints = 1000;
     constexpr int kExpected = (kPoints + 2) / 3; // indices 0, 3, 6, ...
     gl::Buffer captured("tf capture", kPoints * sizeof(float));
@@ -128,7 +133,8 @@ TEST_F(ObjectsTest, GeometryShaderTransformFeedbackWithQueryBuffer) {
     gl::memoryBarrier(gl::Barrier::QueryBuffer | gl::Barrier::BufferUpdate);
     EXPECT_EQ(count.read<uint32_t>(1)[0], static_cast<uint32_t>(kExpected));
     const std::vector<float> values = captured.read<float>(kExpected);
-    for (int i = 0; i < kExpected; ++i) EXPECT_EQ(values[static_cast<size_t>(i)], float(3 * i));
+    for (int i = 0; i < kExpected; ++i)
+        EXPECT_EQ(values[static_cast<size_t>(i)], float(3 * i));
     std::filesystem::remove_all(root);
 }
 

@@ -26,7 +26,8 @@ void timeFrame(gl::PassTimer& timer, const gl::Buffer& buffer, int frame) {
 
 std::vector<std::string> getNames(const std::vector<gl::PassTimer::Sample>& samples) {
     std::vector<std::string> names;
-    for (const gl::PassTimer::Sample& s : samples) names.push_back(s.name);
+    for (const gl::PassTimer::Sample& s : samples)
+        names.push_back(s.name);
     return names;
 }
 
@@ -44,7 +45,8 @@ TEST_F(PassTimerTest, QueriesAreReadFromFinishedFramesWithoutWaiting) {
     const bool frame0 = names == std::vector<std::string>{"first 0", "second 0"};
     const bool frame1 = names == std::vector<std::string>{"first 1", "second 1"};
     EXPECT_TRUE(frame0 || frame1) << names.size();
-    for (const gl::PassTimer::Sample& s : *first) EXPECT_GE(s.ms, 0.0) << s.name;
+    for (const gl::PassTimer::Sample& s : *first)
+        EXPECT_GE(s.ms, 0.0) << s.name;
     // Frames pile up while none is read, to a bound.
     for (int frame = 2; frame < 12; ++frame) {
         timeFrame(timer, buffer, frame);
@@ -67,8 +69,9 @@ TEST_F(PassTimerTest, CpuClockKnowsEachFrameAtItsEnd) {
         timeFrame(timer, buffer, frame);
         const auto samples = timer.collect();
         ASSERT_TRUE(samples.has_value());
-        EXPECT_EQ(getNames(*samples), (std::vector<std::string>{"first " + std::to_string(frame),
-                                                                "second " + std::to_string(frame)}));
+        EXPECT_EQ(getNames(*samples),
+                  (std::vector<std::string>{"first " + std::to_string(frame),
+                                            "second " + std::to_string(frame)}));
     }
 }
 

@@ -48,7 +48,7 @@ void addSquare(std::vector<gpu::ResultPhoton>& photons, float x0, float z0, floa
 
 struct DensityRun {
     std::vector<gpu::ResultPhoton> photons; // with radii
-    std::vector<glm::vec4> clip; // kClipVec4s per photon (shared/splat_clip.h)
+    std::vector<glm::vec4> clip;            // kClipVec4s per photon (shared/splat_clip.h)
 };
 
 // Runs the density pass alone on `photons`, with the frame of `scene` (camera, BVH).
@@ -68,19 +68,23 @@ DensityRun runDensity(const Scene& scene, std::vector<gpu::ResultPhoton> photons
     gpu::PhotonCounters counters{};
     counters.result = glm::uvec4(count, count, 0, 1);
     counters.splatDraw = glm::uvec4(gpu::kSplatCubeVertices, count, 0, 0);
-    counters.densityDispatch = glm::uvec4((count + gpu::kTraceGroupSize - 1) / gpu::kTraceGroupSize, 1, 1, 0);
+    counters.densityDispatch =
+        glm::uvec4((count + gpu::kTraceGroupSize - 1) / gpu::kTraceGroupSize, 1, 1, 0);
     buffers.getCounters().upload(0, sizeof(counters), &counters);
     PhotonDensityPass density(buffers);
     density.execute(runner.getFrameInputs());
-    return {buffers.getResult().read<gpu::ResultPhoton>(count), density.getClip().read<glm::vec4>(size_t(count) * gpu::kClipVec4s)};
+    return {buffers.getResult().read<gpu::ResultPhoton>(count),
+            density.getClip().read<glm::vec4>(size_t(count) * gpu::kClipVec4s)};
 }
 
 // The median radius of the photons inside [lo, hi] on x and z.
-float computeMedianRadius(const DensityRun& run, glm::vec2 lo, glm::vec2 hi, float minPower = 0.0f) {
+float computeMedianRadius(const DensityRun& run, glm::vec2 lo, glm::vec2 hi,
+                          float minPower = 0.0f) {
     std::vector<float> radii;
     for (const gpu::ResultPhoton& p : run.photons) {
         const glm::vec2 xz(p.positionDistance.x, p.positionDistance.z);
-        if (glm::all(glm::greaterThan(xz, lo)) && glm::all(glm::lessThan(xz, hi)) && p.power.x >= minPower) {
+        if (glm::all(glm::greaterThan(xz, lo)) && glm::all(glm::lessThan(xz, hi)) &&
+            p.power.x >= minPower) {
             radii.push_back(p.power.w);
         }
     }
@@ -112,7 +116,8 @@ TEST_F(PhotonDensityTest, RadiusHoldsKPhotonsOnAPlaneOfKnownDensity) {
     const double expectedSparse = std::sqrt(kNeighbours / (glm::pi<double>() * 1600.0));
     const double expectedDense = std::sqrt(kNeighbours / (glm::pi<double>() * 6400.0));
     std::printf("density radius: %.4f m (expected %.4f) at 1600/m^2, %.4f m (expected %.4f) at "
-                "6400/m^2\n", double(sparse), expectedSparse, double(dense), expectedDense);
+                "6400/m^2\n",
+                double(sparse), expectedSparse, double(dense), expectedDense);
     // Measured 0.0799 and 0.0400 (within 0.3%). The block whose count is used changes size in
     // steps of 2, so other densities land less exactly; 20% allows that and still fails a radius
     // off by sqrt(2) (a wrong k or block area).
@@ -175,7 +180,8 @@ TEST_F(PhotonDensityTest, WallClipsDiscsAndViewCullsPhotons) {
     Scene scene = makeFloorScene();
     Mesh wall;
     wall.name = "wall";
-    wall.positions = {{0.2f, 0.0f, -1.0f}, {0.2f, 0.0f, 1.0f}, {0.2f, 1.0f, 1.0f}, {0.2f, 1.0f, -1.0f}};
+    wall.positions = {
+        {0.2f, 0.0f, -1.0f}, {0.2f, 0.0f, 1.0f}, {0.2f, 1.0f, 1.0f}, {0.2f, 1.0f, -1.0f}};
     wall.triangles = {{0, 1, 2}, {0, 2, 3}};
     wall.triangleMaterials = {0, 0};
     scene.instances.push_back({uint32_t(scene.meshes.size()), glm::mat4(1.0f)});

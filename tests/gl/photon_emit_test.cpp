@@ -87,12 +87,12 @@ Scene makeRoomScene(const Light& light) {
     glass.ior = 1.5f;
     scene.materials.push_back(glass);
     scene.materials.push_back(makeMaterial("green", {0.2f, 0.7f, 0.2f}));
-    constexpr float s = 2.0f;  // half size of the room (m)
-    constexpr float h = 2.5f;  // wall height (m)
-    addQuad(scene, {{{-s, 0, -s}, {-s, 0, s}, {s, 0, s}, {s, 0, -s}}}, 0);  // floor
-    addQuad(scene, {{{-s, 0, -s}, {s, 0, -s}, {s, h, -s}, {-s, h, -s}}}, 1);  // back
-    addQuad(scene, {{{-s, 0, s}, {-s, 0, -s}, {-s, h, -s}, {-s, h, s}}}, 2);  // left
-    addQuad(scene, {{{s, 0, -s}, {s, 0, s}, {s, h, s}, {s, h, -s}}}, 3);      // right
+    constexpr float s = 2.0f; // half size of the room (m)
+    constexpr float h = 2.5f; // wall height (m)
+    addQuad(scene, {{{-s, 0, -s}, {-s, 0, s}, {s, 0, s}, {s, 0, -s}}}, 0);   // floor
+    addQuad(scene, {{{-s, 0, -s}, {s, 0, -s}, {s, h, -s}, {-s, h, -s}}}, 1); // back
+    addQuad(scene, {{{-s, 0, s}, {-s, 0, -s}, {-s, h, -s}, {-s, h, s}}}, 2); // left
+    addQuad(scene, {{{s, 0, -s}, {s, 0, s}, {s, h, s}, {s, h, -s}}}, 3);     // right
     scene.lights.push_back(light);
     return scene;
 }
@@ -180,10 +180,10 @@ struct ExpectedPhoton {
 };
 
 struct Reference {
-    std::vector<ExpectedPhoton> photons;    // survivors, in emission order
-    std::set<uint32_t> marginal;            // photons with a decision on its threshold
-    glm::dvec3 emittedPowerW{0.0};          // cell powers before the bounce, summed
-    std::array<uint32_t, 5> eventCounts{};  // by kScatter*, absorbed included
+    std::vector<ExpectedPhoton> photons;   // survivors, in emission order
+    std::set<uint32_t> marginal;           // photons with a decision on its threshold
+    glm::dvec3 emittedPowerW{0.0};         // cell powers before the bounce, summed
+    std::array<uint32_t, 5> eventCounts{}; // by kScatter*, absorbed included
 };
 
 // The inverse CDF of one table row (kImportanceSize inclusive entries at `first`): the interval
@@ -269,8 +269,8 @@ Reference computeReference(const FrameRunner& runner, const Scene& scene, uint32
     for (const EmissionGrid& grid : runner.getEmissionGrids()) {
         const LightCamera& cam = cameras[grid.viewIndex];
         const Light& light = scene.lights[cam.lightIndex];
-        const LightTexels texels = readLightTexels(runner.getLightGBuffer(),
-                                                   static_cast<int>(grid.viewIndex));
+        const LightTexels texels =
+            readLightTexels(runner.getLightGBuffer(), static_cast<int>(grid.viewIndex));
         const glm::dvec2 gridSize(grid.width, grid.height);
         for (uint32_t index = 0; index < grid.getCount(); ++index) {
             const uint32_t photon = grid.firstPhoton + index;
@@ -287,9 +287,9 @@ Reference computeReference(const FrameRunner& runner, const Scene& scene, uint32
                 cdf, grid.viewIndex * gpu::kImportanceTexels + row.index * gpu::kImportanceSize,
                 u.x, marginal);
             const double pdf = row.probability * column.probability * gpu::kImportanceTexels;
-            const glm::dvec2 uv = (glm::dvec2(column.index, row.index) +
-                                   glm::dvec2(column.within, row.within)) /
-                                  double(gpu::kImportanceSize);
+            const glm::dvec2 uv =
+                (glm::dvec2(column.index, row.index) + glm::dvec2(column.within, row.within)) /
+                double(gpu::kImportanceSize);
             // The texel under it; within round-off of a texel's edge the GPU may take the other.
             const glm::dvec2 texelAt = uv * double(res);
             const glm::dvec2 edge = glm::abs(texelAt - glm::round(texelAt));
@@ -395,12 +395,11 @@ std::string describeMismatch(const gpu::BouncePhoton& gpu, const ExpectedPhoton&
     // Sun photons travel from their first hit (0): compare travel to a metre as well.
     const double travelError = std::abs(double(gpu.positionDistance.w - e.positionDistance.w)) /
                                std::max(double(e.positionDistance.w), kPositionScaleM);
-    const double directionError = computeRelativeError(glm::dvec3(gpu.directionDensity),
-                                                       glm::dvec3(e.directionDensity), 1.0);
+    const double directionError =
+        computeRelativeError(glm::dvec3(gpu.directionDensity), glm::dvec3(e.directionDensity), 1.0);
     const double densityError = std::abs(double(gpu.directionDensity.w - e.directionDensity.w)) /
                                 double(e.directionDensity.w);
-    const double powerError =
-        computeRelativeError(glm::dvec3(gpu.power), glm::dvec3(e.power), 0.0);
+    const double powerError = computeRelativeError(glm::dvec3(gpu.power), glm::dvec3(e.power), 0.0);
     if (positionError > kRelativeTolerance) return strCat("position off by ", positionError);
     if (travelError > kRelativeTolerance) return strCat("travel distance off by ", travelError);
     if (directionError > kRelativeTolerance) return strCat("direction off by ", directionError);
@@ -467,8 +466,8 @@ Comparison compareBounceBuffer(const FrameRunner& runner, const Reference& ref,
             report(photon, why);
             continue;
         }
-        const double powerError = computeRelativeError(glm::dvec3(gpuPhotons[i].power),
-                                                       glm::dvec3(e.photon.power), 0.0);
+        const double powerError =
+            computeRelativeError(glm::dvec3(gpuPhotons[i].power), glm::dvec3(e.photon.power), 0.0);
         result.maxPowerError = std::max(result.maxPowerError, powerError);
     }
     for (auto it = expected.begin(); it != expected.end(); ++it) {
@@ -486,7 +485,7 @@ Comparison compareBounceBuffer(const FrameRunner& runner, const Reference& ref,
 }
 
 class PhotonEmitTest : public GlTest {
-protected:
+  protected:
     // Renders `scene` at every budget and compares the bounce buffer with the oracle.
     void checkBudgets(const Scene& scene, const char* name, uint32_t rngMode) {
         std::array<uint32_t, 5> events{};
@@ -502,7 +501,8 @@ protected:
                         "%u, max power error %.2e\n",
                         what.c_str(), countPhotons(runner.getEmissionGrids()), c.gpuCount,
                         ref.photons.size(), c.tolerated, c.maxPowerError);
-            for (size_t i = 0; i < events.size(); ++i) events[i] += ref.eventCounts[i];
+            for (size_t i = 0; i < events.size(); ++i)
+                events[i] += ref.eventCounts[i];
         }
         // The comparison means something only if every branch of scatterPhoton was taken.
         EXPECT_GT(events[gpu::kScatterAbsorbed], 0u) << name;
@@ -577,7 +577,7 @@ glm::dvec3 sumClosedBoxPower(float intensity, uint32_t photons, float importance
 }
 
 TEST_F(PhotonEmitTest, PointLightInClosedBoxEmitsFourPiIntensity) {
-    constexpr float kIntensity = 3.0f; // W/sr
+    constexpr float kIntensity = 3.0f;  // W/sr
     constexpr uint32_t kPhotons = 6000; // 1000 per cube face
     const double expectedW = 4.0 * glm::pi<double>() * double(kIntensity);
     // Without importance every map texel's probability follows its solid angle: each photon
@@ -607,12 +607,13 @@ TEST_F(PhotonEmitTest, ImportanceKeepsEmittedPowerInExpectation) {
     double sum = 0.0;
     for (uint32_t seed = 1; seed <= kSeeds; ++seed) {
         const double frameW = sumClosedBoxPower(kIntensity, kPhotons, 0.75f, seed, nullptr).x;
-        std::printf("[ emit     ] importance on, seed %u: %.5f of 4 pi I\n", seed, frameW / expectedW);
+        std::printf("[ emit     ] importance on, seed %u: %.5f of 4 pi I\n", seed,
+                    frameW / expectedW);
         sum += frameW;
     }
     // The bound: 0.5%. Measured per frame 0.996-1.008, 1.0018 over the 8 seeds (each
-    // frame's grid sits at another offset in its cells, so frames average); a pdf off by a constant, a
-    // missing uniform floor or power not divided by the pdf moves it by far more.
+    // frame's grid sits at another offset in its cells, so frames average); a pdf off by a
+    // constant, a missing uniform floor or power not divided by the pdf moves it by far more.
     EXPECT_NEAR(sum / kSeeds / expectedW, 1.0, 5e-3);
 }
 

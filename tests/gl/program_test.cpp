@@ -14,14 +14,14 @@ namespace ispm::test {
 namespace {
 
 class ProgramTest : public GlTest {
-protected:
+  protected:
     void SetUp() override {
         GlTest::SetUp();
         // Unique per test and process: ctest runs tests in parallel.
         mRoot = std::filesystem::temp_directory_path() /
                 ("ispm_program_test_" +
-                 std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
-                 std::to_string(::getpid()));
+                 std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
+                 "_" + std::to_string(::getpid()));
         std::filesystem::create_directories(mRoot / "lib");
     }
     void TearDown() override {
@@ -49,25 +49,30 @@ TEST_F(ProgramTest, ExpandsIncludesOnceWithLineDirectives) {
 }
 
 TEST_F(ProgramTest, CompileErrorNamesIncludedFileAndLine) {
-    write("lib/broken.glsl", "float ok() { return 1.0; }\nfloat bad() { return undefinedThing; }\n");
-    write("main.comp", "layout(local_size_x = 1) in;\n#include \"lib/broken.glsl\"\nvoid main() {}\n");
+    write("lib/broken.glsl",
+          "float ok() { return 1.0; }\nfloat bad() { return undefinedThing; }\n");
+    write("main.comp",
+          "layout(local_size_x = 1) in;\n#include \"lib/broken.glsl\"\nvoid main() {}\n");
     try {
-        gl::Program::build(mRoot, {.label = "broken", .stages = {{gl::ShaderStage::Compute, "main.comp"}}});
+        gl::Program::build(
+            mRoot, {.label = "broken", .stages = {{gl::ShaderStage::Compute, "main.comp"}}});
         FAIL() << "expected a compile error";
     } catch (const gl::Error& e) {
         EXPECT_NE(std::string(e.what()).find("lib/broken.glsl:2:"), std::string::npos) << e.what();
     }
     gl::resetDebugCounts(); // Mesa also reports the compile errors provoked here via KHR_debug
-
 }
 
 TEST_F(ProgramTest, MissingIncludeNamesTheIncludingFileAndLine) {
-    write("main.comp", "layout(local_size_x = 1) in;\n\n#include \"lib/nothere.glsl\"\nvoid main() {}\n");
+    write("main.comp",
+          "layout(local_size_x = 1) in;\n\n#include \"lib/nothere.glsl\"\nvoid main() {}\n");
     try {
-        gl::Program::build(mRoot, {.label = "missing", .stages = {{gl::ShaderStage::Compute, "main.comp"}}});
+        gl::Program::build(
+            mRoot, {.label = "missing", .stages = {{gl::ShaderStage::Compute, "main.comp"}}});
         FAIL() << "expected an include error";
     } catch (const gl::Error& e) {
-        EXPECT_NE(std::string(e.what()).find("main.comp:3: cannot find included file"), std::string::npos)
+        EXPECT_NE(std::string(e.what()).find("main.comp:3: cannot find included file"),
+                  std::string::npos)
             << e.what();
     }
 }
@@ -79,9 +84,10 @@ TEST_F(ProgramTest, DefinesSelectVariants) {
     gl::Buffer out("define out", sizeof(uint32_t));
     out.bindBase(gl::BufferTarget::Storage, 0);
     for (uint32_t value : {3u, 11u}) {
-        gl::Program p = gl::Program::build(
-            mRoot, {.label = "define", .stages = {{gl::ShaderStage::Compute, "main.comp"}},
-                    .defines = {"VALUE " + std::to_string(value) + "u"}});
+        gl::Program p =
+            gl::Program::build(mRoot, {.label = "define",
+                                       .stages = {{gl::ShaderStage::Compute, "main.comp"}},
+                                       .defines = {"VALUE " + std::to_string(value) + "u"}});
         p.use();
         glDispatchCompute(1, 1, 1);
         glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);

@@ -17,7 +17,9 @@ namespace {
 
 constexpr int kSize = 48; // px: small, the photons still light every wall
 
-Scene loadCornell() { return loadScene(std::string(ISPM_ASSET_DIR) + "/scenes/cornell.json"); }
+Scene loadCornell() {
+    return loadScene(std::string(ISPM_ASSET_DIR) + "/scenes/cornell.json");
+}
 
 Settings makeSettings(const Scene& scene, int accumulate, int seed) {
     Settings s = scene.settings;
@@ -32,7 +34,8 @@ Settings makeSettings(const Scene& scene, int accumulate, int seed) {
 }
 
 Image renderIndirect(FrameRunner& runner, int frames) {
-    for (int i = 0; i < frames; ++i) runner.renderFrame();
+    for (int i = 0; i < frames; ++i)
+        runner.renderFrame();
     return readTextureImage(runner.getAov(Aov::Indirect));
 }
 
@@ -110,7 +113,8 @@ TEST_F(AccumulateTest, CameraCutAndLightSwitchLeaveNoStaleLight) {
     runner.updateScene();
     const Image dark = renderIndirect(runner, 1);
     double largest = 0.0;
-    for (const glm::vec3& p : dark.pixels) largest = std::max(largest, double(std::max({p.x, p.y, p.z})));
+    for (const glm::vec3& p : dark.pixels)
+        largest = std::max(largest, double(std::max({p.x, p.y, p.z})));
     EXPECT_EQ(largest, 0.0) << "light of the frames before the switch";
 }
 
@@ -128,9 +132,9 @@ TEST(AccumulateJitter, HaltonOffsetsInsideThePixel) {
 }
 
 TEST(AccumulateWeight, RunningMeanThenExponential) {
-    EXPECT_EQ(computeAccumulateWeight(0, 5), 1.0f);  // off
-    EXPECT_EQ(computeAccumulateWeight(8, 0), 1.0f);  // empty history
-    EXPECT_EQ(computeAccumulateWeight(8, 1), 0.5f);  // second frame: mean of two
+    EXPECT_EQ(computeAccumulateWeight(0, 5), 1.0f); // off
+    EXPECT_EQ(computeAccumulateWeight(8, 0), 1.0f); // empty history
+    EXPECT_EQ(computeAccumulateWeight(8, 1), 0.5f); // second frame: mean of two
     EXPECT_EQ(computeAccumulateWeight(8, 3), 0.25f);
     EXPECT_EQ(computeAccumulateWeight(8, 100), 0.125f); // past the window: 1 / accumulate
 }

@@ -38,9 +38,8 @@ Image renderAt(Scene& scene, FrameRunner& runner, double timeS, Aov aov) {
 glm::ivec2 projectToPixel(const Camera& camera, const glm::vec3& pW, int width, int height) {
     // x and y after the divide do not depend on the clip planes: any valid pair does.
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
-    const glm::vec4 clip =
-        computeClipFromView(camera, aspect, 0.1f, 100.0f) * computeViewFromWorld(camera) *
-        glm::vec4(pW, 1.0f);
+    const glm::vec4 clip = computeClipFromView(camera, aspect, 0.1f, 100.0f) *
+                           computeViewFromWorld(camera) * glm::vec4(pW, 1.0f);
     const glm::vec2 ndc = glm::vec2(clip) / clip.w;
     return {static_cast<int>((ndc.x * 0.5f + 0.5f) * static_cast<float>(width)),
             static_cast<int>((0.5f - ndc.y * 0.5f) * static_cast<float>(height))};

@@ -77,7 +77,8 @@ TEST_F(CourtyardTest, ImportanceAimsPhotonsIntoTheRoom) {
         // The spot's photon_share: a tenth of the budget (emitted per light, from the grids).
         EXPECT_NEAR(double(counts.perLight[1].emitted) / counts.emitted, 0.1, 0.01);
     }
-    std::printf("room view: %u photons in view without importance, %u with\n", inView[0], inView[1]);
+    std::printf("room view: %u photons in view without importance, %u with\n", inView[0],
+                inView[1]);
     // Measured 1,776 and 4,391 (2.5x): the sun's photons go through the door instead of over
     // the whole yard. 1.5x fails an importance map that does not reach the emission.
     EXPECT_GT(inView[1], 3 * inView[0] / 2);

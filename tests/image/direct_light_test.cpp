@@ -1,6 +1,6 @@
 // Analytic render tests of direct light: energy and units errors show here before any golden.
-#include "support/gl_fixture.h"
 #include "support/analytic_scenes.h"
+#include "support/gl_fixture.h"
 #include "support/render_support.h"
 
 #include "scene/scene_loader.h"
@@ -68,12 +68,14 @@ TEST_F(DirectLightTest, OccluderCastsFullShadow) {
     settings.set("width", 16, "test");
     settings.set("height", 16, "test");
     const Image image = renderAov(scene, settings, Aov::Direct);
-    for (const glm::vec3& p : image.pixels) EXPECT_EQ(p, glm::vec3(0.0f));
+    for (const glm::vec3& p : image.pixels)
+        EXPECT_EQ(p, glm::vec3(0.0f));
 
     // Without the occluder the same view is lit: the zero above is a shadow, not a black image.
     scene.instances.pop_back();
     const Image lit = renderAov(scene, settings, Aov::Direct);
-    for (const glm::vec3& p : lit.pixels) EXPECT_GT(p.x, 0.0f);
+    for (const glm::vec3& p : lit.pixels)
+        EXPECT_GT(p.x, 0.0f);
 }
 
 TEST_F(DirectLightTest, CornellBoxMatchesGolden) {
@@ -90,7 +92,8 @@ TEST_F(DirectLightTest, CornellBoxMatchesGolden) {
     expectMatchesGolden(display, "cornell_direct", {8.0f / 255.0f, 2.0f / 255.0f, 0.01});
     // Not black: the golden itself could be wrong, so check content too.
     double sum = 0.0;
-    for (const glm::vec3& p : display.pixels) sum += double(p.x + p.y + p.z);
+    for (const glm::vec3& p : display.pixels)
+        sum += double(p.x + p.y + p.z);
     EXPECT_GT(sum / (3.0 * static_cast<double>(display.pixels.size())), 0.05);
 }
 

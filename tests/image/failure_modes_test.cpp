@@ -259,7 +259,7 @@ TEST_F(FailureModeTest, CornersAndEdgesLoseIndirectEnergy) {
     constexpr int kReferenceSpp = 64;
     constexpr float kCornerM = 0.02f; // about the median splat radius at 50k photons
     constexpr float kMiddleM = 0.06f; // beyond the largest splat radius (radius_max ~4 cm)
-    constexpr int kSeeds = 2;          // 209 corner pixels: one frame's ratio moves by ~5%
+    constexpr int kSeeds = 2;         // 209 corner pixels: one frame's ratio moves by ~5%
     const Scene scene = loadCornell();
     double cornerSum = 0.0;
     double middleSum = 0.0;

@@ -63,7 +63,8 @@ TEST_F(IndirectTest, CornellCeilingIsLitOnlyByBouncedLight) {
     // Bounced light on the ceiling: of the order of the floor's direct light times the wall
     // albedo and the form factor; at least a percent of the brightest direct pixel.
     float maxDirect = 0.0f;
-    for (const glm::vec3& p : direct.pixels) maxDirect = std::max(maxDirect, p.x);
+    for (const glm::vec3& p : direct.pixels)
+        maxDirect = std::max(maxDirect, p.x);
     EXPECT_GT(indirectSum / pixels, 0.01 * double(maxDirect));
 }
 

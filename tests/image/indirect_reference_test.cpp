@@ -14,7 +14,8 @@ namespace {
 class IndirectReferenceTest : public GlTest {};
 
 Image scaleImage(Image image, float s) {
-    for (glm::vec3& p : image.pixels) p *= s;
+    for (glm::vec3& p : image.pixels)
+        p *= s;
     return image;
 }
 
@@ -34,12 +35,16 @@ TEST_F(IndirectReferenceTest, CornellIndirectWithinMeasuredBound) {
     const Image indirect = renderAov(scene, settings, Aov::Indirect);
 
     const double ispm = computeRelMse(indirect, referenceIndirect, nullptr, kRelMseEpsilon);
-    const double doubled = computeRelMse(scaleImage(indirect, 2.0f), referenceIndirect, nullptr, kRelMseEpsilon);
-    const double halved = computeRelMse(scaleImage(indirect, 0.5f), referenceIndirect, nullptr, kRelMseEpsilon);
-    const double missing = computeRelMse(scaleImage(indirect, 0.0f), referenceIndirect, nullptr, kRelMseEpsilon);
+    const double doubled =
+        computeRelMse(scaleImage(indirect, 2.0f), referenceIndirect, nullptr, kRelMseEpsilon);
+    const double halved =
+        computeRelMse(scaleImage(indirect, 0.5f), referenceIndirect, nullptr, kRelMseEpsilon);
+    const double missing =
+        computeRelMse(scaleImage(indirect, 0.0f), referenceIndirect, nullptr, kRelMseEpsilon);
     const glm::dvec3 ratio = computeMeanRatio(indirect, referenceIndirect, nullptr);
     std::printf("indirect relMSE: ispm %.4f, doubled %.4f, halved %.4f, missing %.4f; mean ratio "
-                "%.3f %.3f %.3f\n", ispm, doubled, halved, missing, ratio.x, ratio.y, ratio.z);
+                "%.3f %.3f %.3f\n",
+                ispm, doubled, halved, missing, ratio.x, ratio.y, ratio.z);
 
     // The bound, measured over seeds 1-4 at these settings: ispm scores 0.054-0.059 (splat blur,
     // photon noise and the reference's own noise at 96 spp); halving the indirect light scores
@@ -51,7 +56,8 @@ TEST_F(IndirectReferenceTest, CornellIndirectWithinMeasuredBound) {
     EXPECT_GT(missing, kMaxRelMse);
     // The energy itself: splats lose what falls past edges and corners, which keeps ispm a few
     // percent low (measured 0.93-0.97 over seeds 1-4); 15% covers it and fails on a wrong factor.
-    for (int c = 0; c < 3; ++c) EXPECT_NEAR(ratio[c], 1.0, 0.15) << "channel " << c;
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(ratio[c], 1.0, 0.15) << "channel " << c;
 }
 
 } // namespace

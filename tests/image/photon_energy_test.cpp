@@ -1,7 +1,7 @@
 // Energy of the photon pipeline, against closed forms: photons inside a closed diffuse box, and
 // one splat on a plane.
-#include "support/gl_fixture.h"
 #include "support/analytic_scenes.h"
+#include "support/gl_fixture.h"
 #include "support/render_support.h"
 
 #include "render/readback.h"
@@ -27,7 +27,8 @@ Scene makeClosedBox(float rho, const glm::vec3& lightPosition, float intensity) 
     Mesh mesh;
     mesh.name = "box";
     for (int i = 0; i < 8; ++i) {
-        mesh.positions.emplace_back((i & 1) ? 1.0f : -1.0f, (i & 2) ? 1.0f : -1.0f, (i & 4) ? 1.0f : -1.0f);
+        mesh.positions.emplace_back((i & 1) ? 1.0f : -1.0f, (i & 2) ? 1.0f : -1.0f,
+                                    (i & 4) ? 1.0f : -1.0f);
     }
     const glm::uvec4 faces[6] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
                                  {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
@@ -71,9 +72,11 @@ TEST_F(PhotonEnergyTest, StoredPowerIsLightPowerTimesGeometricSeries) {
         const auto photons =
             runner.getPhotonBuffers().getResult().read<gpu::ResultPhoton>(counts.stored);
         glm::dvec3 stored(0.0);
-        for (const gpu::ResultPhoton& p : photons) stored += glm::dvec3(glm::vec3(p.power));
+        for (const gpu::ResultPhoton& p : photons)
+            stored += glm::dvec3(glm::vec3(p.power));
         double series = 0.0;
-        for (int k = 1; k <= bounces; ++k) series += std::pow(double(kRho), k);
+        for (int k = 1; k <= bounces; ++k)
+            series += std::pow(double(kRho), k);
         const double expected = lightPower * series;
         std::printf("bounces %d: stored/expected = %.4f %.4f %.4f (%u photons)\n", bounces,
                     stored.x / expected, stored.y / expected, stored.z / expected, counts.stored);
@@ -81,7 +84,8 @@ TEST_F(PhotonEnergyTest, StoredPowerIsLightPowerTimesGeometricSeries) {
         // sqrt((1 - rho) / (rho N)) ~ 0.4% per bounce; a missing bounce or a wrong power scale
         // is off by 20% or more.
         for (int c = 0; c < 3; ++c) {
-            EXPECT_NEAR(stored[c] / expected, 1.0, 0.02) << "bounces " << bounces << " channel " << c;
+            EXPECT_NEAR(stored[c] / expected, 1.0, 0.02)
+                << "bounces " << bounces << " channel " << c;
         }
     }
 }
@@ -132,7 +136,8 @@ TEST_F(PhotonEnergyTest, OneSplatOnAPlaneIntegratesToBrdfTimesPower) {
     counters.result = glm::uvec4(1, 1, 0, 1);
     counters.splatDraw = glm::uvec4(gpu::kSplatCubeVertices, 1, 0, 0);
     buffers.getCounters().upload(0, sizeof(counters), &counters);
-    const glm::uvec4 draw[gpu::kSplatDrawUvec4s] = {{gpu::kSplatCubeVertices, 1, 0, 0}, {0, 0, 0, 0}};
+    const glm::uvec4 draw[gpu::kSplatDrawUvec4s] = {{gpu::kSplatCubeVertices, 1, 0, 0},
+                                                    {0, 0, 0, 0}};
     buffers.getSplatDraws().upload(0, sizeof(draw), draw);
 
     const gl::Buffer noClip; // travel radii: the splat reads no clip distances
@@ -152,11 +157,14 @@ TEST_F(PhotonEnergyTest, OneSplatOnAPlaneIntegratesToBrdfTimesPower) {
         }
     }
     EXPECT_GT(covered, 1000) << "the splat covers a disc of many pixels";
-    std::printf("splat: %d pixels, flux / expected = %.5f\n", covered, flux.x / (double(kRho) / glm::pi<double>()));
+    std::printf("splat: %d pixels, flux / expected = %.5f\n", covered,
+                flux.x / (double(kRho) / glm::pi<double>()));
     // Integral of radiance over area = BRDF x power = rho / pi x power (W/sr). 1%: the kernel is
     // sampled at pixel centres; at ~40 pixels across a disc, the sum errs by well under 1%.
-    const glm::dvec3 expected = glm::dvec3(glm::vec3(photon.power)) * double(kRho) / glm::pi<double>();
-    for (int c = 0; c < 3; ++c) EXPECT_NEAR(flux[c] / expected[c], 1.0, 0.01) << "channel " << c;
+    const glm::dvec3 expected =
+        glm::dvec3(glm::vec3(photon.power)) * double(kRho) / glm::pi<double>();
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(flux[c] / expected[c], 1.0, 0.01) << "channel " << c;
 }
 
 } // namespace

@@ -1,6 +1,6 @@
 // The reference path tracer against closed forms, and ispm's direct light against it.
-#include "support/gl_fixture.h"
 #include "support/analytic_scenes.h"
+#include "support/gl_fixture.h"
 #include "support/render_support.h"
 
 #include "render/frame.h"
@@ -19,7 +19,8 @@ class ReferenceTest : public GlTest {};
 Image renderReference(const Scene& scene, Settings settings, int spp, int bounces) {
     settings.set("bounces", bounces, "test");
     ReferencePass reference(scene, settings);
-    for (int s = 0; s < spp; ++s) reference.addSample();
+    for (int s = 0; s < spp; ++s)
+        reference.addSample();
     return reference.readMean();
 }
 
@@ -38,7 +39,8 @@ Scene makeClosedSphere(float rho, float radiusM, float intensity) {
         const float theta = glm::pi<float>() * float(r) / float(kRings);
         for (int s = 0; s < kSegments; ++s) {
             const float phi = glm::two_pi<float>() * float(s) / float(kSegments);
-            mesh.positions.push_back(radiusM * glm::vec3(std::sin(theta) * std::cos(phi), std::cos(theta),
+            mesh.positions.push_back(radiusM * glm::vec3(std::sin(theta) * std::cos(phi),
+                                                         std::cos(theta),
                                                          std::sin(theta) * std::sin(phi)));
         }
     }
@@ -78,11 +80,13 @@ TEST_F(ReferenceTest, ClosedSphereMatchesGeometricSeries) {
     for (int bounces : {0, 1, 3}) {
         const Image image = renderReference(scene, settings, kSpp, bounces);
         double series = 0.0;
-        for (int k = 0; k <= bounces; ++k) series += std::pow(double(kRho), k);
+        for (int k = 0; k <= bounces; ++k)
+            series += std::pow(double(kRho), k);
         const double expected = double(kRho) / glm::pi<double>() * double(kIntensity) /
                                 double(kRadiusM * kRadiusM) * series;
         double mean = 0.0;
-        for (const glm::vec3& p : image.pixels) mean += double(p.x);
+        for (const glm::vec3& p : image.pixels)
+            mean += double(p.x);
         mean /= double(image.pixels.size());
         std::printf("sphere B=%d: mean %.5f expected %.5f ratio %.4f\n", bounces, mean, expected,
                     mean / expected);
@@ -137,7 +141,8 @@ TEST_F(ReferenceTest, IspmDirectLightMatchesReferenceOnCornellBox) {
         sumIspm += glm::dvec3(direct.pixels[i]);
     }
     // 2% on the mean: shadow-map edges and jittered versus centred pixels differ at edges only.
-    for (int c = 0; c < 3; ++c) EXPECT_NEAR(sumIspm[c] / sumRef[c], 1.0, 0.02) << "channel " << c;
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(sumIspm[c] / sumRef[c], 1.0, 0.02) << "channel " << c;
 }
 
 TEST_F(ReferenceTest, BorrowedGpuSceneGivesTheSameImage) {
@@ -151,7 +156,8 @@ TEST_F(ReferenceTest, BorrowedGpuSceneGivesTheSameImage) {
     const Image owned = renderReference(scene, settings, 4, 3);
     FrameRunner runner(scene, settings, gl::TimingMethod::CpuFinish);
     ReferencePass borrowing(scene, runner.getGpuScene(), settings);
-    for (int s = 0; s < 4; ++s) borrowing.addSample();
+    for (int s = 0; s < 4; ++s)
+        borrowing.addSample();
     const Image borrowed = borrowing.readMean();
     double sum = 0.0;
     for (size_t i = 0; i < owned.pixels.size(); ++i) {

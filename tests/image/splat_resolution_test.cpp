@@ -42,8 +42,12 @@ SplatImages renderCornell(const std::string& resolution, int seed = 1) {
             readTextureImage(runner.getViewerGBuffer().getChannel("diffuse"))};
 }
 
-bool isRed(const glm::vec3& d) { return d.x > 2.0f * d.y && d.x > 0.1f; }
-bool isWhite(const glm::vec3& d) { return d.x > 0.1f && std::abs(d.x - d.y) < 0.1f * d.x; }
+bool isRed(const glm::vec3& d) {
+    return d.x > 2.0f * d.y && d.x > 0.1f;
+}
+bool isWhite(const glm::vec3& d) {
+    return d.x > 0.1f && std::abs(d.x - d.y) < 0.1f * d.x;
+}
 
 // Mean red / green of the indirect light over the white-wall pixels within 2 px of a red-wall
 // pixel (the left wall's edge with the back wall, floor and ceiling).
@@ -58,7 +62,9 @@ double computeWhiteBesideRedRatio(const SplatImages& f) {
                 for (int dx = -2; dx <= 2; ++dx) {
                     const int qx = x + dx;
                     const int qy = y + dy;
-                    if (qx >= 0 && qy >= 0 && qx < kSize && qy < kSize && isRed(f.diffuse.at(qx, qy))) besideRed = true;
+                    if (qx >= 0 && qy >= 0 && qx < kSize && qy < kSize &&
+                        isRed(f.diffuse.at(qx, qy)))
+                        besideRed = true;
                 }
             }
             if (!besideRed) continue;
@@ -78,14 +84,17 @@ TEST_F(SplatResolutionTest, SubsampledSplatsKeepTheFullResolutionImage) {
     Image converged = full.indirect;
     for (int seed = 2; seed <= kSeeds; ++seed) {
         const Image more = renderCornell("1", seed).indirect;
-        for (size_t i = 0; i < converged.pixels.size(); ++i) converged.pixels[i] += more.pixels[i];
+        for (size_t i = 0; i < converged.pixels.size(); ++i)
+            converged.pixels[i] += more.pixels[i];
     }
-    for (glm::vec3& p : converged.pixels) p /= float(kSeeds);
+    for (glm::vec3& p : converged.pixels)
+        p /= float(kSeeds);
     const double fullEnergy = computeEnergyRatio(full.indirect, converged);
     const double fullError = computeRelRmse(full.indirect, converged, kRelRmseBlock);
     const double fullBeside = computeWhiteBesideRedRatio(full);
     std::printf("splat_resolution 1 against %d seeds: energy %.4f, rel RMSE (4x4) %.4f; white wall "
-                "beside the red one, red / green %.4f\n", kSeeds, fullEnergy, fullError, fullBeside);
+                "beside the red one, red / green %.4f\n",
+                kSeeds, fullEnergy, fullError, fullBeside);
     for (const char* resolution : {"1/2", "1/4"}) {
         const SplatImages sub = renderCornell(resolution);
         const double energy = computeEnergyRatio(sub.indirect, converged);

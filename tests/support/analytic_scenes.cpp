@@ -36,8 +36,9 @@ glm::dvec3 projectToGround(const Scene& scene, int width, int height, double px,
     float farM = 0.0f;
     computeCameraRange(scene.camera, scene.computeWorldBounds(), nearM, farM);
     const float aspect = float(width) / float(height);
-    const glm::dmat4 worldFromClip = glm::inverse(glm::dmat4(
-        computeClipFromView(scene.camera, aspect, nearM, farM) * computeViewFromWorld(scene.camera)));
+    const glm::dmat4 worldFromClip =
+        glm::inverse(glm::dmat4(computeClipFromView(scene.camera, aspect, nearM, farM) *
+                                computeViewFromWorld(scene.camera)));
     const glm::dvec2 ndc(px / width * 2.0 - 1.0, 1.0 - py / height * 2.0);
     const glm::dvec4 a = worldFromClip * glm::dvec4(ndc, -1.0, 1.0);
     const glm::dvec4 b = worldFromClip * glm::dvec4(ndc, 1.0, 1.0);

@@ -18,7 +18,8 @@ void GlTest::SetUp() {
 void GlTest::TearDown() {
     const gl::DebugCounts counts = gl::getDebugCounts();
     std::string messages;
-    for (const std::string& m : gl::getRecentDebugErrors()) messages += "\n  " + m;
+    for (const std::string& m : gl::getRecentDebugErrors())
+        messages += "\n  " + m;
     EXPECT_EQ(counts.errors, 0u) << "KHR_debug reported errors:" << messages;
 }
 

@@ -14,7 +14,7 @@ namespace ispm::test {
 gl::Context& getTestContext();
 
 class GlTest : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override;
     void TearDown() override;
 };

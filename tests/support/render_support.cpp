@@ -32,7 +32,8 @@ Image renderReferenceIndirect(const Scene& scene, const Settings& settings, int 
     }
     Image indirect = withBounces.readMean();
     const Image d = direct.readMean();
-    for (size_t i = 0; i < d.pixels.size(); ++i) indirect.pixels[i] -= d.pixels[i];
+    for (size_t i = 0; i < d.pixels.size(); ++i)
+        indirect.pixels[i] -= d.pixels[i];
     return indirect;
 }
 
@@ -45,7 +46,8 @@ void expectMatchesGolden(const Image& actual, const std::string& name, const Gol
         std::printf("updated golden %s\n", golden.string().c_str());
         return;
     }
-    ASSERT_TRUE(std::filesystem::exists(golden)) << golden << " is missing: run tools/update-goldens.sh";
+    ASSERT_TRUE(std::filesystem::exists(golden))
+        << golden << " is missing: run tools/update-goldens.sh";
     const Image expected = readImage(golden.string());
     ASSERT_EQ(expected.width, actual.width);
     ASSERT_EQ(expected.height, actual.height);
@@ -55,15 +57,18 @@ void expectMatchesGolden(const Image& actual, const std::string& name, const Gol
         p = glm::round(glm::clamp(p, 0.0f, 1.0f) * 255.0f) / 255.0f;
     }
     const ImageDiff diff = computeImageDiff(quantised, expected, t.pixelTolerance);
-    const bool ok = diff.meanAbsError <= t.maxMeanAbsError && diff.failingFraction <= t.maxFailingFraction;
+    const bool ok =
+        diff.meanAbsError <= t.maxMeanAbsError && diff.failingFraction <= t.maxFailingFraction;
     EXPECT_LE(diff.meanAbsError, t.maxMeanAbsError) << name;
     EXPECT_LE(diff.failingFraction, t.maxFailingFraction) << name;
     if (!ok) {
-        const std::filesystem::path out = std::filesystem::path(ISPM_BINARY_DIR) / "golden-failures";
+        const std::filesystem::path out =
+            std::filesystem::path(ISPM_BINARY_DIR) / "golden-failures";
         std::filesystem::create_directories(out);
         writeImage((out / (name + ".actual.png")).string(), quantised);
         Image d = computeErrorImage(quantised, expected);
-        for (glm::vec3& p : d.pixels) p = glm::min(p * 10.0f, glm::vec3(1.0f)); // 10x to see it
+        for (glm::vec3& p : d.pixels)
+            p = glm::min(p * 10.0f, glm::vec3(1.0f)); // 10x to see it
         writeImage((out / (name + ".diff.png")).string(), d);
         ADD_FAILURE() << "actual and diff images written to " << out;
     }

@@ -34,7 +34,9 @@ json makeScene(const json& objectAnimation, const json& spotAnimation = nullptr,
     return doc;
 }
 
-Scene load(const json& doc) { return parseScene(doc, "anim.json", "."); }
+Scene load(const json& doc) {
+    return parseScene(doc, "anim.json", ".");
+}
 
 glm::mat4 getStaticTransform() {
     glm::mat4 m = glm::translate(glm::mat4(1.0f), glm::vec3(3, 0, 0));
@@ -44,12 +46,14 @@ glm::mat4 getStaticTransform() {
 
 void expectNear(const glm::mat4& a, const glm::mat4& b) {
     for (int c = 0; c < 4; ++c) {
-        for (int r = 0; r < 4; ++r) EXPECT_NEAR(a[c][r], b[c][r], kTolerance) << c << "," << r;
+        for (int r = 0; r < 4; ++r)
+            EXPECT_NEAR(a[c][r], b[c][r], kTolerance) << c << "," << r;
     }
 }
 
 void expectNear(const glm::vec3& a, const glm::vec3& b) {
-    for (int i = 0; i < 3; ++i) EXPECT_NEAR(a[i], b[i], kTolerance) << i;
+    for (int i = 0; i < 3; ++i)
+        EXPECT_NEAR(a[i], b[i], kTolerance) << i;
 }
 
 TEST(AnimationTest, SceneWithoutAnimationIsStill) {
@@ -87,8 +91,8 @@ TEST(AnimationTest, RotationAboutAPivot) {
 
 TEST(AnimationTest, OrbitReturnsToItsStartEveryPeriod) {
     constexpr double kPeriodS = 0.7; // not a binary fraction
-    Scene scene = load(makeScene(json{
-        {"orbit", {{"centre", {1, 0, 0}}, {"axis", {0, 1, 0}}, {"period_s", kPeriodS}}}}));
+    Scene scene = load(makeScene(
+        json{{"orbit", {{"centre", {1, 0, 0}}, {"axis", {0, 1, 0}}, {"period_s", kPeriodS}}}}));
     const glm::mat4 start = scene.instances[0].worldFromObject;
     scene.update(kPeriodS / 2.0);
     // Half a turn about the vertical through (1, 0, 0): the origin (3, 0, 0) goes to (-1, 0, 0).
@@ -109,12 +113,12 @@ TEST(AnimationTest, OscillationFollowsItsSine) {
 }
 
 TEST(AnimationTest, UpdateIsDeterministic) {
-    const json doc = makeScene(
-        json{{"translate_per_s", {0.1, 0, 0}},
-             {"rotate_deg_per_s", {10, 20, 30}},
-             {"orbit", {{"centre", {0, 0, 0}}, {"period_s", 3}}},
-             {"oscillate", {{"amplitude", {0, 1, 0}}, {"period_s", 2}}}},
-        json{{"rotate_deg_per_s", {0, 45, 0}}}, json{{"orbit", {{"period_s", 10}}}});
+    const json doc =
+        makeScene(json{{"translate_per_s", {0.1, 0, 0}},
+                       {"rotate_deg_per_s", {10, 20, 30}},
+                       {"orbit", {{"centre", {0, 0, 0}}, {"period_s", 3}}},
+                       {"oscillate", {{"amplitude", {0, 1, 0}}, {"period_s", 2}}}},
+                  json{{"rotate_deg_per_s", {0, 45, 0}}}, json{{"orbit", {{"period_s", 10}}}});
     Scene a = load(doc);
     Scene b = load(doc);
     a.update(12.345);
@@ -170,20 +174,25 @@ TEST(AnimationTest, ErrorsNameFileAndPath) {
     pointDoc["lights"][0] = json::parse(R"({"type": "point", "position": [0, 2, 0],
         "intensity": [1, 1, 1], "animation": {"rotate_deg_per_s": [0, 10, 0]}})");
     const std::vector<ErrorCase> cases = {
-        {"unknown key", makeScene(json{{"spin", 1}}),
+        {"unknown key",
+         makeScene(json{{"spin", 1}}),
          {"/objects/0/animation/spin", "unknown key 'spin'"}},
         {"not an object", makeScene(json{1, 2, 3}), {"/objects/0/animation", "JSON object"}},
         {"empty", makeScene(json::object()), {"/objects/0/animation", "at least one motion"}},
-        {"wrong type", makeScene(json{{"translate_per_s", "fast"}}),
+        {"wrong type",
+         makeScene(json{{"translate_per_s", "fast"}}),
          {"/objects/0/animation/translate_per_s", "3 numbers"}},
-        {"zero period", makeScene(json{{"orbit", {{"centre", {0, 0, 0}}, {"period_s", 0}}}}),
+        {"zero period",
+         makeScene(json{{"orbit", {{"centre", {0, 0, 0}}, {"period_s", 0}}}}),
          {"/objects/0/animation/orbit/period_s", ">= 1e-06, got 0"}},
         {"negative period",
          makeScene(json{{"oscillate", {{"amplitude", {1, 0, 0}}, {"period_s", -2}}}}),
          {"/objects/0/animation/oscillate/period_s", ">= 1e-06, got -2"}},
-        {"missing period", makeScene(json{{"orbit", {{"centre", {0, 0, 0}}}}}),
+        {"missing period",
+         makeScene(json{{"orbit", {{"centre", {0, 0, 0}}}}}),
          {"/objects/0/animation/orbit/period_s", "required"}},
-        {"missing centre", makeScene(json{{"orbit", {{"period_s", 1}}}}),
+        {"missing centre",
+         makeScene(json{{"orbit", {{"period_s", 1}}}}),
          {"/objects/0/animation/orbit/centre", "required"}},
         {"zero axis",
          makeScene(json{{"orbit", {{"centre", {0, 0, 0}}, {"axis", {0, 0, 0}}, {"period_s", 1}}}}),
@@ -191,14 +200,17 @@ TEST(AnimationTest, ErrorsNameFileAndPath) {
         {"phase in degrees",
          makeScene(json{{"oscillate", {{"amplitude", {1, 0, 0}}, {"period_s", 1}, {"phase", 90}}}}),
          {"/objects/0/animation/oscillate/phase", "[0, 1]"}},
-        {"pivot alone", makeScene(json{{"pivot", {0, 0, 0}}}),
+        {"pivot alone",
+         makeScene(json{{"pivot", {0, 0, 0}}}),
          {"/objects/0/animation/pivot", "rotate_deg_per_s"}},
-        {"sun translated", makeScene(nullptr, nullptr, json{{"translate_per_s", {1, 0, 0}}}),
+        {"sun translated",
+         makeScene(nullptr, nullptr, json{{"translate_per_s", {1, 0, 0}}}),
          {"/lights/1/animation/translate_per_s", "only its direction"}},
         {"sun orbit centre",
          makeScene(nullptr, nullptr, json{{"orbit", {{"centre", {0, 0, 0}}, {"period_s", 1}}}}),
          {"/lights/1/animation/orbit/centre", "unknown key"}},
-        {"spot bad rate", makeScene(nullptr, json{{"rotate_deg_per_s", {0, "x", 0}}}),
+        {"spot bad rate",
+         makeScene(nullptr, json{{"rotate_deg_per_s", {0, "x", 0}}}),
          {"/lights/0/animation/rotate_deg_per_s/1", "finite number"}},
         {"point turned in place", pointDoc, {"/lights/0/animation/pivot", "point light"}},
     };
@@ -207,8 +219,8 @@ TEST(AnimationTest, ErrorsNameFileAndPath) {
         const std::string message = getLoadError(dir, c.doc.dump(2), "anim_bad.json");
         EXPECT_TRUE(contains(message, "anim_bad.json: ")) << c.name << ": " << message;
         for (const std::string& part : c.expected) {
-            EXPECT_TRUE(contains(message, part)) << c.name << ": '" << message << "' lacks '"
-                                                 << part << "'";
+            EXPECT_TRUE(contains(message, part))
+                << c.name << ": '" << message << "' lacks '" << part << "'";
         }
         EXPECT_EQ(message.find('\n'), std::string::npos) << c.name;
     }

@@ -5,12 +5,12 @@
 #include "core/strings.h"
 #include "scene/box_city.h"
 
-#include <gtest/gtest.h>
 #include <glm/gtc/matrix_transform.hpp>
+#include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cmath>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <functional>
 #include <numeric>
@@ -60,7 +60,8 @@ Mesh makeSoup(std::mt19937& rng, size_t triangleCount, uint32_t material) {
         const float edge = t % kLargeEvery == 0 ? kLargeEdge : kSmallEdge;
         const glm::vec3 c = drawPoint(rng, 0.0f, 1.0f);
         const auto base = static_cast<uint32_t>(mesh.positions.size());
-        for (int k = 0; k < 3; ++k) mesh.positions.push_back(c + drawPoint(rng, -edge, edge));
+        for (int k = 0; k < 3; ++k)
+            mesh.positions.push_back(c + drawPoint(rng, -edge, edge));
         mesh.triangles.emplace_back(base, base + 1, base + 2);
         mesh.triangleMaterials.push_back(material);
     }
@@ -104,7 +105,8 @@ void expectValidTree(const NodeArray& nodes, uint32_t root, uint32_t begin, uint
             stack.emplace_back(child, depth + 1);
         }
     }
-    for (size_t s = 0; s < slotVisits.size(); ++s) ASSERT_EQ(slotVisits[s], 1) << "slot " << s;
+    for (size_t s = 0; s < slotVisits.size(); ++s)
+        ASSERT_EQ(slotVisits[s], 1) << "slot " << s;
 }
 
 void expectValidScene(const BvhScene& bvh, const Scene& scene) {
@@ -112,7 +114,8 @@ void expectValidScene(const BvhScene& bvh, const Scene& scene) {
     std::vector<uint32_t> sortedOrder = bvh.blasTriangleOrder;
     std::sort(sortedOrder.begin(), sortedOrder.end());
     size_t triangleCount = 0;
-    for (const Mesh& mesh : scene.meshes) triangleCount += mesh.triangles.size();
+    for (const Mesh& mesh : scene.meshes)
+        triangleCount += mesh.triangles.size();
     std::vector<uint32_t> expected(triangleCount);
     std::iota(expected.begin(), expected.end(), 0u);
     ASSERT_EQ(sortedOrder, expected) << "every triangle exactly once";
@@ -122,23 +125,25 @@ void expectValidScene(const BvhScene& bvh, const Scene& scene) {
         const auto count = static_cast<uint32_t>(mesh.triangles.size());
         expectValidTree(bvh.blasNodes, bvh.meshBlasRoots[m], first, first + count,
                         defaults.maxLeafSize, [&](uint32_t slot) {
-            const uint32_t global = bvh.blasTriangleOrder[slot];
-            EXPECT_GE(global, first);
-            EXPECT_LT(global, first + count);
-            Aabb box;
-            for (int k = 0; k < 3; ++k) {
-                box.extend(mesh.positions[mesh.triangles[global - first][k]]);
-            }
-            return box;
-        });
+                            const uint32_t global = bvh.blasTriangleOrder[slot];
+                            EXPECT_GE(global, first);
+                            EXPECT_LT(global, first + count);
+                            Aabb box;
+                            for (int k = 0; k < 3; ++k) {
+                                box.extend(mesh.positions[mesh.triangles[global - first][k]]);
+                            }
+                            return box;
+                        });
     }
     expectValidTree(bvh.tlasNodes, 0, 0, static_cast<uint32_t>(bvh.tlasInstanceOrder.size()),
                     kTlasBuildParams.maxLeafSize, [&](uint32_t slot) {
-        return computeInstanceBounds(bvh, scene, bvh.tlasInstanceOrder[slot]);
-    });
+                        return computeInstanceBounds(bvh, scene, bvh.tlasInstanceOrder[slot]);
+                    });
 }
 
-std::string formatVec(const glm::vec3& v) { return strCat("(", v.x, ", ", v.y, ", ", v.z, ")"); }
+std::string formatVec(const glm::vec3& v) {
+    return strCat("(", v.x, ", ", v.y, ", ", v.z, ")");
+}
 
 // Counts the rays that hit; reports the first disagreement with brute force and stops there.
 int expectMatchesBruteForce(const BvhScene& bvh, const Scene& scene, const std::vector<Ray>& rays) {
@@ -159,8 +164,8 @@ int expectMatchesBruteForce(const BvhScene& bvh, const Scene& scene, const std::
             const bool longHits = intersectAny(bvh, scene, shadow);
             ok = actual->instanceIndex == expected->instanceIndex &&
                  actual->triangleIndex == expected->triangleIndex &&
-                 std::abs(actual->t - expected->t) <= kRelativeTSlack * expected->t &&
-                 !shortHits && longHits;
+                 std::abs(actual->t - expected->t) <= kRelativeTSlack * expected->t && !shortHits &&
+                 longHits;
         }
         if (!ok) {
             ADD_FAILURE() << "ray " << r << " from " << formatVec(ray.origin) << " along "
@@ -271,7 +276,8 @@ TEST(BvhBoxCity, MatchesBruteForce) {
     addBoxCity(scene, BoxCityParams{}, glm::mat4(1.0f));
     const auto start = std::chrono::steady_clock::now();
     constexpr int kBuildRepeats = 20;
-    for (int i = 0; i + 1 < kBuildRepeats; ++i) (void)buildSceneBvh(scene);
+    for (int i = 0; i + 1 < kBuildRepeats; ++i)
+        (void)buildSceneBvh(scene);
     const BvhScene bvh = buildSceneBvh(scene);
     const std::chrono::duration<double, std::milli> elapsed =
         std::chrono::steady_clock::now() - start;
@@ -283,7 +289,8 @@ TEST(BvhBoxCity, MatchesBruteForce) {
     constexpr float kCityHalfM = 130.0f;
     std::mt19937 rng(3);
     std::vector<Ray> rays = makeRays(rng, kRayCount, -kCityHalfM, kCityHalfM);
-    for (Ray& ray : rays) ray.origin.y = std::abs(ray.origin.y) * 0.5f;
+    for (Ray& ray : rays)
+        ray.origin.y = std::abs(ray.origin.y) * 0.5f;
     EXPECT_GT(expectMatchesBruteForce(bvh, scene, rays), kRayCount / 3);
 }
 
@@ -291,8 +298,8 @@ TEST(BvhTopLevel, RebuildAndRefitFollowAMovedInstance) {
     Scene scene;
     scene.materials.push_back({});
     Mesh quad; // unit square in the z = 0 plane, two triangles
-    quad.positions = {{-0.5f, -0.5f, 0.0f}, {0.5f, -0.5f, 0.0f}, {0.5f, 0.5f, 0.0f},
-                      {-0.5f, 0.5f, 0.0f}};
+    quad.positions = {
+        {-0.5f, -0.5f, 0.0f}, {0.5f, -0.5f, 0.0f}, {0.5f, 0.5f, 0.0f}, {-0.5f, 0.5f, 0.0f}};
     quad.triangles = {{0, 1, 2}, {0, 2, 3}};
     quad.triangleMaterials = {0, 0};
     scene.meshes.push_back(quad);

@@ -64,8 +64,7 @@ void writeBytes(const std::string& path, const std::string& bytes) {
 }
 
 // Runs `action`, expects an InputError whose message names `path`.
-template <typename Action>
-void expectInputErrorNaming(const std::string& path, Action&& action) {
+template <typename Action> void expectInputErrorNaming(const std::string& path, Action&& action) {
     try {
         action();
         ADD_FAILURE() << "expected an InputError for " << path;
@@ -128,8 +127,8 @@ TEST(PfmTest, WritesStandardHeaderAndBottomRowFirstLittleEndian) {
 }
 
 TEST(PfmTest, ReadsBigEndianGreyscaleBottomRowFirst) {
-    const std::string bytes = "Pf\n1 2\n1.0\n" + encodeFloat(0.25f, false) +
-                              encodeFloat(4.0f, false);
+    const std::string bytes =
+        "Pf\n1 2\n1.0\n" + encodeFloat(0.25f, false) + encodeFloat(4.0f, false);
     const Image image = decodePfm(bytes);
     ASSERT_EQ(image.width, 1);
     ASSERT_EQ(image.height, 2);

@@ -185,16 +185,15 @@ TEST(MetricsTest, BadMasksThrow) {
 TEST(ImageDiffTest, CountsFailingPixelsAndMeanError) {
     Image reference(4, 1, glm::vec3(0.5f));
     Image test = reference;
-    test.at(0, 0).r += 0.25f;  // fails a 0.1 tolerance
-    test.at(1, 0).b -= 0.05f;  // passes it
-    test.at(2, 0).g = kNan;    // a NaN always fails
+    test.at(0, 0).r += 0.25f; // fails a 0.1 tolerance
+    test.at(1, 0).b -= 0.05f; // passes it
+    test.at(2, 0).g = kNan;   // a NaN always fails
     const ImageDiff diff = computeImageDiff(test, reference, 0.1f);
     EXPECT_DOUBLE_EQ(diff.failingFraction, 2.0 / 4.0);
     EXPECT_TRUE(std::isnan(diff.meanAbsError));
 
     test.at(2, 0).g = 0.5f;
-    EXPECT_NEAR(computeImageDiff(test, reference, 0.1f).meanAbsError, (0.25 + 0.05) / 12.0,
-                1e-7);
+    EXPECT_NEAR(computeImageDiff(test, reference, 0.1f).meanAbsError, (0.25 + 0.05) / 12.0, 1e-7);
     EXPECT_EQ(computeImageDiff(reference, reference, 0.0f).failingFraction, 0.0);
 }
 
@@ -206,7 +205,7 @@ TEST(ImageDiffTest, ErrorImageIsAbsoluteDifference) {
 
 TEST(ImageDiffTest, FalseColourSpansTheRampAndSurvivesNan) {
     Image errors(4, 1);
-    errors.at(1, 0) = glm::vec3(2.0f); // max value: top of the ramp
+    errors.at(1, 0) = glm::vec3(2.0f);  // max value: top of the ramp
     errors.at(2, 0) = glm::vec3(10.0f); // above max: clamped to the top
     errors.at(3, 0) = glm::vec3(kNan);
     const Image colours = computeFalseColour(errors, 2.0f);
@@ -234,7 +233,8 @@ TEST(QualityMetrics, EnergyAndBlockRelRmseByHand) {
     EXPECT_NEAR(computeRelRmse(test, reference, kRelRmseBlock), 0.5, kTolerance);
     // Noise that averages out within a block counts per pixel, not per block.
     for (int y = 0; y < 4; ++y) {
-        for (int x = 0; x < 4; ++x) test.at(x, y) = glm::vec3((x + y) % 2 == 0 ? 1.2f : 0.8f);
+        for (int x = 0; x < 4; ++x)
+            test.at(x, y) = glm::vec3((x + y) % 2 == 0 ? 1.2f : 0.8f);
     }
     EXPECT_NEAR(computeRelRmse(test, reference, kRelRmseBlock), 0.0, 1e-7);
     EXPECT_NEAR(computeRelRmse(test, reference, 1), 0.2, 1e-7);

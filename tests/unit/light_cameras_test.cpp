@@ -42,13 +42,15 @@ TEST(LightCameras, SunOrthographicEnclosesSceneBounds) {
     EXPECT_TRUE(cams[0].isOrthographic);
     const Aabb b = scene.computeWorldBounds();
     for (int i = 0; i < 8; ++i) {
-        const glm::vec3 c((i & 1) ? b.hi.x : b.lo.x, (i & 2) ? b.hi.y : b.lo.y, (i & 4) ? b.hi.z : b.lo.z);
+        const glm::vec3 c((i & 1) ? b.hi.x : b.lo.x, (i & 2) ? b.hi.y : b.lo.y,
+                          (i & 4) ? b.hi.z : b.lo.z);
         EXPECT_TRUE(isInside(projectToNdc(cams[0], c))) << i;
     }
     // Texel size: the footprint width divided by the resolution.
     const glm::vec3 a = projectToNdc(cams[0], b.getCenter());
     const glm::vec3 moved = projectToNdc(
-        cams[0], b.getCenter() + glm::normalize(glm::cross(sun.direction, glm::vec3(0, 0, 1))) * cams[0].texelSizeM);
+        cams[0], b.getCenter() + glm::normalize(glm::cross(sun.direction, glm::vec3(0, 0, 1))) *
+                                     cams[0].texelSizeM);
     EXPECT_NEAR(glm::length(glm::vec2(moved - a)), 2.0f / 256.0f, 1e-4f);
 }
 
@@ -70,7 +72,8 @@ TEST(LightCameras, SpotFrustumContainsItsCone) {
     const float angle = glm::radians(spot.outerDeg - 0.01f);
     for (int k = 0; k < 64; ++k) {
         const float phi = glm::two_pi<float>() * float(k) / 64.0f;
-        const glm::vec3 dir = std::cos(angle) * axis + std::sin(angle) * (std::cos(phi) * u + std::sin(phi) * v);
+        const glm::vec3 dir =
+            std::cos(angle) * axis + std::sin(angle) * (std::cos(phi) * u + std::sin(phi) * v);
         EXPECT_TRUE(isInside(projectToNdc(cams[0], spot.position + dir * 5.0f))) << k;
     }
 }
@@ -89,7 +92,8 @@ TEST(LightCameras, PointLightFacesCoverEveryDirection) {
         const glm::vec3 dir = glm::normalize(glm::vec3(normal(rng), normal(rng), normal(rng)));
         const glm::vec3 p = point.position + dir * 3.0f;
         int covering = 0;
-        for (const LightCamera& cam : cams) covering += isInside(projectToNdc(cam, p)) && glm::dot(dir, cam.axis) > 0.0f;
+        for (const LightCamera& cam : cams)
+            covering += isInside(projectToNdc(cam, p)) && glm::dot(dir, cam.axis) > 0.0f;
         EXPECT_GE(covering, 1) << "direction " << dir.x << "," << dir.y << "," << dir.z;
     }
 }

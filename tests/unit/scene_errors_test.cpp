@@ -69,9 +69,7 @@ std::vector<ErrorCase> getErrorCases() {
          {"line 1, column", "valid JSON"}},
         {"EmptyFile", [] { return std::string(); }, {"valid JSON"}},
         {"TopLevelNotObject", [] { return std::string("[1, 2]"); }, {"a scene"}},
-        {"UnknownTopLevelKey",
-         mutate([](json& d) { d["views"] = 1; }),
-         {"/views", "'views'"}},
+        {"UnknownTopLevelKey", mutate([](json& d) { d["views"] = 1; }), {"/views", "'views'"}},
         {"UnknownCameraKey",
          mutate([](json& d) {
              d["camera"]["positon"] = {0, 0, 0};

@@ -13,8 +13,7 @@ constexpr double kPi = 3.14159265358979323846;
 
 // Mass of the kernel 2 / pi (1 - s^2) (unit radius) where x > u and |y| pass `inside`, by the
 // midpoint rule on an n x n grid over the unit square [-1, 1]^2.
-template <typename Inside>
-double integrateKernel(Inside&& inside) {
+template <typename Inside> double integrateKernel(Inside&& inside) {
     constexpr int kSteps = 2000; // cell 1e-3: the rim's error is ~1e-6 of the mass
     const double h = 2.0 / kSteps;
     double sum = 0.0;

@@ -153,9 +153,9 @@ TEST_F(ViewerReloadReferenceTest, ReloadKeepsTheOldProgramOnErrorAndUsesTheFixed
 
 TEST_F(ViewerReloadReferenceTest, ReferenceViewsCompareWithTheTotal) {
     // The reference is the same render (relMSE ~0), then twice as bright (relative error 1/2).
-    ASSERT_EQ(
-        runIspm("render " + kCornell + sizeArgs() + " -q --aov total -o " + path("same.pfm")).exitCode,
-        0);
+    ASSERT_EQ(runIspm("render " + kCornell + sizeArgs() + " -q --aov total -o " + path("same.pfm"))
+                  .exitCode,
+              0);
     Image bright = readImage(path("same.pfm"));
     for (glm::vec3& p : bright.pixels)
         p *= 2.0f;
@@ -167,8 +167,8 @@ TEST_F(ViewerReloadReferenceTest, ReferenceViewsCompareWithTheTotal) {
         "\nview total\nscreenshot " + path("total.png") +
         "\nrender_reference on\nview reference\nframes 4\ncompute_metrics\nscreenshot " +
         path("traced.png") + "\n");
-    const RunResult r = runIspm("view " + kCornell + sizeArgs() + " --reference " + path("same.pfm") +
-                            " --frames 12 --script " + script);
+    const RunResult r = runIspm("view " + kCornell + sizeArgs() + " --reference " +
+                                path("same.pfm") + " --frames 12 --script " + script);
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_EQ(r.output.find("OpenGL errors"), std::string::npos) << r.output;
     const auto metrics = parseMetrics(r.output);

@@ -96,7 +96,8 @@ TEST_F(ViewerWindowTest, ScreenshotShowsSceneAndPanels) {
     const RunResult view =
         runIspm("view " + kCornell + sizeArgs() + " --frames 30 --screenshot " + path("ui.png"));
     expectClean(view, "view");
-    const RunResult render = runIspm("render " + kCornell + sizeArgs() + " -q -o " + path("scene.png"));
+    const RunResult render =
+        runIspm("render " + kCornell + sizeArgs() + " -q -o " + path("scene.png"));
     expectClean(render, "render");
     const Image ui = readImage(path("ui.png"));
     const Image scene = readImage(path("scene.png"));
@@ -149,7 +150,8 @@ TEST_F(ViewerWindowTest, ScriptedInputMovesTheCameraAndChangesSettings) {
                                            "set bounces=0\n"
                                            "write_aov indirect " +
                                            path("c.pfm") + "\n");
-    expectClean(runIspm("view " + kCornell + sizeArgs() + " --frames 30 --script " + script), "view");
+    expectClean(runIspm("view " + kCornell + sizeArgs() + " --frames 30 --script " + script),
+                "view");
     const Image before = readImage(path("a.png"));
     const Image moved = readImage(path("b.png"));
     // Turning right takes the red (left) wall out of view and brings more of the green (right)
@@ -172,7 +174,8 @@ TEST_F(ViewerWindowTest, ScriptedSettingRendersAsRenderSet) {
                                            "\n"
                                            "save_settings " +
                                            path("saved.json") + "\n");
-    expectClean(runIspm("view " + kCornell + sizeArgs() + " --frames 3 --script " + script), "view");
+    expectClean(runIspm("view " + kCornell + sizeArgs() + " --frames 3 --script " + script),
+                "view");
     const std::string renderArgs = "render " + kCornell + sizeArgs() + " -q --aov total";
     expectClean(runIspm(renderArgs + " --set photons=20000 --set bounces=2 -o " + path("set.pfm")),
                 "render --set");
@@ -213,7 +216,8 @@ TEST_F(ViewerWindowTest, DebugViewsAndPhotonPointsChangeTheSceneRegion) {
                                            "view gbuffer normal\n"
                                            "screenshot " +
                                            path("normal.png") + "\n");
-    expectClean(runIspm("view " + kCornell + sizeArgs() + " --frames 5 --script " + script), "view");
+    expectClean(runIspm("view " + kCornell + sizeArgs() + " --frames 5 --script " + script),
+                "view");
     const Image display = readImage(path("display.png"));
     // Points cover a good part of the box (20k+ result photons over 128 x 128 pixels) ...
     const double kMinPointsChanged = 0.1;
@@ -234,10 +238,10 @@ TEST_F(ViewerWindowTest, LightImportanceViewShowsWhereThePhotonsGo) {
                         script),
                 "view");
     const Image map = readImage(path("importance.png"));
-    const double bright = computeFraction(map, 0, kSize, [](const glm::vec3& c) { return c.r > 0.9f; });
-    const double dim = computeFraction(map, 0, kSize, [](const glm::vec3& c) {
-        return c.r > 0.05f && c.r < 0.5f;
-    });
+    const double bright =
+        computeFraction(map, 0, kSize, [](const glm::vec3& c) { return c.r > 0.9f; });
+    const double dim = computeFraction(
+        map, 0, kSize, [](const glm::vec3& c) { return c.r > 0.05f && c.r < 0.5f; });
     std::printf("light importance view: %.4f white, %.4f dim\n", bright, dim);
     // Measured: 1.7% of the map white (20x the uniform share or more), 97% dim.
     EXPECT_GT(bright, 0.001);
