@@ -18,8 +18,8 @@ constexpr GLint kLocationWeight = 0; // shaders/denoise/accumulate.frag
 
 float computeAccumulateWeight(int accumulate, uint32_t historyFrames) {
     if (accumulate <= 0 || historyFrames == 0) return 1.0f;
-    const uint32_t window = std::min(historyFrames + 1, static_cast<uint32_t>(accumulate));
-    return 1.0f / static_cast<float>(window);
+    if (historyFrames >= static_cast<uint32_t>(accumulate)) return 0.0f; // the history is full
+    return 1.0f / static_cast<float>(historyFrames + 1);
 }
 
 AccumulatePass::AccumulatePass(const gl::Texture& direct, const gl::Texture& indirect)

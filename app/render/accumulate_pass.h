@@ -1,11 +1,11 @@
 // AccumulatePass: temporal accumulation of the direct and indirect light while nothing moves.
 // Each frame traces new photons and looks through a new sub-pixel offset of the camera
 // (FrameRunner moves the seed and the jitter on with the frame count), and this pass averages
-// both lights into their histories: a running mean over the first `accumulate` frames, then an
-// exponential mean over that many. FrameRunner restarts the histories (frame count 0) when the
-// camera, the scene, a light or a setting changes, so no stale light outlives a change by a
-// frame. With `accumulate` 0 the frame's light passes through. Its outputs are the direct and
-// indirect AOVs.
+// both lights into their histories: a running mean over `accumulate` frames, after which
+// FrameRunner draws nothing more (the image holds). FrameRunner restarts the histories (frame
+// count 0) when the camera, the scene, a light or a setting changes, so no stale light outlives
+// a change by a frame. With `accumulate` 0 the frame's light passes through. Its outputs are the
+// direct and indirect AOVs.
 #pragma once
 
 #include "render/fullscreen.h"
@@ -16,7 +16,7 @@
 namespace ispm {
 
 // The weight of this frame's light: 1 / (frames + 1) while the history holds fewer than
-// `accumulate` frames, then 1 / accumulate; 1 when accumulation is off or the history is empty.
+// `accumulate` frames, 0 once it is full; 1 when accumulation is off or the history is empty.
 float computeAccumulateWeight(int accumulate, uint32_t historyFrames);
 
 class AccumulatePass final : public Pass {

@@ -123,6 +123,10 @@ uint32_t FrameRunner::getAccumulatedFrames() const {
 void FrameRunner::renderFrame() {
     if (!isSameCamera(mScene.camera, mHistoryCamera)) mHistoryFrames = 0;
     mHistoryCamera = mScene.camera;
+    // A full history of a still view is the image: nothing changed, so nothing is drawn (a
+    // resting camera costs nothing), and the image stands still.
+    const auto window = static_cast<uint32_t>(mFrameSettings.accumulate);
+    if (window > 0 && mHistoryFrames >= window) return;
     // Every accumulated frame traces new photons: the seed moves on with the history.
     mFrameSettings.seed = mFrameSettings.accumulate > 0 ? mBaseSeed + mHistoryFrames : mBaseSeed;
     updateFrameConstants();
@@ -168,6 +172,10 @@ bool FrameRunner::hasIndirect() const {
 PhotonCounts FrameRunner::readPhotonCounts() const {
     if (!hasIndirect()) return {};
     return mPhotonBuffers.readCounts(mEmit->getEmittedPerLight());
+}
+
+const gl::Texture& FrameRunner::getFrameLight(Aov aov) const {
+    return aov == Aov::Direct ? mDirect->getOutput() : mUpsample->getOutput();
 }
 
 const gl::Texture& FrameRunner::getAov(Aov aov) const {

@@ -67,6 +67,8 @@ class FrameRunner {
 
     // Linear radiance (Direct, Indirect, Total) or display values (Display), row 0 at the bottom.
     const gl::Texture& getAov(Aov aov) const;
+    // The last frame's own direct or indirect light, before accumulation (tests, debug views).
+    const gl::Texture& getFrameLight(Aov aov) const;
     // Whether the photon passes run (bounces > 0 and photons > 0).
     bool hasIndirect() const;
     // Photon counts of the last frame, read back from the GPU (for reports; waits for the GPU).

@@ -208,8 +208,8 @@ const std::vector<SettingDesc>& table() {
          "frames",
          "temporal accumulation of the indirect light: while the camera, the scene and the "
          "settings stay as they are, each frame traces new photons (seed + frame) and is "
-         "averaged in, a running mean over this many frames and then an exponential one over as "
-         "many; any change starts again; 0 = off (each frame alone)",
+         "averaged in, up to this many frames; then the image holds and frames cost nothing; "
+         "any change starts again; 0 = off (each frame alone)",
          {}},
         {"splat_faces", SettingType::Enum, 0, 0, 1, "",
          "back: the rasteriser culls the boxes' front faces (the thesis's choice); all: every face "
