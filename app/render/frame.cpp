@@ -126,7 +126,10 @@ void FrameRunner::renderFrame() {
     // A full history of a still view is the image: nothing changed, so nothing is drawn (a
     // resting camera costs nothing), and the image stands still.
     const auto window = static_cast<uint32_t>(mFrameSettings.accumulate);
-    if (window > 0 && mHistoryFrames >= window) return;
+    if (window > 0 && mHistoryFrames >= window) {
+        mTimings.clear(); // no pass ran
+        return;
+    }
     // Every accumulated frame traces new photons: the seed moves on with the history.
     mFrameSettings.seed = mFrameSettings.accumulate > 0 ? mBaseSeed + mHistoryFrames : mBaseSeed;
     updateFrameConstants();
