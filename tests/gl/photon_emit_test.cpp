@@ -2,7 +2,10 @@
 // exactly the photons that a CPU re-derivation of photon_emit.geom's rules predicts, at awkward
 // budgets (1, 7, 1000, 12345 photons), for a spot, a point light (six views) and the sun. The
 // oracle warps each grid cell through the importance tables the frame built (read back) with its
-// own inverse-CDF search in double, and gives it the power density of the view over the pdf.
+// own inverse-CDF search in double, and gives it the power density of the view over the pdf. It
+// calls none of the code under test: the random stream (PCG hash, Jarzynski and Olano 2020), the
+// grid's shift, the basis (Duff et al. 2017) and the scatter rules are written again below, in
+// double, from their statements.
 #include "support/gl_fixture.h"
 
 #include "core/strings.h"
@@ -11,7 +14,7 @@
 
 #include <shared/importance_data.h>
 #include <shared/photon_data.h>
-#include <shared/photon_scatter.h>
+#include <shared/photon_scatter.h> // constants only (event codes, kDeltaConcentration)
 
 #include <glm/gtc/constants.hpp>
 
@@ -169,7 +172,121 @@ Settings makeSettings(uint32_t photons) {
 // The oracle. It re-derives photon_emit.geom's rules from their statement (DESIGN.md "Units and
 // conventions"), independently of the shader's code: same texel per grid cell, power = intensity
 // x spot falloff x exact cell solid angle (or irradiance x cell area), then the first bounce by
-// the shared gpu::scatterPhoton with the photon's own random stream.
+// the oracle's scatterOracle with the photon's own random stream.
+
+// The oracle's own random stream: the PCG RXS-M-XS hash of Jarzynski and Olano (2020), seeded
+// by hashing frame seed, bounce and photon in turn; each number is the top 24 bits over 2^24.
+uint32_t hashOracle(uint32_t v) {
+    const uint32_t state = v * 747796405u + 2891336453u;
+    const uint32_t word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+    return (word >> 22u) ^ word;
+}
+
+uint32_t seedOracle(uint32_t photon, uint32_t bounce, uint32_t frameSeed) {
+    return hashOracle(photon ^ hashOracle(bounce ^ hashOracle(frameSeed)));
+}
+
+// pcg: the state is hashed again; lcg: the Numerical Recipes linear congruential step.
+double nextOracle(uint32_t& state, uint32_t mode) {
+    state = mode == gpu::kRngLcg ? 1664525u * state + 1013904223u : hashOracle(state);
+    return double(state >> 8u) / 16777216.0;
+}
+
+// The grid's shift inside its cells this frame: two numbers of the view's own stream (bounce
+// slot 0xffffffff).
+glm::dvec2 computeOracleGridShift(uint32_t view, uint32_t frameSeed) {
+    uint32_t state = seedOracle(view, 0xffffffffu, frameSeed);
+    const double x = nextOracle(state, gpu::kRngPcg);
+    return {x, nextOracle(state, gpu::kRngPcg)};
+}
+
+// Duff et al. (2017): an orthonormal basis (t, b) around unit n.
+void buildOracleBasis(const glm::dvec3& n, glm::dvec3& t, glm::dvec3& b) {
+    const double sign = n.z >= 0.0 ? 1.0 : -1.0;
+    const double a = -1.0 / (sign + n.z);
+    const double c = n.x * n.y * a;
+    t = {1.0 + sign * n.x * n.x * a, sign * c, -sign * n.x};
+    b = {c, sign + n.y * n.y * a, -n.y};
+}
+
+// A direction at polar cosine cosAlpha and azimuth 2 pi u2 around `axis`.
+glm::dvec3 makeOracleDirection(const glm::dvec3& axis, double cosAlpha, double u2) {
+    glm::dvec3 t;
+    glm::dvec3 b;
+    buildOracleBasis(axis, t, b);
+    const double sinAlpha = std::sqrt(std::max(0.0, 1.0 - cosAlpha * cosAlpha));
+    const double phi = 2.0 * glm::pi<double>() * u2;
+    return glm::normalize(t * (sinAlpha * std::cos(phi)) + b * (sinAlpha * std::sin(phi)) +
+                          axis * cosAlpha);
+}
+
+double computeOracleMean(const glm::dvec3& v) {
+    return (v.x + v.y + v.z) / 3.0;
+}
+
+// Unpolarised Fresnel reflectance of a dielectric, eta = n_incident / n_transmitted.
+double computeOracleFresnel(double cosI, double eta) {
+    const double sin2T = eta * eta * std::max(0.0, 1.0 - cosI * cosI);
+    if (sin2T >= 1.0) return 1.0;
+    const double cosT = std::sqrt(1.0 - sin2T);
+    const double rs = (eta * cosI - cosT) / (eta * cosI + cosT);
+    const double rp = (cosI - eta * cosT) / (cosI + eta * cosT);
+    return 0.5 * (rs * rs + rp * rp);
+}
+
+// The first bounce by its statement (DESIGN.md): Russian roulette on the mean reflectance of the
+// diffuse, specular and transmissive lobes in that order with u, then the lobe's direction from
+// (u1, u2): cosine-weighted; the normalised Phong lobe around the mirror direction (absorbed
+// below the surface; weight rho_s (e + 2) / (e + 1) cos(out) / p_s); Fresnel reflection or
+// refraction by u1. The weight is divided by the lobe's probability.
+uint32_t scatterOracle(glm::dvec3& dir, glm::dvec3& power, const glm::dvec3& n,
+                       const glm::dvec3& diffuse, const glm::dvec4& specular,
+                       const glm::dvec4& transmissive, bool entering, uint32_t& rng,
+                       uint32_t mode) {
+    const double pd = computeOracleMean(diffuse);
+    const double ps = computeOracleMean(glm::dvec3(specular));
+    const double pt = computeOracleMean(glm::dvec3(transmissive));
+    const double u = nextOracle(rng, mode);
+    const double u1 = nextOracle(rng, mode);
+    const double u2 = nextOracle(rng, mode);
+    if (u < pd) {
+        dir = makeOracleDirection(n, std::sqrt(std::max(0.0, 1.0 - u1)), u2);
+        power *= diffuse / pd;
+        return gpu::kScatterDiffuse;
+    }
+    if (u < pd + ps) {
+        const double e = specular.w;
+        const glm::dvec3 out =
+            makeOracleDirection(glm::reflect(dir, n), std::pow(u1, 1.0 / (e + 1.0)), u2);
+        const double cosOut = glm::dot(out, n);
+        if (cosOut <= 0.0) return gpu::kScatterAbsorbed;
+        power *= glm::dvec3(specular) / ps * ((e + 2.0) / (e + 1.0) * cosOut);
+        dir = out;
+        return gpu::kScatterSpecular;
+    }
+    if (u < pd + ps + pt) {
+        const double eta = entering ? 1.0 / transmissive.w : transmissive.w;
+        const double cosI = std::clamp(-glm::dot(dir, n), 0.0, 1.0);
+        power *= glm::dvec3(transmissive) / pt;
+        if (u1 < computeOracleFresnel(cosI, eta)) {
+            dir = glm::reflect(dir, n);
+            return gpu::kScatterReflect;
+        }
+        const double sin2T = eta * eta * (1.0 - cosI * cosI);
+        dir = glm::normalize(dir * eta + n * (eta * cosI - std::sqrt(1.0 - sin2T)));
+        return gpu::kScatterRefract;
+    }
+    return gpu::kScatterAbsorbed;
+}
+
+// Path density after the first bounce: 1 after a diffuse bounce, (e + 2) / 2 after a Phong one,
+// kDeltaConcentration after a mirror or refraction.
+double computeOraclePathDensity(uint32_t event, double exponent) {
+    if (event == gpu::kScatterSpecular) return (exponent + 2.0) * 0.5;
+    if (event == gpu::kScatterReflect || event == gpu::kScatterRefract)
+        return double(gpu::kDeltaConcentration);
+    return 1.0;
+}
 
 struct ExpectedPhoton {
     gpu::BouncePhoton photon;
@@ -234,26 +351,28 @@ LightTexels readLightTexels(const GBuffer& gbuffer, int layer) {
 
 // True when one of scatterPhoton's decisions for this photon is within round-off of its
 // threshold (the numbers are drawn again from a copy of the same stream).
-bool isScatterMarginal(glm::vec3 dir, glm::vec3 n, const glm::vec3& diffuse,
-                       const glm::vec4& specular, const glm::vec4& transmissive, bool entering,
+bool isScatterMarginal(const glm::dvec3& dir, const glm::dvec3& n, const glm::dvec3& diffuse,
+                       const glm::dvec4& specular, const glm::dvec4& transmissive, bool entering,
                        uint32_t rng, uint32_t mode) {
-    const float u = gpu::nextRandom(rng, mode);
-    const float u1 = gpu::nextRandom(rng, mode);
-    const float u2 = gpu::nextRandom(rng, mode);
-    const float pd = gpu::computeMean(diffuse);
-    const float ps = gpu::computeMean(glm::vec3(specular));
-    const float pt = gpu::computeMean(glm::vec3(transmissive));
-    for (float threshold : {pd, pd + ps, pd + ps + pt}) {
-        if (std::abs(double(u) - double(threshold)) < kMarginalGap) return true;
+    const double u = nextOracle(rng, mode);
+    const double u1 = nextOracle(rng, mode);
+    const double u2 = nextOracle(rng, mode);
+    const double pd = computeOracleMean(diffuse);
+    const double ps = computeOracleMean(glm::dvec3(specular));
+    const double pt = computeOracleMean(glm::dvec3(transmissive));
+    for (double threshold : {pd, pd + ps, pd + ps + pt}) {
+        if (std::abs(u - threshold) < kMarginalGap) return true;
     }
     if (u >= pd && u < pd + ps) {
-        const glm::vec3 lobe = gpu::samplePhongLobe(glm::reflect(dir, n), specular.w, u1, u2);
-        return std::abs(double(glm::dot(lobe, n))) < kMarginalGap; // the lobe grazes the surface
+        const double e = specular.w;
+        const glm::dvec3 lobe =
+            makeOracleDirection(glm::reflect(dir, n), std::pow(u1, 1.0 / (e + 1.0)), u2);
+        return std::abs(glm::dot(lobe, n)) < kMarginalGap; // the lobe grazes the surface
     }
     if (u >= pd + ps && u < pd + ps + pt) {
-        const float eta = entering ? 1.0f / transmissive.w : transmissive.w;
-        const float cosI = std::clamp(-glm::dot(dir, n), 0.0f, 1.0f);
-        return std::abs(double(u1) - double(gpu::computeFresnel(cosI, eta))) < kMarginalGap;
+        const double eta = entering ? 1.0 / transmissive.w : transmissive.w;
+        const double cosI = std::clamp(-glm::dot(dir, n), 0.0, 1.0);
+        return std::abs(u1 - computeOracleFresnel(cosI, eta)) < kMarginalGap;
     }
     return false;
 }
@@ -277,7 +396,7 @@ Reference computeReference(const FrameRunner& runner, const Scene& scene, uint32
             // The cell's centre through the view's tables: row by the marginal CDF, column by the
             // row's conditional CDF.
             const glm::uvec2 cell(index % grid.width, index / grid.width);
-            const glm::dvec2 jitter(gpu::computeGridJitter(grid.viewIndex, seed));
+            const glm::dvec2 jitter = computeOracleGridShift(grid.viewIndex, seed);
             const glm::dvec2 u = (glm::dvec2(cell) + jitter) / gridSize;
             bool marginal = false;
             const CdfPick row = pickInterval(
@@ -344,20 +463,21 @@ Reference computeReference(const FrameRunner& runner, const Scene& scene, uint32
             if (power == glm::dvec3(0.0)) continue;
             ref.emittedPowerW += power;
 
-            const glm::vec3 n(texels.normal[at]);
-            const glm::vec3 diffuse(texels.diffuse[at]);
-            const glm::vec4 specular = texels.specular[at];
-            const glm::vec4 transmissive = texels.transmissive[at];
+            // The surface as the light G-buffer holds it (inputs, read back as floats).
+            const glm::dvec3 n(glm::vec3(texels.normal[at]));
+            const glm::dvec3 diffuse(glm::vec3(texels.diffuse[at]));
+            const glm::dvec4 specular(texels.specular[at]);
+            const glm::dvec4 transmissive(texels.transmissive[at]);
             const bool entering = texels.normal[at].w > 0.0f;
-            glm::vec3 dirF(dir);
-            glm::vec3 powerF(power);
-            uint32_t rng = gpu::seedRandom(photon, 0u, seed);
-            if (isScatterMarginal(dirF, n, diffuse, specular, transmissive, entering, rng,
+            glm::dvec3 bounceDir = glm::normalize(glm::dvec3(dir));
+            glm::dvec3 bouncePower = power;
+            uint32_t rng = seedOracle(photon, 0u, seed);
+            if (isScatterMarginal(bounceDir, n, diffuse, specular, transmissive, entering, rng,
                                   rngMode)) {
                 ref.marginal.insert(photon);
             }
-            const uint32_t event = gpu::scatterPhoton(dirF, powerF, n, diffuse, specular,
-                                                      transmissive, entering, rng, rngMode);
+            const uint32_t event = scatterOracle(bounceDir, bouncePower, n, diffuse, specular,
+                                                 transmissive, entering, rng, rngMode);
             ++ref.eventCounts[event];
             if (event == gpu::kScatterAbsorbed) continue;
             ExpectedPhoton e;
@@ -365,13 +485,13 @@ Reference computeReference(const FrameRunner& runner, const Scene& scene, uint32
             e.photon.positionDistance =
                 glm::vec4(glm::vec3(position), static_cast<float>(travelled));
             e.photon.directionDensity =
-                glm::vec4(dirF, gpu::updatePathDensity(1.0f, event, specular.w));
-            e.photon.power = glm::vec4(powerF, std::bit_cast<float>(photon));
+                glm::vec4(glm::vec3(bounceDir), float(computeOraclePathDensity(event, specular.w)));
+            e.photon.power = glm::vec4(glm::vec3(bouncePower), std::bit_cast<float>(photon));
             e.powerTolerance += falloffTolerance;
             if (event == gpu::kScatterSpecular) {
                 // The Phong weight is proportional to cos(out): near grazing it magnifies the
                 // direction's round-off.
-                e.powerTolerance += kDirectionRoundOff / double(glm::dot(dirF, n));
+                e.powerTolerance += kDirectionRoundOff / glm::dot(bounceDir, n);
             }
             ref.photons.push_back(e);
         }
