@@ -4,6 +4,7 @@
 #include "cli/bench_command.h"
 
 #include "cli/bench_flicker.h"
+#include "cli/bench_stats.h"
 #include "cli/bench_sweep.h"
 #include "cli/cli_common.h"
 #include "core/input_error.h"
@@ -26,9 +27,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <optional>
-#include <sstream>
 #include <utility>
 
 namespace ispm {
@@ -51,7 +50,6 @@ std::vector<glm::vec4> readTopDown(const gl::Texture& texture) {
 }
 constexpr int kMinWarmupFrames = 0;
 constexpr double kBytesPerMib = 1024.0 * 1024.0;
-constexpr double kKibPerMib = 1024.0;
 // --animate: the time step of a 60 Hz display, so the motion per frame is what a viewer sees.
 constexpr double kAnimateFrameSeconds = 1.0 / 60.0;
 constexpr const char* kSceneUpdateRow = "scene update";
@@ -104,31 +102,6 @@ std::optional<PhotonCounts> readReportedPhotonCounts(const FrameRunner& runner) 
     const PhotonCounts counts = runner.readPhotonCounts();
     if (counts.emitted == 0) return std::nullopt;
     return counts;
-}
-
-struct PassStats {
-    std::string name;
-    double medianMs = 0.0;
-    double minMs = 0.0;
-    double maxMs = 0.0;
-};
-
-PassStats computeStats(std::string name, const std::vector<double>& samplesMs) {
-    const auto [minIt, maxIt] = std::minmax_element(samplesMs.begin(), samplesMs.end());
-    return {std::move(name), computeMedian(samplesMs), *minIt, *maxIt};
-}
-
-// Peak resident set size (VmHWM) in MiB; empty where /proc is not there to ask.
-std::optional<double> readPeakRssMib() {
-    std::ifstream status("/proc/self/status");
-    std::string line;
-    while (std::getline(status, line)) {
-        if (line.rfind("VmHWM:", 0) != 0) continue;
-        std::istringstream fields(line.substr(line.find(':') + 1));
-        double kib = 0.0;
-        if (fields >> kib) return kib / kKibPerMib;
-    }
-    return std::nullopt;
 }
 
 struct BenchReport {

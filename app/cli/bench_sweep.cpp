@@ -447,24 +447,6 @@ void printSpeedups(const SweepPlan& plan, const std::vector<IspmResult>& results
 
 } // namespace
 
-void addFrameTimes(const FrameRunner& runner, FrameTimes& times) {
-    double frameMs = 0.0;
-    for (const PassTiming& t : runner.getLastTimings()) {
-        auto [it, inserted] = times.samplesMs.try_emplace(t.name);
-        if (inserted) times.passOrder.push_back(t.name);
-        it->second.push_back(t.ms);
-        frameMs += t.ms;
-    }
-    times.totalsMs.push_back(frameMs);
-}
-
-double computeMedian(std::vector<double> samples) {
-    assert(!samples.empty());
-    std::sort(samples.begin(), samples.end());
-    const size_t n = samples.size();
-    return n % 2 == 1 ? samples[n / 2] : 0.5 * (samples[n / 2 - 1] + samples[n / 2]);
-}
-
 bool isSweepRequested(const BenchOptions& options) {
     return !options.sweeps.empty() || !options.referencePath.empty() || !options.csvPath.empty();
 }

@@ -4,30 +4,16 @@
 // speedup.
 #pragma once
 
+#include "cli/bench_stats.h"
 #include "render/frame.h"
 #include "scene/scene.h"
 
-#include <map>
 #include <string>
 #include <vector>
 
 namespace ispm {
 
 struct BenchOptions;
-
-// Per-pass and per-frame times of a run of frames; passes keep the order of their first
-// appearance, so passes added later need no change in the callers. Shared with the plain bench.
-struct FrameTimes {
-    std::vector<std::string> passOrder;
-    std::map<std::string, std::vector<double>> samplesMs; // by pass name
-    std::vector<double> totalsMs;                         // sum of the passes, per frame
-};
-
-// Appends the timings of the runner's last frame.
-void addFrameTimes(const FrameRunner& runner, FrameTimes& times);
-
-// Median of `samples` (not empty).
-double computeMedian(std::vector<double> samples);
 
 // True when the options ask for a sweep (--sweep, --reference or --csv): runBench hands over.
 bool isSweepRequested(const BenchOptions& options);
