@@ -1,6 +1,8 @@
 // The scene model's computations: bounds, triangle counts, spot falloff and camera matrices.
 #include "scene/scene.h"
 
+#include <shared/scene_data.h>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -21,14 +23,9 @@ const char* getLightTypeName(LightType type) {
 }
 
 float computeSpotFalloff(float cosAngle, float innerDeg, float outerDeg) {
-    const float cosInner = std::cos(glm::radians(innerDeg));
-    const float cosOuter = std::cos(glm::radians(outerDeg));
-    if (cosInner <= cosOuter) {
-        // inner == outer: a hard edge, lit up to and including the cone's boundary.
-        return cosAngle >= cosOuter ? 1.0f : 0.0f;
-    }
-    const float s = std::clamp((cosAngle - cosOuter) / (cosInner - cosOuter), 0.0f, 1.0f);
-    return s * s * (3.0f - 2.0f * s);
+    // The shaders' own function (shared/scene_data.h), so CPU and GPU agree to the bit.
+    return gpu::computeSpotFalloffCos(cosAngle, std::cos(glm::radians(innerDeg)),
+                                      std::cos(glm::radians(outerDeg)));
 }
 
 Aabb Mesh::computeBounds() const {

@@ -39,7 +39,7 @@ float computeBase(GpuLightView view, GpuLight light, uint column, uint row) {
         vec2 corner = i == 4 ? vec2(0.0) : vec2((i & 1) == 0 ? -1.0 : 1.0, (i & 2) == 0 ? -1.0 : 1.0);
         vec2 q = p + corner * halfTexel;
         float cosAngle = 1.0 / sqrt(1.0 + dot(q, q));
-        falloff = max(falloff, computeSpotFalloff(cosAngle, light.power.w, light.directionCos.w));
+        falloff = max(falloff, computeSpotFalloffCos(cosAngle, light.power.w, light.directionCos.w));
     }
     return solidAngle * falloff;
 }

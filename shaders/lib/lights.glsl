@@ -2,13 +2,6 @@
 // light) of point, spot and sun lights, and shadow-map visibility from the light G-buffers.
 // Needs scene_buffers.glsl and frame_constants.glsl included before.
 
-// Spot falloff S: 1 inside the inner cone, 0 outside the outer, smoothstep in cos space between.
-float computeSpotFalloff(float cosAngle, float cosInner, float cosOuter) {
-    if (cosInner <= cosOuter) return cosAngle >= cosOuter ? 1.0 : 0.0;
-    float s = clamp((cosAngle - cosOuter) / (cosInner - cosOuter), 0.0, 1.0);
-    return s * s * (3.0 - 2.0 * s);
-}
-
 struct LightSample {
     vec3 wi;          // unit direction toward the light
     float distanceM;  // to the light (huge for the sun)
@@ -30,7 +23,7 @@ LightSample sampleLight(GpuLight light, vec3 positionW) {
     s.wi = toLight / s.distanceM;
     float falloff = 1.0;
     if (type == kLightSpot) {
-        falloff = computeSpotFalloff(dot(-s.wi, light.directionCos.xyz), light.power.w,
+        falloff = computeSpotFalloffCos(dot(-s.wi, light.directionCos.xyz), light.power.w,
                                      light.directionCos.w);
     }
     s.irradiance = light.power.rgb * (falloff / d2);

@@ -65,7 +65,7 @@ void main() {
         dir = toSurface / travelled;
         float falloff = 1.0;
         if (light.views.z == kLightSpot) {
-            falloff = computeSpotFalloff(dot(dir, light.directionCos.xyz), light.power.w,
+            falloff = computeSpotFalloffCos(dot(dir, light.directionCos.xyz), light.power.w,
                                          light.directionCos.w);
         }
         power = light.power.rgb * (falloff * solidAngle);

@@ -29,6 +29,15 @@ ISPM_CONST uint kLightPoint = 0u;
 ISPM_CONST uint kLightSpot = 1u;
 ISPM_CONST uint kLightSun = 2u;
 
+// Spot falloff S from the cosine of the angle to the axis: 1 inside the inner cone, 0 outside
+// the outer, smoothstep in cos space between; equal cones make a hard edge, lit up to and
+// including the boundary. Written once for the renderer's shaders and the CPU (photon budgets).
+ISPM_INLINE float computeSpotFalloffCos(float cosAngle, float cosInner, float cosOuter) {
+    if (cosInner <= cosOuter) return cosAngle >= cosOuter ? 1.0f : 0.0f;
+    float s = clamp((cosAngle - cosOuter) / (cosInner - cosOuter), 0.0f, 1.0f);
+    return s * s * (3.0f - 2.0f * s);
+}
+
 struct GpuLight {
     vec4 position;     // xyz position (point, spot), w unused
     vec4 directionCos; // xyz unit axis (spot) or travel direction (sun), w = cos(outer)
