@@ -71,7 +71,7 @@ void main() {
     vec3 dir = sampleCosine(n, nextRandom(rng, kRngPcg), nextRandom(rng, kRngPcg));
     vec3 origin = position.xyz + n * params.weights.w;
     RayHit hit;
-    if (!traceRay(origin, dir, 3.0e38, hit)) return;
+    if (!traceRay(origin, dir, kNoHitDistance, hit)) return;
     vec3 q = origin + dir * hit.t;
     vec3 nq = computeHitNormal(hit);
     addLitPoint(q, dot(nq, dir) < 0.0 ? nq : -nq, params.weights.z);

@@ -16,7 +16,7 @@ struct RayHit {
     vec2 barycentric;
 };
 
-// Slab test; returns the entry distance or a huge value on a miss.
+// Slab test; returns the entry distance, or kNoHitDistance on a miss.
 float intersectBox(vec3 origin, vec3 invDir, vec3 lo, vec3 hi, float tMax) {
     vec3 t0 = (lo - origin) * invDir;
     vec3 t1 = (hi - origin) * invDir;
@@ -24,7 +24,7 @@ float intersectBox(vec3 origin, vec3 invDir, vec3 lo, vec3 hi, float tMax) {
     vec3 tFar = max(t0, t1);
     float enter = max(max(tNear.x, tNear.y), max(tNear.z, 0.0));
     float leave = min(min(tFar.x, tFar.y), min(tFar.z, tMax));
-    return enter <= leave ? enter : 3.0e38;
+    return enter <= leave ? enter : kNoHitDistance;
 }
 
 // Two-sided Moller-Trumbore; updates hit when closer than hit.t.
@@ -67,7 +67,7 @@ bool intersectInstance(uint instanceIndex, vec3 originW, vec3 dirW, inout RayHit
     stack[top++] = inst.range.z;
     while (top > 0) {
         GpuBvhNode node = blasNodes[stack[--top]];
-        if (intersectBox(origin, invDir, node.lo.xyz, node.hi.xyz, hit.t) > 1.0e38) continue;
+        if (intersectBox(origin, invDir, node.lo.xyz, node.hi.xyz, hit.t) >= kNoHitDistance) continue;
         uint a = floatBitsToUint(node.lo.w);
         uint b = floatBitsToUint(node.hi.w);
         if ((b & kBvhLeafFlag) != 0u) {
@@ -106,7 +106,7 @@ bool traceRay(vec3 origin, vec3 dir, float tMax, out RayHit hit) {
     stack[top++] = 0u;
     while (top > 0) {
         GpuBvhNode node = tlasNodes[stack[--top]];
-        if (intersectBox(origin, invDir, node.lo.xyz, node.hi.xyz, hit.t) > 1.0e38) continue;
+        if (intersectBox(origin, invDir, node.lo.xyz, node.hi.xyz, hit.t) >= kNoHitDistance) continue;
         uint a = floatBitsToUint(node.lo.w);
         uint b = floatBitsToUint(node.hi.w);
         if ((b & kBvhLeafFlag) != 0u) {
@@ -139,8 +139,8 @@ bool overlapsBox(vec3 aLo, vec3 aHi, vec3 bLo, vec3 bHi) {
 bool overlapsInstanceTriangles(uint instanceIndex, vec3 loW, vec3 hiW) {
     GpuInstance inst = instances[instanceIndex];
     // The world box's corners in object space, boxed again.
-    vec3 lo = vec3(3.0e38);
-    vec3 hi = vec3(-3.0e38);
+    vec3 lo = vec3(kNoHitDistance);
+    vec3 hi = vec3(-kNoHitDistance);
     for (int i = 0; i < 8; ++i) {
         vec3 corner = vec3((i & 1) != 0 ? hiW.x : loW.x, (i & 2) != 0 ? hiW.y : loW.y,
                            (i & 4) != 0 ? hiW.z : loW.z);

@@ -55,7 +55,7 @@ void main() {
     for (uint reflections = 1u; reflections <= bounces; ++reflections) {
         vec3 origin = position + dir * uEpsilonM;
         RayHit hit;
-        if (!traceRay(origin, dir, 3.0e38, hit)) break;
+        if (!traceRay(origin, dir, kNoHitDistance, hit)) break;
         position = origin + dir * hit.t;
         travelled += hit.t + uEpsilonM;
         vec3 geometric = computeHitNormal(hit);

@@ -36,7 +36,7 @@ vec3 traceCameraPath(vec2 pixel, inout uint rng) {
     uint bounces = uParams.y;
     for (uint vertex = 1u; ; ++vertex) {
         RayHit hit;
-        if (!traceRay(origin, dir, 3.0e38, hit)) {
+        if (!traceRay(origin, dir, kNoHitDistance, hit)) {
             if (vertex == 1u) radiance += frame.background.rgb; // the background lights nothing
             break;
         }

@@ -30,6 +30,9 @@ ISPM_CONST uint kBvhCountMask = 0x7fffffffu; // hi.w & mask = a leaf's primitive
 ISPM_CONST int kBvhStackSize = 64;
 
 // Binding points (storage buffers), continuing scene_data.h's numbering.
+// A ray's "no limit" and the entry distance of a missed box (bvh.glsl): past every scene.
+ISPM_CONST float kNoHitDistance = 3.0e38f;
+
 ISPM_CONST int kBindingBlasNodes = 7;          // GpuBvhNode, every mesh's bottom level
 ISPM_CONST int kBindingBlasTriangleOrder = 8;  // uint, global triangle index per leaf slot
 ISPM_CONST int kBindingTlasNodes = 9;          // GpuBvhNode, root at 0
