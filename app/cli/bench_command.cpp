@@ -125,21 +125,6 @@ struct BenchReport {
     std::optional<FlickerResult> flicker;
 };
 
-nlohmann::json describeOverrides(const Settings& settings) {
-    nlohmann::json out = nlohmann::json::object();
-    for (const auto& [name, value] : settings.getOverrides()) {
-        const SettingDesc* desc = findSetting(name);
-        if (desc && desc->type == SettingType::Enum) {
-            out[name] = std::string(settings.getEnum(name));
-        } else if (desc && desc->type == SettingType::Int) {
-            out[name] = static_cast<int64_t>(value);
-        } else {
-            out[name] = value;
-        }
-    }
-    return out;
-}
-
 void printJson(const BenchReport& r) {
     nlohmann::json out;
     out["scene"] = r.scenePath;
@@ -379,7 +364,7 @@ int runBench(const BenchOptions& options) {
     settings.merge(report.preset.settings);
     settings.merge(commandLine);
     if (isSweepRequested(options)) return runBenchSweep(options, report.scenePath, scene, settings);
-    report.settings = describeOverrides(settings);
+    report.settings = formatRenderBlock(settings);
 
     auto context = gl::createHeadlessContext();
     const gl::ContextInfo& info = context->getInfo();

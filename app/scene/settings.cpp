@@ -6,6 +6,8 @@
 #include "core/input_error.h"
 #include "core/strings.h"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <array>
 #include <charconv>
@@ -359,6 +361,26 @@ std::string_view Settings::getEnum(std::string_view name) const {
 void Settings::merge(const Settings& other) {
     for (const auto& [name, value] : other.mValues)
         mValues[name] = value;
+}
+
+nlohmann::json formatRenderBlock(const Settings& settings) {
+    nlohmann::json block = nlohmann::json::object();
+    for (const auto& [name, value] : settings.getOverrides()) {
+        const SettingDesc* d = findSetting(name);
+        if (!d) continue; // set() admits table names only
+        switch (d->type) {
+        case SettingType::Enum:
+            block[name] = std::string(settings.getEnum(name));
+            break;
+        case SettingType::Int:
+            block[name] = static_cast<int64_t>(value);
+            break;
+        case SettingType::Float:
+            block[name] = value;
+            break;
+        }
+    }
+    return block;
 }
 
 } // namespace ispm

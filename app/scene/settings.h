@@ -3,6 +3,8 @@
 // and the bench sweeps are all driven by this table.
 #pragma once
 
+#include <nlohmann/json_fwd.hpp>
+
 #include <map>
 #include <span>
 #include <string>
@@ -32,6 +34,11 @@ const SettingDesc* findSetting(std::string_view name);
 // The table as Markdown (name, type, default, range, unit, meaning): what README.md and
 // docs/scene-format.md show between their settings-table markers, and `ispm settings` prints.
 std::string formatSettingsMarkdown();
+
+class Settings;
+// The overrides as a scene file's `render` block: enums by choice name, integers as integers
+// (the viewer's "save", bench's report).
+nlohmann::json formatRenderBlock(const Settings& settings);
 
 // Values that differ from the table's defaults. Values are checked against the table on entry;
 // a bad name or value throws InputError with `where` as context (a file and JSON path, or a flag).

@@ -5,6 +5,7 @@
 #include "core/strings.h"
 
 #include <imgui.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -117,29 +118,9 @@ bool drawSettingsPanel(Settings& settings) {
     return changed;
 }
 
-nlohmann::json buildRenderBlock(const Settings& settings) {
-    nlohmann::json block = nlohmann::json::object();
-    for (const auto& [name, value] : settings.getOverrides()) {
-        const SettingDesc* d = findSetting(name);
-        if (!d) continue;
-        switch (d->type) {
-        case SettingType::Enum:
-            block[name] = std::string(settings.getEnum(name));
-            break;
-        case SettingType::Int:
-            block[name] = static_cast<long long>(value);
-            break;
-        case SettingType::Float:
-            block[name] = value;
-            break;
-        }
-    }
-    return block;
-}
-
 void saveRenderBlock(const std::string& path, const Settings& settings) {
     std::ofstream file(path);
-    const nlohmann::json document = {{"render", buildRenderBlock(settings)}};
+    const nlohmann::json document = {{"render", formatRenderBlock(settings)}};
     file << document.dump(kJsonIndent) << "\n";
     if (!file) throw std::runtime_error(strCat(path, ": cannot write the render block"));
 }

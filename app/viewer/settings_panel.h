@@ -5,7 +5,6 @@
 
 #include "scene/settings.h"
 
-#include <nlohmann/json.hpp>
 
 #include <string>
 #include <string_view>
@@ -21,8 +20,6 @@ bool drawSettingsPanel(Settings& settings);
 // `settings` without an override of `name` (the table default, or derived, applies again).
 Settings removeSetting(const Settings& settings, std::string_view name);
 
-// The overrides as a scene `render` block: enums by choice name, integers as integers.
-nlohmann::json buildRenderBlock(const Settings& settings);
 // Writes {"render": {...}}; throws std::runtime_error naming the path on failure.
 void saveRenderBlock(const std::string& path, const Settings& settings);
 

@@ -7,6 +7,7 @@
 #include "viewer/settings_panel.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 
@@ -140,7 +141,7 @@ TEST(SettingsPanel, RenderBlockRoundTripsThroughTheTable) {
     s.setFromString("tonemap=filmic", "test");
     s.setFromString("photons=20000", "test");
     s.setFromString("exposure=-1.5", "test");
-    const nlohmann::json block = buildRenderBlock(s);
+    const nlohmann::json block = formatRenderBlock(s);
     EXPECT_EQ(block.at("tonemap"), "filmic");
     EXPECT_EQ(block.at("photons"), 20000);
     EXPECT_DOUBLE_EQ(block.at("exposure").get<double>(), -1.5);
