@@ -5,7 +5,6 @@
 
 #include "scene/settings.h"
 
-
 #include <string>
 #include <string_view>
 
