@@ -36,18 +36,6 @@ namespace {
 constexpr int kMinTimedFrames = 1;   // a median needs at least one sample
 constexpr int kMinFlickerFrames = 2; // a standard deviation needs two
 
-// A texture's texels with row 0 at the top (as Image), w kept.
-std::vector<glm::vec4> readTopDown(const gl::Texture& texture) {
-    const std::vector<glm::vec4> texels = texture.readRgba();
-    const auto width = static_cast<size_t>(texture.getWidth());
-    const auto height = static_cast<size_t>(texture.getHeight());
-    std::vector<glm::vec4> out(texels.size());
-    for (size_t y = 0; y < height; ++y) {
-        std::copy_n(texels.begin() + static_cast<std::ptrdiff_t>((height - 1 - y) * width), width,
-                    out.begin() + static_cast<std::ptrdiff_t>(y * width));
-    }
-    return out;
-}
 constexpr int kMinWarmupFrames = 0;
 constexpr double kBytesPerMib = 1024.0 * 1024.0;
 // --animate: the time step of a 60 Hz display, so the motion per frame is what a viewer sees.
@@ -395,7 +383,8 @@ int runBench(const BenchOptions& options) {
         if (options.animate) addSceneUpdateTime(updateMs, times);
         if (flicker) {
             flicker->addFrame(readTextureImage(runner.getAov(Aov::Indirect)),
-                              readTopDown(runner.getViewerGBuffer().getChannel("position")), scene);
+                              readTextureTopDown(runner.getViewerGBuffer().getChannel("position")),
+                              scene);
         }
     }
     if (flicker) report.flicker = flicker->getResult();

@@ -7,8 +7,6 @@
 
 #include <shared/scene_data.h>
 
-#include <algorithm>
-
 namespace ispm {
 namespace {
 
@@ -17,9 +15,8 @@ constexpr GLint kLocationWeight = 0; // shaders/denoise/accumulate.frag
 } // namespace
 
 float computeAccumulateWeight(int accumulate, uint32_t historyFrames) {
-    if (accumulate <= 0 || historyFrames == 0) return 1.0f;
-    if (historyFrames >= static_cast<uint32_t>(accumulate)) return 0.0f; // the history is full
-    return 1.0f / static_cast<float>(historyFrames + 1);
+    if (accumulate <= 0) return 1.0f;
+    return 1.0f / static_cast<float>(historyFrames + 1); // a full history is never drawn to
 }
 
 AccumulatePass::AccumulatePass(const gl::Texture& direct, const gl::Texture& indirect)

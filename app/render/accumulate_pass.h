@@ -15,8 +15,8 @@
 
 namespace ispm {
 
-// The weight of this frame's light: 1 / (frames + 1) while the history holds fewer than
-// `accumulate` frames, 0 once it is full; 1 when accumulation is off or the history is empty.
+// The weight of this frame's light: 1 / (frames + 1), a running mean (FrameRunner draws no
+// frame once the history holds `accumulate`); 1 when accumulation is off or the history empty.
 float computeAccumulateWeight(int accumulate, uint32_t historyFrames);
 
 class AccumulatePass final : public Pass {

@@ -22,8 +22,8 @@ Aov parseAov(const std::string& text, const std::string& where) {
 
 FrameRunner::FrameRunner(const Scene& scene, const Settings& settings, gl::TimingMethod timing)
     : mScene(scene), mSettings(settings), mFrameSettings(resolveFrameSettings(settings)),
-      mBaseSeed(mFrameSettings.seed), mWidth(mFrameSettings.width), mHeight(mFrameSettings.height),
-      mTimer(timing), mGpuScene(scene, mFrameSettings.shadowMapSize),
+      mWidth(mFrameSettings.width), mHeight(mFrameSettings.height), mTimer(timing),
+      mGpuScene(scene, mFrameSettings.shadowMapSize),
       mFrameConstants("frame constants", sizeof(gpu::FrameConstants)) {
     mGBuffer = std::make_unique<GBufferPass>();
     mLightViews = std::make_unique<LightViewPass>();
@@ -67,7 +67,6 @@ ShaderReloadReport FrameRunner::reloadShaders() {
 void FrameRunner::setSettings(const Settings& settings) {
     mSettings = settings;
     mFrameSettings = resolveFrameSettings(settings);
-    mBaseSeed = mFrameSettings.seed;
     mHistoryFrames = 0;
     const int lightResolution = mFrameSettings.shadowMapSize;
     if (lightResolution != mGpuScene.getLightResolution()) {
@@ -86,8 +85,8 @@ void FrameRunner::updateFrameConstants() {
     // Accumulated frames look through new sub-pixel offsets: the average is anti-aliased.
     const glm::vec2 jitter =
         mFrameSettings.accumulate > 0 ? computePixelJitter(mHistoryFrames) : glm::vec2(0.0f);
-    const gpu::FrameConstants fc =
-        computeFrameConstants(mScene, mGpuScene, mFrameSettings, mWidth, mHeight, jitter);
+    const gpu::FrameConstants fc = computeFrameConstants(mScene, mGpuScene, mFrameSettings, mWidth,
+                                                         mHeight, getFrameSeed(), jitter);
     mClipFromWorld = fc.clipFromWorld;
     mFrameConstants.upload(0, sizeof(fc), &fc);
 }
@@ -100,9 +99,14 @@ void FrameRunner::runPass(Pass& pass, const FrameInputs& inputs) {
 }
 
 FrameInputs FrameRunner::getFrameInputs() const {
-    return {mScene,          mGpuScene,      mFrameSettings,
-            mFrameConstants, mClipFromWorld, mScene.camera.position,
-            mWidth,          mHeight,        mHistoryFrames};
+    return {
+        mScene, mGpuScene, mFrameSettings, mFrameConstants, mClipFromWorld, mScene.camera.position,
+        mWidth, mHeight,   mHistoryFrames, getFrameSeed()};
+}
+
+uint32_t FrameRunner::getFrameSeed() const {
+    return mFrameSettings.accumulate > 0 ? mFrameSettings.seed + mHistoryFrames
+                                         : mFrameSettings.seed;
 }
 
 void FrameRunner::updateScene() {
@@ -130,8 +134,6 @@ void FrameRunner::renderFrame() {
         mTimings.clear(); // no pass ran
         return;
     }
-    // Every accumulated frame traces new photons: the seed moves on with the history.
-    mFrameSettings.seed = mFrameSettings.accumulate > 0 ? mBaseSeed + mHistoryFrames : mBaseSeed;
     updateFrameConstants();
     const FrameInputs inputs = getFrameInputs();
     runPass(*mGBuffer, inputs);

@@ -97,13 +97,13 @@ class FrameRunner {
 
     const Scene& mScene;
     Settings mSettings;
-    FrameSettings mFrameSettings; // mSettings resolved; its seed moves on while accumulating
-    uint32_t mBaseSeed = 0;       // the `seed` setting
+    FrameSettings mFrameSettings; // mSettings resolved
     uint32_t mHistoryFrames = 0;  // frames in the accumulated history
     Camera mHistoryCamera;        // the camera they were rendered from
     int mWidth;
     int mHeight;
     void setTimings(const std::vector<gl::PassTimer::Sample>& samples);
+    uint32_t getFrameSeed() const; // FrameInputs::seed
 
     gl::PassTimer mTimer;
     std::vector<PassTiming> mTimings;

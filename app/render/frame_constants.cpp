@@ -39,7 +39,7 @@ glm::vec2 computePixelJitter(uint32_t frame) {
 
 gpu::FrameConstants computeFrameConstants(const Scene& scene, const GpuScene& gpuScene,
                                           const FrameSettings& settings, int width, int height,
-                                          glm::vec2 jitterPx) {
+                                          uint32_t seed, glm::vec2 jitterPx) {
     const Camera& cam = scene.camera;
     float nearM = 0.0f;
     float farM = 0.0f;
@@ -57,7 +57,7 @@ gpu::FrameConstants computeFrameConstants(const Scene& scene, const GpuScene& gp
     fc.imageSize = glm::vec4(width, height, 1.0f / static_cast<float>(width),
                              1.0f / static_cast<float>(height));
     fc.counts = glm::uvec4(gpuScene.getLightCount(),
-                           static_cast<uint32_t>(gpuScene.getLightCameras().size()), settings.seed,
+                           static_cast<uint32_t>(gpuScene.getLightCameras().size()), seed,
                            settings.toneMap);
     fc.shadow = glm::vec4(settings.shadowBiasTexels,
                           static_cast<float>(gpuScene.getLightResolution()), 0.0f, 0.0f);

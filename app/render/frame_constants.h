@@ -15,10 +15,11 @@ void computeCameraRange(const Camera& camera, const Aabb& bounds, float& nearM, 
 
 // The per-frame constants of the scene's camera at width x height (shared by the photon mapper
 // and the reference path tracer, so both see the same camera).
-// `jitterPx` shifts the image by a fraction of a pixel (accumulated frames sample the pixel).
+// `seed` is the frame's (FrameInputs::seed); `jitterPx` shifts the image by a fraction of a
+// pixel (accumulated frames sample the pixel).
 gpu::FrameConstants computeFrameConstants(const Scene& scene, const GpuScene& gpuScene,
                                           const FrameSettings& settings, int width, int height,
-                                          glm::vec2 jitterPx = glm::vec2(0.0f));
+                                          uint32_t seed, glm::vec2 jitterPx = glm::vec2(0.0f));
 
 // The sub-pixel offset of accumulated frame `frame` in [-0.5, 0.5)^2 pixels: none for frame 0,
 // then the Halton (2, 3) sequence, so that N frames cover the pixel evenly.

@@ -58,7 +58,7 @@ void ImportancePass::execute(const FrameInputs& inputs) {
     // light's power alone.
     const float share = inputs.settings.importance;
     gpu::ImportanceParams params{};
-    params.counts = glm::uvec4(across, down, uint32_t(views), inputs.settings.seed);
+    params.counts = glm::uvec4(across, down, uint32_t(views), inputs.seed);
     params.weights = glm::vec4(share, kVisibleWeight, kBounceWeight, inputs.scene.getRayEpsilon());
     mParams.upload(0, sizeof(params), &params);
 

@@ -25,6 +25,9 @@ struct FrameInputs {
     int width = 0;
     int height = 0;
     uint32_t historyFrames = 0; // frames accumulated before this one (AccumulatePass)
+    // This frame's random seed: `seed`, moved on by historyFrames while accumulating, so every
+    // accumulated frame traces new photons.
+    uint32_t seed = 0;
 };
 
 class Pass {

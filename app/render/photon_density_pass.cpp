@@ -62,10 +62,6 @@ void PhotonDensityPass::execute(const FrameInputs& inputs) {
     const size_t clipBytes =
         size_t(std::max(mBuffers.getResultCapacity(), 1u)) * gpu::kClipVec4s * sizeof(glm::vec4);
     if (mClip.getSize() != clipBytes) mClip = gl::Buffer("splat clip distances", clipBytes);
-    // The list starts empty; stage 1 grows its dispatch (x) and count (w).
-    const glm::uvec4 emptyList(0u, 1u, 1u, 0u);
-    mBuffers.getCounters().upload(offsetof(gpu::PhotonCounters, clipDispatch), sizeof(emptyList),
-                                  &emptyList);
     mCells.clearToZero();
     const int neighbours = inputs.settings.splatNeighbours;
     const float scale = inputs.settings.radiusScale;
@@ -91,8 +87,8 @@ void PhotonDensityPass::execute(const FrameInputs& inputs) {
     gl::memoryBarrier(gl::Barrier::Storage);
     glUniform1ui(kLocationStage, kStageRadius);
     gl::dispatchComputeIndirect(mBuffers.getCounters(), dispatchOffset);
-    gl::memoryBarrier(gl::Barrier::Storage);
-    gl::memoryBarrier(gl::Barrier::Command);
+    // Stage 1 wrote the clip list and its dispatch arguments.
+    gl::memoryBarrier(gl::Barrier::Storage | gl::Barrier::Command);
     glUniform1ui(kLocationStage, kStageClip);
     gl::dispatchComputeIndirect(mBuffers.getCounters(),
                                 offsetof(gpu::PhotonCounters, clipDispatch));

@@ -42,8 +42,8 @@ void PhotonTracePass::execute(const FrameInputs& inputs) {
     gl::memoryBarrier(gl::Barrier::Command | gl::Barrier::Storage);
 
     mTrace.use();
-    glUniform4ui(kLocationParams, static_cast<GLuint>(inputs.settings.bounces),
-                 inputs.settings.seed, inputs.settings.rng, 0u);
+    glUniform4ui(kLocationParams, static_cast<GLuint>(inputs.settings.bounces), inputs.seed,
+                 inputs.settings.rng, 0u);
     glUniform1f(kLocationEpsilon, inputs.scene.getRayEpsilon());
     gl::dispatchComputeIndirect(mBuffers.getCounters(),
                                 offsetof(gpu::PhotonCounters, traceDispatch));

@@ -8,5 +8,7 @@
 namespace ispm {
 
 Image readTextureImage(const gl::Texture& texture, int layer = 0);
+// The texels with w kept, row 0 at the top as in Image.
+std::vector<glm::vec4> readTextureTopDown(const gl::Texture& texture, int layer = 0);
 
 } // namespace ispm

@@ -45,7 +45,7 @@ ReferencePass::ReferencePass(const Scene& scene, std::unique_ptr<GpuScene> owned
         gl::Texture::create2D("reference accumulation", gl::Format::RGBA32F, mWidth, mHeight);
     mAccumulation.clear(glm::vec4(0.0f));
     const gpu::FrameConstants fc =
-        computeFrameConstants(scene, mGpuScene, settings, mWidth, mHeight);
+        computeFrameConstants(scene, mGpuScene, settings, mWidth, mHeight, settings.seed);
     mFrameConstants.upload(0, sizeof(fc), &fc);
 }
 

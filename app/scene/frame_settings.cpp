@@ -20,6 +20,8 @@ static_assert(kRngChoices[gpu::kRngPcg] == "pcg" && kRngChoices[gpu::kRngLcg] ==
 static_assert(kRadiusModeChoices[gpu::kRadiusTravel] == "travel");
 static_assert(kRadiusModeChoices[gpu::kRadiusPathDensity] == "path_density");
 static_assert(kRadiusModeChoices[gpu::kRadiusDensity] == "density");
+static_assert(kSplatResolutionChoices[0] == "auto" && kSplatResolutionChoices[2] == "1/2" &&
+              kSplatResolutionChoices[3] == "1/4");
 
 // Photons a splat disc holds by default: enough that one photon's noise averages out over its
 // neighbours' (relative noise ~ 1 / sqrt(k)), few enough to keep detail and the splat's cost,
@@ -64,11 +66,10 @@ int computeSplatNeighbours(const Settings& settings) {
 }
 
 int computeSplatDivisor(const Settings& settings, int width, int height) {
-    const std::string_view choice = settings.getEnum("splat_resolution");
-    if (choice == "1") return 1;
-    if (choice == "1/2") return 2;
-    if (choice == "1/4") return 4;
-    return std::min(width, height) >= kHalfResolutionFromPx ? 2 : 1; // auto
+    // Choices "auto", "1", "1/2", "1/4": choice i > 0 divides by 2^(i - 1).
+    const uint32_t choice = getChoice(settings, "splat_resolution");
+    if (choice > 0) return 1 << (choice - 1);
+    return std::min(width, height) >= kHalfResolutionFromPx ? 2 : 1;
 }
 
 glm::ivec2 computeSplatSize(const Settings& settings, int width, int height) {

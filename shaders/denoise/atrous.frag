@@ -4,10 +4,8 @@
 // first iteration divides the light by the diffuse reflectance, so the filter smooths irradiance
 // and keeps texture and colour edges; the last multiplies it back.
 #include "lib/frame_constants.glsl"
+#include "lib/gbuffer_filter.glsl"
 
-layout(binding = kUnitGBufferFirst + GBUFFER_POSITION) uniform sampler2D uPosition;
-layout(binding = kUnitGBufferFirst + GBUFFER_NORMAL) uniform sampler2D uNormal;
-layout(binding = kUnitGBufferFirst + GBUFFER_DIFFUSE) uniform sampler2D uDiffuse;
 layout(binding = kUnitFilterSource) uniform sampler2D uSource;
 
 layout(location = 0) uniform ivec4 uIteration; // x = step (px), y = 1: demodulate the input,
@@ -16,27 +14,6 @@ layout(location = 0) uniform ivec4 uIteration; // x = step (px), y = 1: demodula
 
 layout(location = 0) out vec4 outRadiance;
 
-// Normal weight cos^64 (10 degrees apart halves a tap), as six squarings.
-float weighNormals(float cosAngle) {
-    float w = max(cosAngle, 0.0);
-    w *= w;
-    w *= w;
-    w *= w;
-    w *= w;
-    w *= w;
-    return w * w;
-}
-const float kPlaneFootprints = 1.0; // off-plane distance, in pixel footprints x step, of e^-1
-const float kMinReflectance = 0.02; // demodulation floor (black surfaces keep their light)
-
-// The viewer G-buffer pixel a filtered pixel stands for: the middle of its block (splat.frag).
-ivec2 getGBufferPixel(ivec2 pixel) {
-    int divisor = uIteration.w;
-    return min(pixel * divisor + divisor / 2, ivec2(frame.imageSize.xy) - 1);
-}
-
-vec3 getReflectance(ivec2 g) { return max(texelFetch(uDiffuse, g, 0).rgb, vec3(kMinReflectance)); }
-
 vec3 readSource(ivec2 pixel, ivec2 g) {
     vec3 c = texelFetch(uSource, pixel, 0).rgb;
     return uIteration.y == 1 ? c / getReflectance(g) : c;
@@ -44,7 +21,7 @@ vec3 readSource(ivec2 pixel, ivec2 g) {
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
-    ivec2 g = getGBufferPixel(pixel);
+    ivec2 g = getBlockGBufferPixel(pixel, uIteration.w);
     vec4 position = texelFetch(uPosition, g, 0);
     vec3 centre = readSource(pixel, g);
     if (position.w < 0.5) {
@@ -52,13 +29,9 @@ void main() {
         return;
     }
     ivec2 size = textureSize(uSource, 0);
-    ivec2 imageSize = ivec2(frame.imageSize.xy);
     vec3 n = texelFetch(uNormal, g, 0).xyz;
-    // A filtered pixel's footprint on its surface: the distance to its neighbour's point.
-    ivec2 beside = g + ivec2(g.x + uIteration.w < imageSize.x ? uIteration.w : -uIteration.w, 0);
-    vec4 besidePosition = texelFetch(uPosition, clamp(beside, ivec2(0), imageSize - 1), 0);
-    float footprint = besidePosition.w >= 0.5 ? length(besidePosition.xyz - position.xyz) : 1e30;
-    float planeScale = 1.0 / max(kPlaneFootprints * footprint * float(uIteration.x), 1e-30);
+    // Footprints of a filtered pixel on its surface, times the step.
+    float planeScale = computePlaneScale(g, position.xyz, uIteration.w) / float(uIteration.x);
     const float kB3[3] = float[3](3.0 / 8.0, 1.0 / 4.0, 1.0 / 16.0);
     vec3 sum = vec3(0.0);
     float weights = 0.0;
@@ -66,13 +39,9 @@ void main() {
         for (int dx = -2; dx <= 2; ++dx) {
             ivec2 q = pixel + ivec2(dx, dy) * uIteration.x;
             if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
-            ivec2 qg = getGBufferPixel(q);
-            vec4 qPosition = texelFetch(uPosition, qg, 0);
-            if (qPosition.w < 0.5) continue;
-            vec3 qNormal = texelFetch(uNormal, qg, 0).xyz;
-            float w = kB3[abs(dx)] * kB3[abs(dy)];
-            w *= weighNormals(dot(n, qNormal));
-            w *= exp(-abs(dot(n, qPosition.xyz - position.xyz)) * planeScale);
+            ivec2 qg = getBlockGBufferPixel(q, uIteration.w);
+            float w = kB3[abs(dx)] * kB3[abs(dy)] * weighTap(qg, n, position.xyz, planeScale);
+            if (w <= 0.0) continue;
             sum += w * readSource(q, qg);
             weights += w;
         }

@@ -6,32 +6,15 @@
 // pixel no buffer pixel shares a surface with (a feature thinner than d pixels) takes the tent
 // alone.
 #include "lib/frame_constants.glsl"
+#include "lib/gbuffer_filter.glsl"
 
-layout(binding = kUnitGBufferFirst + GBUFFER_POSITION) uniform sampler2D uPosition;
-layout(binding = kUnitGBufferFirst + GBUFFER_NORMAL) uniform sampler2D uNormal;
-layout(binding = kUnitGBufferFirst + GBUFFER_DIFFUSE) uniform sampler2D uDiffuse;
 layout(binding = kUnitFilterSource) uniform sampler2D uSource;
 
 layout(location = 0) uniform int uDivisor; // image pixels per buffer pixel along an axis
 
 layout(location = 0) out vec4 outRadiance;
 
-const float kMinReflectance = 0.02; // as atrous.frag
-const float kPlaneFootprints = 1.0; // off-plane distance, in buffer-pixel footprints, of e^-1
-const float kMinWeight = 1e-4;      // below: no buffer pixel shares the surface
-
-// cos^64, as atrous.frag.
-float weighNormals(float cosAngle) {
-    float w = max(cosAngle, 0.0);
-    w *= w;
-    w *= w;
-    w *= w;
-    w *= w;
-    w *= w;
-    return w * w;
-}
-
-vec3 getReflectance(ivec2 g) { return max(texelFetch(uDiffuse, g, 0).rgb, vec3(kMinReflectance)); }
+const float kMinWeight = 1e-4; // below: no buffer pixel shares the surface
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
@@ -40,14 +23,10 @@ void main() {
         outRadiance = vec4(0.0, 0.0, 0.0, 1.0);
         return;
     }
-    ivec2 imageSize = ivec2(frame.imageSize.xy);
     ivec2 size = textureSize(uSource, 0);
     vec3 n = texelFetch(uNormal, pixel, 0).xyz;
-    // The footprint of a buffer pixel on this surface: the distance to the point d pixels over.
-    ivec2 beside = pixel + ivec2(pixel.x + uDivisor < imageSize.x ? uDivisor : -uDivisor, 0);
-    vec4 besidePosition = texelFetch(uPosition, clamp(beside, ivec2(0), imageSize - 1), 0);
-    float footprint = besidePosition.w >= 0.5 ? length(besidePosition.xyz - position.xyz) : 1e30;
-    float planeScale = 1.0 / max(kPlaneFootprints * footprint, 1e-30);
+    // Footprints of a buffer pixel on this surface.
+    float planeScale = computePlaneScale(pixel, position.xyz, uDivisor);
     vec2 at = (vec2(pixel) - float(uDivisor / 2)) / float(uDivisor); // in buffer pixels
     ivec2 first = ivec2(floor(at)) - 1;
     vec3 sum = vec3(0.0);
@@ -60,12 +39,10 @@ void main() {
             if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
             vec2 offset = abs(vec2(q) - at);
             float tent = max(1.0 - 0.5 * offset.x, 0.0) * max(1.0 - 0.5 * offset.y, 0.0);
-            ivec2 qg = min(q * uDivisor + uDivisor / 2, imageSize - 1);
-            vec4 qPosition = texelFetch(uPosition, qg, 0);
-            if (tent <= 0.0 || qPosition.w < 0.5) continue;
+            ivec2 qg = getBlockGBufferPixel(q, uDivisor);
+            if (tent <= 0.0 || texelFetch(uPosition, qg, 0).w < 0.5) continue;
             vec3 irradiance = texelFetch(uSource, q, 0).rgb / getReflectance(qg);
-            float w = tent * weighNormals(dot(n, texelFetch(uNormal, qg, 0).xyz)) *
-                      exp(-abs(dot(n, qPosition.xyz - position.xyz)) * planeScale);
+            float w = tent * weighTap(qg, n, position.xyz, planeScale);
             sum += w * irradiance;
             weights += w;
             tentSum += tent * irradiance;

@@ -130,24 +130,18 @@ vec3 computeHitNormal(RayHit hit) {
     return normalize(transpose(mat3(instances[hit.instance].objectFromWorld)) * n);
 }
 
-// Whether any triangle's bounds and plane both overlap the world-space box [loW, hiW]
-// (conservative: a triangle's bounds and plane, not the triangle). Stops at the first one.
 bool overlapsBox(vec3 aLo, vec3 aHi, vec3 bLo, vec3 bHi) {
     return all(lessThanEqual(aLo, bHi)) && all(lessThanEqual(bLo, aHi));
 }
 
 bool overlapsInstanceTriangles(uint instanceIndex, vec3 loW, vec3 hiW) {
     GpuInstance inst = instances[instanceIndex];
-    // The world box's corners in object space, boxed again.
-    vec3 lo = vec3(kNoHitDistance);
-    vec3 hi = vec3(-kNoHitDistance);
-    for (int i = 0; i < 8; ++i) {
-        vec3 corner = vec3((i & 1) != 0 ? hiW.x : loW.x, (i & 2) != 0 ? hiW.y : loW.y,
-                           (i & 4) != 0 ? hiW.z : loW.z);
-        vec3 p = (inst.objectFromWorld * vec4(corner, 1.0)).xyz;
-        lo = min(lo, p);
-        hi = max(hi, p);
-    }
+    // The world box in object space, boxed again (Arvo: the half extent through |M|).
+    vec3 centre = (inst.objectFromWorld * vec4(0.5 * (loW + hiW), 1.0)).xyz;
+    mat3 m = mat3(inst.objectFromWorld);
+    vec3 half_ = (mat3(abs(m[0]), abs(m[1]), abs(m[2]))) * (0.5 * (hiW - loW));
+    vec3 lo = centre - half_;
+    vec3 hi = centre + half_;
     uint stack[kBvhStackSize];
     int top = 0;
     stack[top++] = inst.range.z;
@@ -167,8 +161,7 @@ bool overlapsInstanceTriangles(uint instanceIndex, vec3 loW, vec3 hiW) {
                 // The triangle's plane must cross the box too (a slanted triangle's bounds
                 // reach far from it).
                 vec3 normal = cross(p1 - p0, p2 - p0);
-                vec3 centre = 0.5 * (lo + hi);
-                if (abs(dot(normal, centre - p0)) <= dot(abs(normal), 0.5 * (hi - lo))) return true;
+                if (abs(dot(normal, centre - p0)) <= dot(abs(normal), half_)) return true;
             }
         } else if (top + 2 <= kBvhStackSize) {
             stack[top++] = a;
@@ -178,6 +171,8 @@ bool overlapsInstanceTriangles(uint instanceIndex, vec3 loW, vec3 hiW) {
     return false;
 }
 
+// Whether any triangle's bounds and plane both overlap the world-space box [loW, hiW]
+// (conservative: a triangle's bounds and plane, not the triangle). Stops at the first one.
 bool overlapsTriangles(vec3 loW, vec3 hiW) {
     if (tlasNodes.length() == 0) return false;
     uint stack[kBvhStackSize];

@@ -30,7 +30,7 @@ layout(location = 0) out vec4 outRadiance;
 void main() {
     if (uSplatModes.y == 1u && gl_FrontFacing) discard; // splat_faces = all
     // A buffer smaller than the image shades the G-buffer pixel at the middle of its block.
-    ivec2 pixel = min(ivec2(gl_FragCoord.xy) * uDivisor + uDivisor / 2, ivec2(frame.imageSize.xy) - 1);
+    ivec2 pixel = getBlockGBufferPixel(ivec2(gl_FragCoord.xy), uDivisor);
     vec4 position = texelFetch(uPosition, pixel, 0);
     if (position.w < 0.5) discard;
     ResultPhoton photon = photons[vPhoton];

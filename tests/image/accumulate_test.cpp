@@ -137,12 +137,11 @@ TEST(AccumulateJitter, HaltonOffsetsInsideThePixel) {
     }
 }
 
-TEST(AccumulateWeight, RunningMeanThenHeld) {
+TEST(AccumulateWeight, RunningMean) {
     EXPECT_EQ(computeAccumulateWeight(0, 5), 1.0f);   // off
     EXPECT_EQ(computeAccumulateWeight(8, 0), 1.0f);   // empty history
     EXPECT_EQ(computeAccumulateWeight(8, 1), 0.5f);   // second frame: mean of two
     EXPECT_EQ(computeAccumulateWeight(8, 7), 0.125f); // the eighth
-    EXPECT_EQ(computeAccumulateWeight(8, 8), 0.0f);   // full: the history holds
 }
 
 } // namespace

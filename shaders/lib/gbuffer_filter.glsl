@@ -1,0 +1,44 @@
+// What the edge-aware filters on the indirect light share (atrous.frag, upsample.frag): the
+// viewer G-buffer channels they read, the weight of a tap on a turned surface or off the
+// pixel's plane, and the reflectance the light is divided by, so they smooth irradiance and
+// keep texture and colour edges. Needs frame_constants.glsl included before.
+
+layout(binding = kUnitGBufferFirst + GBUFFER_POSITION) uniform sampler2D uPosition;
+layout(binding = kUnitGBufferFirst + GBUFFER_NORMAL) uniform sampler2D uNormal;
+layout(binding = kUnitGBufferFirst + GBUFFER_DIFFUSE) uniform sampler2D uDiffuse;
+
+const float kPlaneFootprints = 1.0; // off-plane distance, in tap footprints, of weight e^-1
+const float kMinReflectance = 0.02; // demodulation floor (black surfaces keep their light)
+
+// Normal weight cos^64 (10 degrees apart halves a tap), as six squarings.
+float weighNormals(float cosAngle) {
+    float w = max(cosAngle, 0.0);
+    w *= w;
+    w *= w;
+    w *= w;
+    w *= w;
+    w *= w;
+    return w * w;
+}
+
+vec3 getReflectance(ivec2 g) { return max(texelFetch(uDiffuse, g, 0).rgb, vec3(kMinReflectance)); }
+
+// 1 / (kPlaneFootprints x the distance on the surface of G-buffer pixel g to the point `step`
+// pixels beside it): the off-plane distance over it is a tap's exponent. A pixel alone on its
+// surface gets no plane test.
+float computePlaneScale(ivec2 g, vec3 position, int step) {
+    ivec2 size = ivec2(frame.imageSize.xy);
+    ivec2 beside = g + ivec2(g.x + step < size.x ? step : -step, 0);
+    vec4 besidePosition = texelFetch(uPosition, clamp(beside, ivec2(0), size - 1), 0);
+    float footprint = besidePosition.w >= 0.5 ? length(besidePosition.xyz - position) : 1e30;
+    return 1.0 / max(kPlaneFootprints * footprint, 1e-30);
+}
+
+// A tap at G-buffer pixel q weighed against the surface (n, position): normal and plane tests;
+// 0 where q shows no surface.
+float weighTap(ivec2 q, vec3 n, vec3 position, float planeScale) {
+    vec4 qPosition = texelFetch(uPosition, q, 0);
+    if (qPosition.w < 0.5) return 0.0;
+    return weighNormals(dot(n, texelFetch(uNormal, q, 0).xyz)) *
+           exp(-abs(dot(n, qPosition.xyz - position)) * planeScale);
+}
