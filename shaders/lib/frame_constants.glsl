@@ -11,3 +11,18 @@ layout(std140, binding = kBindingFrameConstants) uniform FrameConstantsBlock {
 ivec2 getBlockGBufferPixel(ivec2 p, int divisor) {
     return min(p * divisor + divisor / 2, ivec2(frame.imageSize.xy) - 1);
 }
+
+// A clip-space position of the image moved into the clip space of a buffer `divisor` times
+// smaller, such that the rasteriser samples buffer pixel p exactly at the centre of its
+// getBlockGBufferPixel (not at the block's centre, half an image pixel away): coverage is
+// tested where the fragment stage shades, so discs of a pixel or two lose nothing.
+vec4 toBlockClip(vec4 clip, int divisor) {
+    if (divisor <= 1) return clip;
+    vec2 image = frame.imageSize.xy;
+    vec2 reduced = vec2((ivec2(image) + divisor - 1) / divisor);
+    // Image pixel x = (ndc + 1) image / 2 must land at buffer pixel (x - divisor / 2 - 0.5) /
+    // divisor + 0.5, buffer ndc = 2 pixel / reduced - 1: an affine map, applied before the divide.
+    vec2 scale = image / (float(divisor) * reduced);
+    vec2 offset = scale + (1.0 - 2.0 * (float(divisor / 2) + 0.5) / float(divisor)) / reduced - 1.0;
+    return vec4(clip.xy * scale + offset * clip.w, clip.zw);
+}

@@ -12,6 +12,7 @@ layout(std430, binding = kBindingPhotonCounters) readonly buffer CounterBuffer {
 layout(std430, binding = kBindingSplatClip) readonly buffer SplatClip { vec4 splatClip[]; };
 
 layout(location = 0) uniform uvec2 uPass; // x = this pass, y = pass count
+layout(location = 3) uniform int uDivisor; // image pixels per buffer pixel along an axis
 
 flat out uint vPhoton;
 flat out float vRadius;
@@ -44,5 +45,5 @@ void main() {
                  (t * (c.x * alongT) + b * (c.y * alongB) + n * (c.z * radius * uSplatShape.z));
     vPhoton = id;
     vRadius = radius;
-    gl_Position = frame.clipFromWorld * vec4(world, 1.0);
+    gl_Position = toBlockClip(frame.clipFromWorld * vec4(world, 1.0), uDivisor);
 }
