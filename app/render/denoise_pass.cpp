@@ -28,7 +28,7 @@ void DenoisePass::execute(const FrameInputs& inputs) {
     const int height = mIndirect.getHeight();
     for (ColorTarget& target : mTargets)
         target.resize(width, height);
-    const int iterations = inputs.settings.denoiseIterations;
+    const int iterations = inputs.progressive.denoiseIterations;
     const int divisor = inputs.settings.splatDivisor;
     if (iterations == 0) {
         mTargets[kOutput].getTexture().copyFrom(mIndirect); // the splats as they are

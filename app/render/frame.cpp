@@ -1,5 +1,6 @@
 // FrameRunner: per-frame constants, pass order, timing.
 #include "render/frame.h"
+#include "render/accumulate_pass.h"
 
 #include "core/input_error.h"
 #include "core/strings.h"
@@ -99,9 +100,18 @@ void FrameRunner::runPass(Pass& pass, const FrameInputs& inputs) {
 }
 
 FrameInputs FrameRunner::getFrameInputs() const {
-    return {
-        mScene, mGpuScene, mFrameSettings, mFrameConstants, mClipFromWorld, mScene.camera.position,
-        mWidth, mHeight,   mHistoryFrames, getFrameSeed()};
+    return {mScene,
+            mGpuScene,
+            mFrameSettings,
+            mFrameConstants,
+            mClipFromWorld,
+            mScene.camera.position,
+            mWidth,
+            mHeight,
+            mHistoryFrames,
+            getFrameSeed(),
+            computeProgressiveStep(mFrameSettings.accumulate, mHistoryFrames,
+                                   mFrameSettings.denoiseIterations)};
 }
 
 uint32_t FrameRunner::getFrameSeed() const {
@@ -134,6 +144,9 @@ void FrameRunner::renderFrame() {
         mTimings.clear(); // no pass ran
         return;
     }
+    // Accumulated frames also move the light cameras inside a texel: shadow edges anti-aliased.
+    mGpuScene.setLightJitter(mFrameSettings.accumulate > 0 ? computeShadowJitter(mHistoryFrames)
+                                                           : glm::vec2(0.0f));
     updateFrameConstants();
     const FrameInputs inputs = getFrameInputs();
     runPass(*mGBuffer, inputs);

@@ -37,6 +37,11 @@ glm::vec2 computePixelJitter(uint32_t frame) {
     return glm::vec2(computeRadicalInverse(frame, 2), computeRadicalInverse(frame, 3)) - 0.5f;
 }
 
+glm::vec2 computeShadowJitter(uint32_t frame) {
+    if (frame == 0) return glm::vec2(0.0f);
+    return glm::vec2(computeRadicalInverse(frame, 5), computeRadicalInverse(frame, 7)) - 0.5f;
+}
+
 gpu::FrameConstants computeFrameConstants(const Scene& scene, const GpuScene& gpuScene,
                                           const FrameSettings& settings, int width, int height,
                                           uint32_t seed, glm::vec2 jitterPx) {

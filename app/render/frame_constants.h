@@ -25,4 +25,10 @@ gpu::FrameConstants computeFrameConstants(const Scene& scene, const GpuScene& gp
 // then the Halton (2, 3) sequence, so that N frames cover the pixel evenly.
 glm::vec2 computePixelJitter(uint32_t frame);
 
+// The light cameras' offset for accumulated frame `frame`, in texels of their G-buffers:
+// (Halton 5, 7) - 1/2, none for frame 0. Bases apart from computePixelJitter's, so the two
+// offsets do not move in step. The average of the frames' shadow tests is the visibility
+// filtered over a texel: shadow edges come out where they are instead of on the texel grid.
+glm::vec2 computeShadowJitter(uint32_t frame);
+
 } // namespace ispm

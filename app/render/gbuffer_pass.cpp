@@ -41,7 +41,7 @@ void LightViewPass::execute(const FrameInputs& inputs) {
         mGBuffer.bindTarget(layer);
         const glm::vec4 eye =
             cam.isOrthographic ? glm::vec4(-cam.axis, 0.0f) : glm::vec4(cam.origin, 1.0f);
-        drawSceneGBuffer(mProgram.get(), inputs.scene, cam.getClipFromWorld(), eye);
+        drawSceneGBuffer(mProgram.get(), inputs.scene, inputs.scene.getLightClipFromWorld(i), eye);
     }
 }
 

@@ -1,6 +1,8 @@
 // Flattening of the scene model into GPU buffers.
 #include "render/gpu_scene.h"
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <span>
@@ -127,20 +129,42 @@ void GpuScene::uploadLights(const Scene& scene) {
         firstView += viewCount;
         lights.push_back(g);
     }
+    if (mLights.getSize() == lights.size() * sizeof(gpu::GpuLight) && mLights.getId() != 0) {
+        mLights.upload<gpu::GpuLight>(lights);
+    } else {
+        mLights = gl::Buffer::fromSpan<gpu::GpuLight>("scene lights", lights);
+    }
+    uploadLightViews();
+}
+
+glm::mat4 GpuScene::getLightClipFromWorld(size_t view) const {
+    // A shift of j texels is 2 j / resolution in normalised device coordinates.
+    const glm::vec2 shift = 2.0f * mLightJitter / static_cast<float>(mLightResolution);
+    return glm::translate(glm::mat4(1.0f), glm::vec3(shift, 0.0f)) *
+           mLightCameras[view].getClipFromWorld();
+}
+
+void GpuScene::setLightJitter(glm::vec2 texels) {
+    if (texels == mLightJitter) return;
+    mLightJitter = texels;
+    uploadLightViews();
+}
+
+void GpuScene::uploadLightViews() {
     std::vector<gpu::GpuLightView> views;
-    for (const LightCamera& cam : mLightCameras) {
+    for (size_t i = 0; i < mLightCameras.size(); ++i) {
+        const LightCamera& cam = mLightCameras[i];
         gpu::GpuLightView v{};
-        v.clipFromWorld = cam.getClipFromWorld();
+        v.clipFromWorld = getLightClipFromWorld(i);
         v.originAxis = glm::vec4(cam.origin, 0.0f);
         v.axisTexel = glm::vec4(cam.axis, cam.isOrthographic ? cam.texelSizeM : cam.texelPerDepth);
         v.info = glm::uvec4(cam.lightIndex, cam.isOrthographic ? 1u : 0u, 0u, 0u);
         views.push_back(v);
     }
-    if (mLights.getSize() == lights.size() * sizeof(gpu::GpuLight) && mLights.getId() != 0) {
-        mLights.upload<gpu::GpuLight>(lights);
+    if (mLightViews.getSize() == views.size() * sizeof(gpu::GpuLightView) &&
+        mLightViews.getId() != 0) {
         mLightViews.upload<gpu::GpuLightView>(views);
     } else {
-        mLights = gl::Buffer::fromSpan<gpu::GpuLight>("scene lights", lights);
         mLightViews = gl::Buffer::fromSpan<gpu::GpuLightView>("light views", views);
     }
 }

@@ -27,6 +27,11 @@ class GpuScene {
     const gpu::GpuInstance& getInstance(uint32_t i) const { return mInstances[i]; }
     const std::vector<LightCamera>& getLightCameras() const { return mLightCameras; }
     uint32_t getLightCount() const { return mLightCount; }
+    // Light camera `view`'s projection, moved by the light jitter (setLightJitter).
+    glm::mat4 getLightClipFromWorld(size_t view) const;
+    // Moves every light camera by `texels` of its G-buffer (accumulated frames'
+    // computeShadowJitter) and re-uploads the light views when that changed.
+    void setLightJitter(glm::vec2 texels);
     int getLightResolution() const { return mLightResolution; }
     const Aabb& getBounds() const { return mBounds; }
     // Total area of every instance's triangles in world space (m^2), for derived splat radii.
@@ -39,10 +44,12 @@ class GpuScene {
 
   private:
     void uploadLights(const Scene& scene);
+    void uploadLightViews();
     void uploadTopLevel();
 
     std::vector<gpu::GpuInstance> mInstances;
     std::vector<LightCamera> mLightCameras;
+    glm::vec2 mLightJitter{0.0f}; // texels (setLightJitter)
     uint32_t mLightCount = 0;
     int mLightResolution = 0;
     Aabb mBounds;

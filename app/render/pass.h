@@ -14,6 +14,14 @@ namespace ispm {
 class GpuScene;
 struct Scene;
 
+// How frame `historyFrames` of an accumulation estimates its light (computeProgressiveStep):
+// as more frames are averaged, bias matters more than one frame's noise.
+struct ProgressiveStep {
+    float radiusFactor = 1.0f;       // multiplies every splat radius
+    float travelRadiusFactor = 0.0f; // density radii at most this times the photon's travel; 0: off
+    int denoiseIterations = 0;       // a-trous iterations of this frame
+};
+
 // What a frame hands every pass.
 struct FrameInputs {
     const Scene& model; // the scene model (lights, materials) the GPU scene was made from
@@ -28,6 +36,7 @@ struct FrameInputs {
     // This frame's random seed: `seed`, moved on by historyFrames while accumulating, so every
     // accumulated frame traces new photons.
     uint32_t seed = 0;
+    ProgressiveStep progressive; // this frame's place in the accumulation
 };
 
 class Pass {

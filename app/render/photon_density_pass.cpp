@@ -25,6 +25,7 @@ constexpr GLint kLocationGrid = 1;
 constexpr GLint kLocationTableMask = 2;
 constexpr GLint kLocationRadiusScale = 3;
 constexpr GLint kLocationEpsilon = 4;
+constexpr GLint kLocationTravelFactor = 5;
 constexpr GLuint kStageCount = 0;
 constexpr GLuint kStageRadius = 1;
 constexpr GLuint kStageClip = 2;
@@ -64,7 +65,7 @@ void PhotonDensityPass::execute(const FrameInputs& inputs) {
     if (mClip.getSize() != clipBytes) mClip = gl::Buffer("splat clip distances", clipBytes);
     mCells.clearToZero();
     const int neighbours = inputs.settings.splatNeighbours;
-    const float scale = inputs.settings.radiusScale;
+    const float scale = inputs.settings.radiusScale * inputs.progressive.radiusFactor;
     const float radiusMin = inputs.settings.radiusMinM.value_or(0.0f) * scale;
     const float even =
         computeEvenRadius(inputs.scene.getSurfaceArea(), inputs.settings.photons, neighbours);
@@ -81,6 +82,7 @@ void PhotonDensityPass::execute(const FrameInputs& inputs) {
     glUniform1ui(kLocationTableMask, slots - 1);
     glUniform1f(kLocationRadiusScale, scale);
     glUniform1f(kLocationEpsilon, inputs.scene.getRayEpsilon());
+    glUniform1f(kLocationTravelFactor, inputs.progressive.travelRadiusFactor);
     const size_t dispatchOffset = offsetof(gpu::PhotonCounters, densityDispatch);
     glUniform1ui(kLocationStage, kStageCount);
     gl::dispatchComputeIndirect(mBuffers.getCounters(), dispatchOffset);

@@ -89,9 +89,11 @@ void SplatPass::execute(const FrameInputs& inputs) {
     mClip.bindBase(gl::BufferTarget::Storage, gpu::kBindingSplatClip);
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
     mViewer.bindTextures(gpu::kUnitGBufferFirst);
-    const SplatRadii r =
+    SplatRadii r =
         computeSplatRadii(inputs.scene.getSurfaceArea(),
                           glm::length(inputs.scene.getBounds().getExtent()), inputs.settings);
+    r.radiusMinM *= inputs.progressive.radiusFactor;
+    r.radiusMaxM *= inputs.progressive.radiusFactor;
     glUniform4f(kLocationRadius, r.radiusMinM, r.radiusMaxM, r.distMinM, r.distMaxM);
     glUniform4f(kLocationShape, 0.0f, 0.0f, inputs.settings.squash, 0.0f);
     glUniform2ui(kLocationModes, inputs.settings.radiusMode, cullInRasteriser ? 0u : 1u);

@@ -208,8 +208,9 @@ const std::vector<SettingDesc>& table() {
          0,
          65536,
          "frames",
-         "temporal accumulation of the indirect light: while the camera, the scene and the "
-         "settings stay as they are, each frame traces new photons (seed + frame) and is "
+         "temporal accumulation of the light: while the camera, the scene and the settings stay "
+         "as they are, each frame traces new photons (seed + frame) through new sub-pixel and "
+         "light-texel offsets, with splat radii and filter shrinking as frames add up, and is "
          "averaged in, up to this many frames; then the image holds and frames cost nothing; "
          "any change starts again; 0 = off (each frame alone)",
          {}},

@@ -37,6 +37,7 @@ layout(location = 1) uniform vec4 uGrid;      // x = finest cell (m), y = neighb
 layout(location = 2) uniform uint uTableMask; // slots - 1 (a power of two)
 layout(location = 3) uniform float uRadiusScale;
 layout(location = 4) uniform float uEpsilonM; // ray offset off a surface (m)
+layout(location = 5) uniform float uTravelFactor; // radius at most this times the travel; 0: off
 
 // The clip rays run this far above the surface, as a fraction of the radius: steps lower than
 // that do not clip a disc, walls do.
@@ -213,6 +214,12 @@ void main() {
     float radius = sqrt(k * power / (kPi * powerDensity)) * uRadiusScale;
     // Never wider than the coarsest block: a lone photon in an empty scene stays finite.
     radius = min(radius, 2.0 * getCellSize(kDensityLevels - 1u));
+    // While frames are averaged: light from a surface d away varies over about d (a wall's foot);
+    // the finest cell keeps a photon that travelled almost nothing from a point-sized disc.
+    if (uTravelFactor > 0.0) {
+        float travel = photons[index].positionDistance.w;
+        radius = min(radius, max(uTravelFactor * travel, getCellSize(0u)));
+    }
     radius = clamp(radius, uGrid.z, uGrid.w);
     if (isOutsideView(p, radius)) {
         photons[index].power.w = 0.0;

@@ -52,7 +52,8 @@ struct DensityRun {
 };
 
 // Runs the density pass alone on `photons`, with the frame of `scene` (camera, BVH).
-DensityRun runDensity(const Scene& scene, std::vector<gpu::ResultPhoton> photons) {
+DensityRun runDensity(const Scene& scene, std::vector<gpu::ResultPhoton> photons,
+                      ProgressiveStep progressive = {}) {
     Settings settings;
     settings.set("width", 32, "test");
     settings.set("height", 32, "test");
@@ -73,7 +74,9 @@ DensityRun runDensity(const Scene& scene, std::vector<gpu::ResultPhoton> photons
     counters.clipDispatch = glm::uvec4(0, 1, 1, 0); // empty, as photon_prepare.comp leaves it
     buffers.getCounters().upload(0, sizeof(counters), &counters);
     PhotonDensityPass density(buffers);
-    density.execute(runner.getFrameInputs());
+    FrameInputs inputs = runner.getFrameInputs();
+    inputs.progressive = progressive;
+    density.execute(inputs);
     return {buffers.getResult().read<gpu::ResultPhoton>(count),
             density.getClip().read<glm::vec4>(size_t(count) * gpu::kClipVec4s)};
 }
@@ -124,6 +127,30 @@ TEST_F(PhotonDensityTest, RadiusHoldsKPhotonsOnAPlaneOfKnownDensity) {
     // off by sqrt(2) (a wrong k or block area).
     EXPECT_NEAR(double(sparse) / expectedSparse, 1.0, 0.2);
     EXPECT_NEAR(double(dense) / expectedDense, 1.0, 0.2);
+}
+
+TEST_F(PhotonDensityTest, AccumulatedFramesShrinkRadiiAndCapThemByTravel) {
+    // 1600 photons / m^2 (radius 0.08 m for 32 neighbours), each 0.24 m from where it bounced.
+    constexpr float kTravelM = 0.24f;
+    std::vector<gpu::ResultPhoton> photons;
+    addSquare(photons, -0.5f, -0.5f, 1.0f, 40, 1u);
+    for (gpu::ResultPhoton& p : photons)
+        p.positionDistance.w = kTravelM;
+    const glm::vec2 lo(-0.25f);
+    const glm::vec2 hi(0.25f);
+    const float plain = computeMedianRadius(runDensity(makeFloorScene(), photons), lo, hi);
+    const float shrunk =
+        computeMedianRadius(runDensity(makeFloorScene(), photons, {.radiusFactor = 0.5f}), lo, hi);
+    // A quarter of the travel (0.06 m) is below the neighbours' radius and above the finest
+    // cell (1/16 of the evenly spread radius, 0.05 m here).
+    const float capped = computeMedianRadius(
+        runDensity(makeFloorScene(), photons, {.travelRadiusFactor = 0.25f}), lo, hi);
+    std::printf("radius %.4f m, shrunk by 0.5: %.4f m, capped at 0.25 travel: %.4f m\n",
+                double(plain), double(shrunk), double(capped));
+    // The same photons and counts: the factor multiplies the radius (float rounding only).
+    EXPECT_NEAR(double(shrunk) / double(plain), 0.5, 1e-3);
+    ASSERT_GT(plain, 0.25f * kTravelM); // else the cap below would not show
+    EXPECT_NEAR(double(capped), 0.25 * double(kTravelM), 1e-4);
 }
 
 TEST_F(PhotonDensityTest, StrongPhotonSpreadsWider) {

@@ -4,12 +4,15 @@
 // later.
 #include "support/gl_fixture.h"
 
+#include "image/metrics.h"
+#include "render/accumulate_pass.h"
 #include "render/frame.h"
 #include "render/readback.h"
 #include "scene/scene_loader.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 namespace ispm::test {
@@ -124,6 +127,55 @@ TEST_F(AccumulateTest, CameraCutAndLightSwitchLeaveNoStaleLight) {
     EXPECT_EQ(largest, 0.0) << "light of the frames before the switch";
 }
 
+TEST_F(AccumulateTest, LightCamerasMoveInsideATexelSoShadowEdgesConverge) {
+    // The sun's patch on the floor of the courtyard's room, drawn from a 256-texel shadow map
+    // over the whole yard (about 15 cm texels): frame 0 draws it in texel-sized steps, the
+    // accumulated frames (light cameras moved inside a texel each frame) approach the patch a
+    // 2048-texel map draws. A small shadow bias: its normal offset (in texels) moves the
+    // patch's edges by as much as the steps, the same in every frame.
+    Scene scene = loadScene(std::string(ISPM_ASSET_DIR) + "/scenes/courtyard.json");
+    selectCamera(scene, "room");
+    auto render = [&scene](int shadowMap, int frames, Image* first) {
+        Settings s = scene.settings;
+        s.set("width", kSize, "test");
+        s.set("height", kSize, "test");
+        s.set("bounces", 0, "test");
+        s.set("shadow_map_size", shadowMap, "test");
+        s.set("shadow_bias", 0.25f, "test"); // the floor is flat and lit at 44 degrees: no acne
+        s.set("accumulate", frames, "test");
+        FrameRunner runner(scene, s, gl::TimingMethod::CpuFinish);
+        for (int f = 0; f < frames; ++f) {
+            runner.renderFrame();
+            if (f == 0 && first) *first = readTextureImage(runner.getFrameLight(Aov::Direct));
+        }
+        return readTextureImage(runner.getAov(Aov::Direct));
+    };
+    constexpr int kFrames = 16;
+    const Image fine = render(2048, kFrames, nullptr);
+    Image coarseFirst;
+    const Image coarse = render(256, kFrames, &coarseFirst);
+    const double firstError = computeRelRmse(coarseFirst, fine, kRelRmseBlock);
+    const double accumulatedError = computeRelRmse(coarse, fine, kRelRmseBlock);
+    std::printf("sun patch from a 256 texel map against 2048: frame 0 %.4f, %d frames %.4f\n",
+                firstError, kFrames, accumulatedError);
+    EXPECT_GT(firstError, 0.05); // the steps are there to remove
+    // Measured 0.315 -> 0.115; the camera's own sub-pixel offsets alone (light cameras held)
+    // leave the steps where they are: 0.314 -> 0.300.
+    EXPECT_LT(accumulatedError, 0.6 * firstError);
+}
+
+TEST(AccumulateJitter, LightOffsetsInsideATexelApartFromThePixels) {
+    EXPECT_EQ(computeShadowJitter(0), glm::vec2(0.0f)); // frame 0 is the plain frame
+    for (uint32_t f = 1; f < 64; ++f) {
+        const glm::vec2 j = computeShadowJitter(f);
+        EXPECT_TRUE(j.x >= -0.5f && j.x < 0.5f && j.y >= -0.5f && j.y < 0.5f) << f;
+        EXPECT_NE(j, computePixelJitter(f)) << f; // not in step with the camera's
+    }
+    // 1/5 and 1/7 minus 1/2, to float rounding.
+    EXPECT_NEAR(computeShadowJitter(1).x, -0.3f, 1e-6f);
+    EXPECT_NEAR(computeShadowJitter(1).y, 1.0f / 7.0f - 0.5f, 1e-6f);
+}
+
 TEST(AccumulateJitter, HaltonOffsetsInsideThePixel) {
     EXPECT_EQ(computePixelJitter(0), glm::vec2(0.0f)); // the first frame is the plain one
     // 1/2, 1/3 and 1/4, 2/3 minus 1/2, to float rounding.
@@ -142,6 +194,36 @@ TEST(AccumulateWeight, RunningMean) {
     EXPECT_EQ(computeAccumulateWeight(8, 0), 1.0f);   // empty history
     EXPECT_EQ(computeAccumulateWeight(8, 1), 0.5f);   // second frame: mean of two
     EXPECT_EQ(computeAccumulateWeight(8, 7), 0.125f); // the eighth
+}
+
+TEST(AccumulateProgressive, RadiiShrinkAndTheFilterNarrowsWithFrames) {
+    // Off, and frame 0: the settings as they are.
+    for (const ProgressiveStep step :
+         {computeProgressiveStep(0, 9, 3), computeProgressiveStep(32, 0, 3)}) {
+        EXPECT_EQ(step.radiusFactor, 1.0f);
+        EXPECT_EQ(step.travelRadiusFactor, 0.0f);
+        EXPECT_EQ(step.denoiseIterations, 3);
+    }
+    // r_i^2 / r_0^2 = prod_{j<i} (j + alpha) / (j + 1), of order i^(alpha - 1): strictly
+    // falling, slower than the 1 / i that would keep as few photons per disc as one frame has.
+    float previous = 1.0f;
+    for (uint32_t i = 1; i < 64; ++i) {
+        const ProgressiveStep step = computeProgressiveStep(64, i, 3);
+        EXPECT_LT(step.radiusFactor, previous) << i;
+        EXPECT_GT(step.radiusFactor * step.radiusFactor, 1.0f / float(i + 1)) << i;
+        EXPECT_GT(step.travelRadiusFactor, 0.0f) << i;
+        previous = step.radiusFactor;
+    }
+    // The second frame: (0 + alpha) / 1.
+    const float alpha = computeProgressiveStep(64, 1, 3).radiusFactor;
+    EXPECT_GT(alpha * alpha, 0.5f);
+    EXPECT_LT(alpha * alpha, 1.0f);
+    // One a-trous iteration fewer at 4, 16, 64 frames (frame index 3, 15, 63), never below 0.
+    EXPECT_EQ(computeProgressiveStep(64, 2, 3).denoiseIterations, 3);
+    EXPECT_EQ(computeProgressiveStep(64, 3, 3).denoiseIterations, 2);
+    EXPECT_EQ(computeProgressiveStep(64, 15, 3).denoiseIterations, 1);
+    EXPECT_EQ(computeProgressiveStep(64, 63, 3).denoiseIterations, 0);
+    EXPECT_EQ(computeProgressiveStep(64, 63, 2).denoiseIterations, 0);
 }
 
 } // namespace
