@@ -144,6 +144,7 @@ void FrameRunner::renderFrame() {
         mTimings.clear(); // no pass ran
         return;
     }
+    mGpuScene.setViewer(mScene, mScene.camera, float(mWidth) / float(mHeight));
     // Accumulated frames also move the light cameras inside a texel: shadow edges anti-aliased.
     mGpuScene.setLightJitter(mFrameSettings.accumulate > 0 ? computeShadowJitter(mHistoryFrames)
                                                            : glm::vec2(0.0f));

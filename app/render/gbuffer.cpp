@@ -16,6 +16,7 @@ constexpr GLint kLocationInstance = 0;
 constexpr GLint kLocationClipFromWorld = 1;
 constexpr GLint kLocationEye = 2;
 
+constexpr int kPositionChannel = 0; // the first of kChannels: a draw buffer count of 1 holds it
 constexpr GBufferChannel kChannels[] = {
     {"position", "GBUFFER_POSITION", gl::Format::RGBA32F,
      "world position in metres; w = 1 on a surface, 0 where nothing was hit"},
@@ -75,8 +76,22 @@ void GBuffer::clear(int layer) const {
     fb.clearDepth(1.0f);
 }
 
-void GBuffer::bindTarget(int layer) const {
-    mTargets[static_cast<size_t>(layer)].bind();
+void GBuffer::bindTarget(int layer) {
+    gl::Framebuffer& fb = mTargets[static_cast<size_t>(layer)];
+    fb.setDrawBufferCount(static_cast<int>(mChannels.size())); // bindPositionTarget narrows it
+    fb.bind();
+}
+
+void GBuffer::clearPositions(int layer) const {
+    const gl::Framebuffer& fb = mTargets[static_cast<size_t>(layer)];
+    fb.clearColor(kPositionChannel, glm::vec4(0.0f));
+    fb.clearDepth(1.0f);
+}
+
+void GBuffer::bindPositionTarget(int layer) {
+    gl::Framebuffer& fb = mTargets[static_cast<size_t>(layer)];
+    fb.setDrawBufferCount(kPositionChannel + 1);
+    fb.bind();
 }
 
 void GBuffer::bindTextures(int firstUnit) const {

@@ -32,7 +32,11 @@ class GBuffer {
     GBuffer(std::string_view label, int width, int height, int layers, bool isArray);
 
     void clear(int layer) const;
-    void bindTarget(int layer) const; // framebuffer of one layer, with viewport
+    void bindTarget(int layer); // framebuffer of one layer (every channel), with viewport
+    // A layer that only the shadow test reads (a shadow-only light view): position and depth
+    // cleared and drawn, the other channels left as they are (a third of the cost on llvmpipe).
+    void clearPositions(int layer) const;
+    void bindPositionTarget(int layer);
     void bindTextures(int firstUnit) const;
     const gl::Texture& getChannel(size_t index) const { return mChannels[index]; }
     const gl::Texture& getChannel(std::string_view name) const;

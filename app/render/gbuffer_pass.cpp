@@ -37,8 +37,13 @@ void LightViewPass::execute(const FrameInputs& inputs) {
     for (size_t i = 0; i < cameras.size(); ++i) {
         const LightCamera& cam = cameras[i];
         const int layer = static_cast<int>(i);
-        mGBuffer.clear(layer);
-        mGBuffer.bindTarget(layer);
+        if (cam.isShadowOnly) {
+            mGBuffer.clearPositions(layer);
+            mGBuffer.bindPositionTarget(layer);
+        } else {
+            mGBuffer.clear(layer);
+            mGBuffer.bindTarget(layer);
+        }
         const glm::vec4 eye =
             cam.isOrthographic ? glm::vec4(-cam.axis, 0.0f) : glm::vec4(cam.origin, 1.0f);
         drawSceneGBuffer(mProgram.get(), inputs.scene, inputs.scene.getLightClipFromWorld(i), eye);

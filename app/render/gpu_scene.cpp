@@ -10,6 +10,9 @@
 namespace ispm {
 namespace {
 
+// Camera rays on the CPU whose first hits fit the sun's shadow view (a few ms in a box city).
+constexpr int kViewerSamplesPerSide = 64;
+
 uint32_t getGpuLightType(LightType type) {
     switch (type) {
     case LightType::Point:
@@ -113,6 +116,21 @@ void GpuScene::updateDynamic(const Scene& scene) {
 void GpuScene::uploadLights(const Scene& scene) {
     mBounds = scene.computeWorldBounds();
     mLightCameras = computeLightCameras(scene, mLightResolution);
+    // Shadow-only views after every light's own, so the emitting views keep their indices.
+    std::vector<uint32_t> fittedView(scene.lights.size(), 0u);
+    if (mViewer) {
+        const std::vector<glm::vec3> visible =
+            sampleVisiblePoints(mBvh, scene, *mViewer, mViewerAspect, kViewerSamplesPerSide);
+        const size_t emitting = mLightCameras.size();
+        for (size_t v = 0; v < emitting; ++v) {
+            const LightCamera sun = mLightCameras[v];
+            if (!sun.isOrthographic) continue;
+            if (std::optional<LightCamera> fine = fitSunView(sun, visible, mLightResolution)) {
+                fittedView[sun.lightIndex] = uint32_t(mLightCameras.size()) + 1u;
+                mLightCameras.push_back(*fine);
+            }
+        }
+    }
     mLightCount = static_cast<uint32_t>(scene.lights.size());
     std::vector<gpu::GpuLight> lights;
     uint32_t firstView = 0;
@@ -125,7 +143,8 @@ void GpuScene::uploadLights(const Scene& scene) {
         g.power = glm::vec4(isSun ? light.irradiance : light.intensity,
                             std::cos(glm::radians(light.innerDeg)));
         const uint32_t viewCount = light.type == LightType::Point ? 6u : 1u;
-        g.views = glm::uvec4(firstView, viewCount, getGpuLightType(light.type), 0u);
+        g.views = glm::uvec4(firstView, viewCount, getGpuLightType(light.type),
+                             fittedView[lights.size()]);
         firstView += viewCount;
         lights.push_back(g);
     }
@@ -142,6 +161,13 @@ glm::mat4 GpuScene::getLightClipFromWorld(size_t view) const {
     const glm::vec2 shift = 2.0f * mLightJitter / static_cast<float>(mLightResolution);
     return glm::translate(glm::mat4(1.0f), glm::vec3(shift, 0.0f)) *
            mLightCameras[view].getClipFromWorld();
+}
+
+void GpuScene::setViewer(const Scene& scene, const Camera& camera, float aspect) {
+    if (mViewer && isSameCamera(*mViewer, camera) && mViewerAspect == aspect) return;
+    mViewer = camera;
+    mViewerAspect = aspect;
+    uploadLights(scene);
 }
 
 void GpuScene::setLightJitter(glm::vec2 texels) {

@@ -10,6 +10,7 @@
 
 #include <shared/scene_data.h>
 
+#include <optional>
 #include <vector>
 
 namespace ispm {
@@ -32,6 +33,9 @@ class GpuScene {
     // Moves every light camera by `texels` of its G-buffer (accumulated frames'
     // computeShadowJitter) and re-uploads the light views when that changed.
     void setLightJitter(glm::vec2 texels);
+    // The viewer the sun's shadows are fitted to (fitSunView, from the points it sees); refits
+    // when the camera or the aspect changed, and with every updateDynamic.
+    void setViewer(const Scene& scene, const Camera& camera, float aspect);
     int getLightResolution() const { return mLightResolution; }
     const Aabb& getBounds() const { return mBounds; }
     // Total area of every instance's triangles in world space (m^2), for derived splat radii.
@@ -49,7 +53,9 @@ class GpuScene {
 
     std::vector<gpu::GpuInstance> mInstances;
     std::vector<LightCamera> mLightCameras;
-    glm::vec2 mLightJitter{0.0f}; // texels (setLightJitter)
+    glm::vec2 mLightJitter{0.0f};  // texels (setLightJitter)
+    std::optional<Camera> mViewer; // setViewer
+    float mViewerAspect = 1.0f;
     uint32_t mLightCount = 0;
     int mLightResolution = 0;
     Aabb mBounds;

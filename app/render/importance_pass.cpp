@@ -38,7 +38,8 @@ ImportancePass::ImportancePass(const GBuffer& viewer, const GBuffer& lights)
       mParams("importance parameters", sizeof(gpu::ImportanceParams)) {}
 
 void ImportancePass::execute(const FrameInputs& inputs) {
-    const size_t views = inputs.scene.getLightCameras().size();
+    const std::vector<LightCamera>& cameras = inputs.scene.getLightCameras();
+    const size_t views = cameras.size();
     if (views == 0) return;
     if (views != mViewCount) {
         mHits = gl::Buffer("importance hits", views * gpu::kImportanceTexels * sizeof(uint32_t));
@@ -78,7 +79,10 @@ void ImportancePass::execute(const FrameInputs& inputs) {
     }
     mCdf.use();
     mPdfMap.bindImage(gpu::kImageImportancePdf, false, true);
-    gl::dispatchCompute(uint32_t(views));
+    // Shadow-only views (after the others) emit no photons: no tables.
+    const auto emitting = static_cast<uint32_t>(std::count_if(
+        cameras.begin(), cameras.end(), [](const LightCamera& c) { return !c.isShadowOnly; }));
+    gl::dispatchCompute(emitting);
     // The emit pass's geometry stage reads the tables; the viewer samples the pdf map.
     gl::memoryBarrier(gl::Barrier::Storage | gl::Barrier::TextureFetch);
 }

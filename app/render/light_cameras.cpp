@@ -2,11 +2,14 @@
 // reach lands in its G-buffer (and shadow map).
 #include "render/light_cameras.h"
 
+#include "bvh/bvh_traversal.h"
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 namespace ispm {
 namespace {
@@ -15,6 +18,13 @@ constexpr float kNearFraction = 1e-4f; // near plane as a fraction of far: depth
 constexpr float kMinNearM = 1e-4f;     // never put the near plane on the eye
 constexpr float kBoundsMargin = 1.01f; // grow fitted volumes so border texels are inside
 constexpr float kPointFaceFovDeg = 90.0f;
+// A fitted sun view is kept when its texels are at least this many times smaller.
+constexpr float kMinSunRefinement = 1.5f;
+// Around the visible samples: this fraction of the fitted square on each side (the surface
+// between two samples, up to a grid step, may reach further out).
+constexpr float kFitMargin = 0.08f;
+// Samples left out at each end of each axis of the fit (fitSunView).
+constexpr float kFitOutlierShare = 0.03f;
 
 glm::vec3 pickUp(const glm::vec3& axis) {
     // Any vector not parallel to the axis; +y unless the axis is (nearly) vertical.
@@ -48,6 +58,65 @@ LightCamera makePerspective(uint32_t lightIndex, const glm::vec3& eye, const glm
 }
 
 } // namespace
+
+std::vector<glm::vec3> sampleVisiblePoints(const BvhScene& bvh, const Scene& scene,
+                                           const Camera& camera, float aspect, int raysPerSide) {
+    const glm::mat4 worldFromView = glm::inverse(computeViewFromWorld(camera));
+    const float tanHalf = std::tan(glm::radians(camera.fovYDeg) * 0.5f);
+    std::vector<glm::vec3> points;
+    for (int j = 0; j < raysPerSide; ++j) {
+        for (int i = 0; i < raysPerSide; ++i) {
+            // Cell centres of the image, in [-1, 1].
+            const float x =
+                (2.0f * (float(i) + 0.5f) / float(raysPerSide) - 1.0f) * tanHalf * aspect;
+            const float y = (2.0f * (float(j) + 0.5f) / float(raysPerSide) - 1.0f) * tanHalf;
+            Ray ray;
+            ray.origin = camera.position;
+            ray.direction = glm::normalize(glm::vec3(worldFromView * glm::vec4(x, y, -1.0f, 0.0f)));
+            if (const std::optional<Hit> hit = intersect(bvh, scene, ray))
+                points.push_back(ray.origin + hit->t * ray.direction);
+        }
+    }
+    return points;
+}
+
+std::optional<LightCamera> fitSunView(const LightCamera& sun, const std::vector<glm::vec3>& visible,
+                                      int resolution) {
+    if (!sun.isOrthographic || visible.empty()) return std::nullopt;
+    // Per axis, the samples between two quantiles: a few far points (the yard seen through a
+    // door) would widen the square for all; the shadow test takes the sun's own view for them.
+    std::array<std::vector<float>, 2> axes;
+    for (const glm::vec3& p : visible) {
+        const glm::vec2 v(sun.viewFromWorld * glm::vec4(p, 1.0f));
+        axes[0].push_back(v.x);
+        axes[1].push_back(v.y);
+    }
+    const auto trimmed = size_t(kFitOutlierShare * float(visible.size()));
+    glm::vec2 lo(0.0f);
+    glm::vec2 hi(0.0f);
+    for (int a = 0; a < 2; ++a) {
+        std::vector<float>& values = axes[size_t(a)];
+        std::sort(values.begin(), values.end());
+        lo[a] = values[trimmed];
+        hi[a] = values[values.size() - 1 - trimmed];
+    }
+    const glm::vec2 centre = 0.5f * (lo + hi);
+    const float half = 0.5f * std::max(hi.x - lo.x, hi.y - lo.y) * (1.0f + 2.0f * kFitMargin) +
+                       sun.texelSizeM; // at least a texel of the sun's own around a lone point
+    const float sunHalf = 0.5f * sun.texelSizeM * float(resolution);
+    if (half * kMinSunRefinement > sunHalf) return std::nullopt;
+    LightCamera fine = sun;
+    fine.isShadowOnly = true;
+    // The sun's own projection is symmetric about its axis: keep its depth range, move the
+    // square.
+    // (glm::ortho: m22 = -2 / (far - near), m32 = -(far + near) / (far - near).)
+    const float nearM = (sun.clipFromView[3][2] + 1.0f) / sun.clipFromView[2][2];
+    const float farM = (sun.clipFromView[3][2] - 1.0f) / sun.clipFromView[2][2];
+    fine.clipFromView =
+        glm::ortho(centre.x - half, centre.x + half, centre.y - half, centre.y + half, nearM, farM);
+    fine.texelSizeM = 2.0f * half / float(resolution);
+    return fine;
+}
 
 void computeDepthRange(const Aabb& bounds, const glm::vec3& eye, const glm::vec3& axis,
                        float& nearM, float& farM) {

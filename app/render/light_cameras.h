@@ -3,10 +3,12 @@
 // Pure math (no GL), so it is unit-tested on its own.
 #pragma once
 
+#include "bvh/bvh_scene.h"
 #include "scene/scene.h"
 
 #include <glm/glm.hpp>
 
+#include <optional>
 #include <vector>
 
 namespace ispm {
@@ -20,11 +22,27 @@ struct LightCamera {
     bool isOrthographic = false;
     float texelPerDepth = 0.0f; // perspective: texel size (m) per metre of depth
     float texelSizeM = 0.0f;    // orthographic: texel size in metres
+    // A shadow-only view (fitSunView): drawn into the light G-buffer and read by the shadow test,
+    // never a source of photons.
+    bool isShadowOnly = false;
     glm::mat4 getClipFromWorld() const { return clipFromView * viewFromWorld; }
 };
 
 // All light cameras of the scene in light order; `resolution` is the light G-buffer size.
 std::vector<LightCamera> computeLightCameras(const Scene& scene, int resolution);
+
+// Surface points the viewer sees: the first hits of a raysPerSide x raysPerSide grid of camera
+// rays through the image (aspect = width / height), traced on the CPU.
+std::vector<glm::vec3> sampleVisiblePoints(const BvhScene& bvh, const Scene& scene,
+                                           const Camera& camera, float aspect, int raysPerSide);
+
+// The sun's second, finer camera (the thesis's sun cascades, §7.2): the scene-wide `sun` view
+// narrowed to a square around `visible` (the points the viewer sees, sampleVisiblePoints) in
+// the sun's image plane, with a margin for what lies between the samples; same direction and
+// depth range, so every occluder between the sun and those points is in it. None when the
+// square would not be finer than the sun's own by kMinSunRefinement, or nothing is visible.
+std::optional<LightCamera> fitSunView(const LightCamera& sun, const std::vector<glm::vec3>& visible,
+                                      int resolution);
 
 // Near/far planes that enclose `bounds` as seen from `eye` along `axis`.
 void computeDepthRange(const Aabb& bounds, const glm::vec3& eye, const glm::vec3& axis,

@@ -86,10 +86,11 @@ std::vector<EmissionGrid> computeEmissionGrids(const Scene& scene,
     const std::vector<double> shares = computeLightShares(scene, cameras, resolution);
     std::vector<uint32_t> viewsPerLight(scene.lights.size(), 0);
     for (const LightCamera& cam : cameras)
-        ++viewsPerLight[cam.lightIndex];
+        if (!cam.isShadowOnly) ++viewsPerLight[cam.lightIndex];
     std::vector<EmissionGrid> grids;
     uint32_t first = 0;
     for (uint32_t v = 0; v < cameras.size(); ++v) {
+        if (cameras[v].isShadowOnly) continue; // a shadow map, no photons
         const uint32_t light = cameras[v].lightIndex;
         const double perView = double(photons) * shares[light] / viewsPerLight[light];
         if (perView < 0.5) continue;

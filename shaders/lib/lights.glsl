@@ -47,8 +47,21 @@ uint selectLightView(GpuLight light, vec3 positionW) {
 // 1 if nothing in the light's G-buffer lies between the light and the point, else 0. The point
 // is pushed off its surface along the normal and compared with a depth bias, both measured in
 // light-camera texels at the point's depth, so the bias scales with the shadow map's resolution.
+// The view whose shadow map holds `positionW`: the sun's fitted view (finer, around what the
+// viewer sees) where the point lies inside it, a few texels from its border, else
+// selectLightView's.
+uint selectShadowView(GpuLight light, vec3 positionW) {
+    if (light.views.w != 0u) {
+        uint fine = light.views.w - 1u;
+        vec4 clip = lightViews[fine].clipFromWorld * vec4(positionW, 1.0);
+        float inside = 1.0 - 4.0 / frame.shadow.y; // the normal offset and jitter stay inside
+        if (all(lessThan(abs(clip.xy / clip.w), vec2(inside)))) return fine;
+    }
+    return selectLightView(light, positionW);
+}
+
 float computeVisibility(GpuLight light, vec3 positionW, vec3 normalW) {
-    uint viewIndex = selectLightView(light, positionW);
+    uint viewIndex = selectShadowView(light, positionW);
     GpuLightView view = lightViews[viewIndex];
     vec3 axis = view.axisTexel.xyz;
     bool ortho = view.info.y == 1u;

@@ -42,7 +42,8 @@ struct GpuLight {
     vec4 position;     // xyz position (point, spot), w unused
     vec4 directionCos; // xyz unit axis (spot) or travel direction (sun), w = cos(outer)
     vec4 power;        // rgb intensity W/sr (point, spot) or irradiance W/m^2 (sun), w = cos(inner)
-    uvec4 views;       // x = first light view, y = view count (6 for a point light), z = type
+    uvec4 views;       // x = first light view, y = view count (6 for a point light), z = type,
+                       // w = the sun's fitted shadow-only view + 1 (0: none)
                        // (kLight*)
 };
 ISPM_STATIC_ASSERT_SIZE(GpuLight, 64);

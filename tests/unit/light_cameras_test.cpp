@@ -1,6 +1,8 @@
 // Light cameras: every surface a light can reach must land inside its camera's image.
 #include "render/light_cameras.h"
 
+#include "bvh/bvh_scene.h"
+
 #include <gtest/gtest.h>
 
 #include <glm/gtc/constants.hpp>
@@ -52,6 +54,53 @@ TEST(LightCameras, SunOrthographicEnclosesSceneBounds) {
         cams[0], b.getCenter() + glm::normalize(glm::cross(sun.direction, glm::vec3(0, 0, 1))) *
                                      cams[0].texelSizeM);
     EXPECT_NEAR(glm::length(glm::vec2(moved - a)), 2.0f / 256.0f, 1e-4f);
+}
+
+TEST(LightCameras, FittedSunViewIsFinerAndHoldsWhatTheViewerSees) {
+    Scene scene = makeBoxScene();
+    Light light;
+    light.type = LightType::Sun;
+    light.direction = glm::normalize(glm::vec3(0.4f, -1.0f, 0.3f));
+    scene.lights.push_back(light);
+    const LightCamera sun = computeLightCameras(scene, 256).at(0);
+    // A viewer that sees a 1 m patch of the 12 m x 12 m slope.
+    std::vector<glm::vec3> visible;
+    for (int i = 0; i <= 4; ++i)
+        for (int j = 0; j <= 4; ++j)
+            visible.push_back(glm::vec3(1.0f + 0.25f * float(i), (8.0f + 0.25f * float(j)) / 3.0f,
+                                        5.0f + 0.25f * float(j))); // on the slope
+    const std::optional<LightCamera> fine = fitSunView(sun, visible, 256);
+    ASSERT_TRUE(fine.has_value());
+    EXPECT_TRUE(fine->isShadowOnly);
+    EXPECT_FALSE(sun.isShadowOnly);
+    EXPECT_EQ(fine->lightIndex, sun.lightIndex);
+    // The patch (1.4 m across seen from the sun, with margins) against a 19 m square.
+    EXPECT_LT(fine->texelSizeM, sun.texelSizeM / 8.0f);
+    for (const glm::vec3& p : visible) {
+        const glm::vec3 ndc = projectToNdc(*fine, p);
+        // Inside, and off the border (the shadow test keeps to 1 - 4 texels).
+        EXPECT_LT(std::max(std::abs(ndc.x), std::abs(ndc.y)), 1.0f - 8.0f / 256.0f);
+        // The same depth as in the sun's own view: every occluder it holds is held.
+        EXPECT_NEAR(ndc.z, projectToNdc(sun, p).z, 1e-4f);
+    }
+    // A viewer that sees the whole slope gains too little: no second view, nor with nothing.
+    const std::vector<glm::vec3> everything = {{-5, 0, -3}, {7, 0, -3}, {7, 4, 9}, {-5, 4, 9}};
+    EXPECT_FALSE(fitSunView(sun, everything, 256).has_value());
+    EXPECT_FALSE(fitSunView(sun, {}, 256).has_value());
+}
+
+TEST(LightCameras, VisiblePointsAreTheViewersFirstHits) {
+    Scene scene = makeBoxScene();
+    const BvhScene bvh = buildSceneBvh(scene);
+    Camera camera;
+    camera.position = {1.0f, 10.0f, 3.0f};
+    camera.target = {1.0f, 2.0f, 3.0f}; // straight down onto the slope y = (z + 3) / 3
+    camera.up = {0.0f, 0.0f, 1.0f};
+    camera.fovYDeg = 30.0f;
+    const std::vector<glm::vec3> points = sampleVisiblePoints(bvh, scene, camera, 1.0f, 8);
+    ASSERT_EQ(points.size(), 64u); // every ray meets the slope
+    for (const glm::vec3& p : points)
+        EXPECT_NEAR(p.y, (p.z + 3.0f) / 3.0f, 1e-4f); // on the slope
 }
 
 TEST(LightCameras, SpotFrustumContainsItsCone) {
