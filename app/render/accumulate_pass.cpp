@@ -1,5 +1,5 @@
-// Accumulation: one full-screen draw mixing this frame's indirect light into the history, then a
-// copy of the result into the history for the next frame.
+// Accumulation: one full-screen draw mixing this frame's direct and indirect light into their
+// histories, then a copy of the result into the history for the next frame.
 #include "render/accumulate_pass.h"
 
 #include "gl/gl.h"

@@ -1,4 +1,7 @@
-// Total radiance = direct + indirect + emission, or the background where no surface is.
+// Total radiance = direct + indirect + emission, and the background where no surface is. The
+// direct light's alpha is the share of the pixel a surface covers (1 or 0 in one frame; averaged
+// over accumulated frames, whose sub-pixel offsets move silhouettes), so silhouettes against the
+// background come out anti-aliased too.
 #include "lib/frame_constants.glsl"
 
 layout(binding = kUnitGBufferFirst + GBUFFER_POSITION) uniform sampler2D uPosition;
@@ -10,11 +13,11 @@ layout(location = 0) out vec4 outRadiance;
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
-    if (texelFetch(uPosition, pixel, 0).w < 0.5) {
-        outRadiance = vec4(frame.background.rgb, 1.0);
-        return;
-    }
-    vec3 radiance = texelFetch(uDirect, pixel, 0).rgb + texelFetch(uIndirect, pixel, 0).rgb +
-                    texelFetch(uEmission, pixel, 0).rgb;
+    vec4 direct = texelFetch(uDirect, pixel, 0);
+    float coverage = clamp(direct.a, 0.0, 1.0);
+    vec3 radiance = frame.background.rgb * (1.0 - coverage);
+    if (coverage > 0.0) radiance += direct.rgb + texelFetch(uIndirect, pixel, 0).rgb;
+    // This frame's emission where this frame sees a surface.
+    if (texelFetch(uPosition, pixel, 0).w >= 0.5) radiance += texelFetch(uEmission, pixel, 0).rgb;
     outRadiance = vec4(radiance, 1.0);
 }

@@ -1,4 +1,4 @@
-// Temporal accumulation (AccumulatePass): this frame's indirect light mixed into the history with
+// Temporal accumulation (AccumulatePass): this frame's light mixed into the history with
 // weight uWeight (1 / frames of a running mean, or 1 / accumulate).
 #include "lib/frame_constants.glsl"
 
@@ -11,7 +11,8 @@ layout(location = 0) out vec4 outRadiance;
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
-    vec3 current = texelFetch(uCurrent, pixel, 0).rgb;
-    vec3 history = texelFetch(uHistory, pixel, 0).rgb;
-    outRadiance = vec4(mix(history, current, uWeight), 1.0);
+    // Alpha too: the direct light's is the pixel's surface coverage (compose.frag).
+    vec4 current = texelFetch(uCurrent, pixel, 0);
+    vec4 history = texelFetch(uHistory, pixel, 0);
+    outRadiance = mix(history, current, uWeight);
 }

@@ -16,7 +16,7 @@ void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec4 position = texelFetch(uPosition, pixel, 0);
     if (position.w < 0.5) {
-        outRadiance = vec4(0.0);
+        outRadiance = vec4(0.0); // alpha: no surface covers the pixel (compose.frag)
         return;
     }
     vec3 n = texelFetch(uNormal, pixel, 0).xyz;
