@@ -1,6 +1,7 @@
 // `ispm bench --sweep` contract: a tiny sweep writes one CSV row per configuration and per path-
 // tracer checkpoint with finite numbers, tools/plot_bench.py turns it into a PNG, and bad inputs
-// (reference size, unknown setting, missing file) exit 2 with one line before any rendering.
+// (reference size, unknown setting, missing file) exit 2 with one line before any rendering; the
+// same for tools/converge.sh and tools/plot_converge.py (error against accumulated frames).
 #include "image/image_io.h"
 #include "support/run_ispm.h"
 
@@ -208,6 +209,64 @@ TEST_F(BenchSweepTest, TinySweepWritesCsvWithExpectedRowsAndPngChart) {
     std::array<char, 8> magic{};
     in.read(magic.data(), magic.size());
     EXPECT_EQ(std::string(magic.data(), magic.size()), std::string("\x89PNG\r\n\x1a\n", 8));
+}
+
+TEST_F(BenchSweepTest, ConvergeScriptWritesRowsAndChart) {
+    // tools/converge.sh renders --accumulate N for each N against a reference's indirect light;
+    // tools/plot_converge.py draws the rows.
+    const std::string size =
+        " --width " + std::to_string(kSizePx) + " --height " + std::to_string(kSizePx);
+    const std::string ref3 = (mDir / "ref3.pfm").string();
+    const std::string ref0 = (mDir / "ref0.pfm").string();
+    for (const auto& [path, bounces] : {std::pair{ref3, 3}, std::pair{ref0, 0}}) {
+        const RunResult r = runIspm("render " + mScene + " --mode reference --spp " +
+                                        std::to_string(kReferenceSpp) + " --bounces " +
+                                        std::to_string(bounces) + size + " -o " + path,
+                                    true);
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+    }
+    const std::filesystem::path tools =
+        std::filesystem::path(ISPM_TEST_DATA_DIR).parent_path() / "tools";
+    const std::string csvPath = (mDir / "converge.csv").string();
+    std::ofstream(csvPath) << "label,frames,energy,rel_rmse4\n";
+    const RunResult converge =
+        runCommand("bash " + (tools / "converge.sh").string() + " " + ISPM_EXECUTABLE + " room " +
+                       mScene + " '' " + ref3 + " " + ref0 + " 1 4 -- --set photons=4000" +
+                       kSmallLights + " >> " + csvPath,
+                   true);
+    ASSERT_EQ(converge.exitCode, 0) << converge.output;
+    std::vector<std::string> header;
+    const std::vector<CsvRow> rows = readCsv(csvPath, header);
+    ASSERT_EQ(rows.size(), 2u);
+    for (const CsvRow& row : rows) {
+        EXPECT_EQ(row.at("label"), "room");
+        // Indirect light of the closed room: within 30% of the 16 spp reference's (4,000
+        // photons and 16 spp are both noisy at 24 px), and a finite error.
+        EXPECT_NEAR(toNumber(row, "energy"), 1.0, 0.3) << row.at("frames");
+        EXPECT_TRUE(isPositive(toNumber(row, "rel_rmse4"))) << row.at("frames");
+    }
+    EXPECT_EQ(toNumber(rows[0], "frames"), 1.0);
+    EXPECT_EQ(toNumber(rows[1], "frames"), 4.0);
+    const std::string png = (mDir / "converge.png").string();
+    const RunResult plot = runCommand("/usr/bin/python3 " + (tools / "plot_converge.py").string() +
+                                          " " + csvPath + " " + png,
+                                      true);
+    ASSERT_EQ(plot.exitCode, 0) << plot.output;
+    EXPECT_GT(std::filesystem::file_size(png), kMinPngBytes);
+    // Bad input: a frame count that is not one, a CSV that is not the script's.
+    const RunResult badFrames =
+        runCommand("bash " + (tools / "converge.sh").string() + " " + ISPM_EXECUTABLE + " room " +
+                       mScene + " '' " + ref3 + " " + ref0 + " 0",
+                   true);
+    EXPECT_EQ(badFrames.exitCode, 2) << badFrames.output;
+    EXPECT_NE(badFrames.output.find("frame count '0'"), std::string::npos) << badFrames.output;
+    const std::string wrong = (mDir / "wrong.csv").string();
+    std::ofstream(wrong) << "kind,spp\nispm,1\n";
+    const RunResult badCsv = runCommand(
+        "/usr/bin/python3 " + (tools / "plot_converge.py").string() + " " + wrong + " " + png,
+        true);
+    EXPECT_EQ(badCsv.exitCode, 2) << badCsv.output;
+    EXPECT_NE(badCsv.output.find("expected columns"), std::string::npos) << badCsv.output;
 }
 
 TEST_F(BenchSweepTest, BadInputsExitTwoWithOneLine) {
