@@ -23,6 +23,8 @@ constexpr float kMinSunRefinement = 1.5f;
 // Around the visible samples: this fraction of the fitted square on each side (the surface
 // between two samples, up to a grid step, may reach further out).
 constexpr float kFitMargin = 0.08f;
+// Sizes a fitted sun view may take per halving of its size (fitSunView).
+constexpr float kFitSizeSteps = 4.0f;
 // Samples left out at each end of each axis of the fit (fitSunView).
 constexpr float kFitOutlierShare = 0.03f;
 
@@ -100,11 +102,17 @@ std::optional<LightCamera> fitSunView(const LightCamera& sun, const std::vector<
         lo[a] = values[trimmed];
         hi[a] = values[values.size() - 1 - trimmed];
     }
-    const glm::vec2 centre = 0.5f * (lo + hi);
-    const float half = 0.5f * std::max(hi.x - lo.x, hi.y - lo.y) * (1.0f + 2.0f * kFitMargin) +
-                       sun.texelSizeM; // at least a texel of the sun's own around a lone point
+    const float fitted = 0.5f * std::max(hi.x - lo.x, hi.y - lo.y) * (1.0f + 2.0f * kFitMargin) +
+                         sun.texelSizeM; // at least a texel of the sun's own around a lone point
     const float sunHalf = 0.5f * sun.texelSizeM * float(resolution);
-    if (half * kMinSunRefinement > sunHalf) return std::nullopt;
+    if (fitted * kMinSunRefinement > sunHalf) return std::nullopt;
+    // Stable under small changes (an object moving, the camera creeping): the size rounded up to
+    // sunHalf / 2^(k / kFitSizeSteps), the centre snapped to whole texels, so shadow edges stay
+    // on the same texel grid from frame to frame instead of crawling.
+    const float steps = std::floor(-std::log2(fitted / sunHalf) * kFitSizeSteps);
+    const float half = sunHalf * std::exp2(-steps / kFitSizeSteps);
+    const float texel = 2.0f * half / float(resolution);
+    const glm::vec2 centre = glm::round(0.5f * (lo + hi) / texel) * texel;
     LightCamera fine = sun;
     fine.isShadowOnly = true;
     // The sun's own projection is symmetric about its axis: keep its depth range, move the
@@ -114,7 +122,7 @@ std::optional<LightCamera> fitSunView(const LightCamera& sun, const std::vector<
     const float farM = (sun.clipFromView[3][2] - 1.0f) / sun.clipFromView[2][2];
     fine.clipFromView =
         glm::ortho(centre.x - half, centre.x + half, centre.y - half, centre.y + half, nearM, farM);
-    fine.texelSizeM = 2.0f * half / float(resolution);
+    fine.texelSizeM = texel;
     return fine;
 }
 

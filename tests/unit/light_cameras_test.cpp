@@ -83,6 +83,20 @@ TEST(LightCameras, FittedSunViewIsFinerAndHoldsWhatTheViewerSees) {
         // The same depth as in the sun's own view: every occluder it holds is held.
         EXPECT_NEAR(ndc.z, projectToNdc(sun, p).z, 1e-4f);
     }
+    // Stable: the same points moved a little (an object moving, the camera creeping) give the
+    // same texel size and a square moved by whole texels, so the texel grid, and the shadow
+    // edges on it, stay put.
+    std::vector<glm::vec3> moved = visible;
+    for (glm::vec3& p : moved)
+        p += glm::vec3(0.013f, 0.0f, 0.021f);
+    moved.push_back(visible.back() + glm::vec3(0.05f, 0.0f, 0.0f)); // and the patch a bit wider
+    const std::optional<LightCamera> again = fitSunView(sun, moved, 256);
+    ASSERT_TRUE(again.has_value());
+    EXPECT_EQ(again->texelSizeM, fine->texelSizeM);
+    const glm::vec2 shiftTexels =
+        (glm::vec2(again->clipFromView[3]) - glm::vec2(fine->clipFromView[3])) * 0.5f * 256.0f;
+    EXPECT_NEAR(shiftTexels.x, std::round(shiftTexels.x), 1e-2f);
+    EXPECT_NEAR(shiftTexels.y, std::round(shiftTexels.y), 1e-2f);
     // A viewer that sees the whole slope gains too little: no second view, nor with nothing.
     const std::vector<glm::vec3> everything = {{-5, 0, -3}, {7, 0, -3}, {7, 4, 9}, {-5, 4, 9}};
     EXPECT_FALSE(fitSunView(sun, everything, 256).has_value());
