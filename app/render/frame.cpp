@@ -54,6 +54,7 @@ std::array<Pass*, 13> FrameRunner::getPasses() const {
 }
 
 void FrameRunner::resizePasses() {
+    mImportanceStale = true;
     for (Pass* pass : getPasses())
         pass->resize(mWidth, mHeight);
 }
@@ -67,6 +68,7 @@ ShaderReloadReport FrameRunner::reloadShaders() {
 
 void FrameRunner::setSettings(const Settings& settings) {
     mSettings = settings;
+    mImportanceStale = true;
     mFrameSettings = resolveFrameSettings(settings);
     mHistoryFrames = 0;
     const int lightResolution = mFrameSettings.shadowMapSize;
@@ -115,6 +117,9 @@ FrameInputs FrameRunner::getFrameInputs() const {
 }
 
 uint32_t FrameRunner::getFrameSeed() const {
+    // per_frame: new numbers every frame drawn (the thesis's prototype); the others keep them
+    // while the view holds, and move on only to add frames to an accumulation.
+    if (mFrameSettings.rngMode == gpu::kRngPerFrame) return mFrameSettings.seed + mFramesDrawn;
     return mFrameSettings.accumulate > 0 ? mFrameSettings.seed + mHistoryFrames
                                          : mFrameSettings.seed;
 }
@@ -125,6 +130,7 @@ void FrameRunner::updateScene() {
 }
 
 void FrameRunner::rebuildScene() {
+    mImportanceStale = true;
     mGpuScene = GpuScene(mScene, mGpuScene.getLightResolution());
     mHistoryFrames = 0;
 }
@@ -153,7 +159,18 @@ void FrameRunner::renderFrame() {
     runPass(*mGBuffer, inputs);
     runPass(*mLightViews, inputs);
     if (hasIndirect()) {
+        // The maps are rebuilt when the view, the seed, a light view or a setting changed, not
+        // when only objects moved: any map is an unbiased pdf, and a kept one keeps the photons'
+        // first hits (and with rng fixed or object_space their paths) where nothing moved.
+        const bool sameAim = !mImportanceStale && isSameCamera(mScene.camera, mImportanceCamera) &&
+                             inputs.seed == mImportanceSeed &&
+                             mGpuScene.getLightViewsVersion() == mImportanceLightViews;
+        mImportance->setKeepMaps(sameAim); // the pass still runs: its timer row reads ~0 ms
         runPass(*mImportance, inputs);
+        mImportanceStale = false;
+        mImportanceCamera = mScene.camera;
+        mImportanceSeed = inputs.seed;
+        mImportanceLightViews = mGpuScene.getLightViewsVersion();
         runPass(*mEmit, inputs);
     }
     runPass(*mDirect, inputs);
@@ -169,6 +186,7 @@ void FrameRunner::renderFrame() {
     runPass(*mUpsample, inputs);
     runPass(*mAccumulate, inputs);
     ++mHistoryFrames;
+    ++mFramesDrawn;
     runPass(*mCompose, inputs);
     runPass(*mTonemap, inputs);
     if (auto samples = mTimer.collect()) setTimings(*samples);

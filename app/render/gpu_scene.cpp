@@ -187,6 +187,13 @@ void GpuScene::uploadLightViews() {
         v.info = glm::uvec4(cam.lightIndex, cam.isOrthographic ? 1u : 0u, 0u, 0u);
         views.push_back(v);
     }
+    std::vector<glm::mat4> projections;
+    for (const gpu::GpuLightView& v : views)
+        projections.push_back(v.clipFromWorld);
+    if (projections != mUploadedViews) {
+        mUploadedViews = std::move(projections);
+        ++mLightViewsVersion;
+    }
     if (mLightViews.getSize() == views.size() * sizeof(gpu::GpuLightView) &&
         mLightViews.getId() != 0) {
         mLightViews.upload<gpu::GpuLightView>(views);

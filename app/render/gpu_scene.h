@@ -36,6 +36,9 @@ class GpuScene {
     // The viewer the sun's shadows are fitted to (fitSunView, from the points it sees); refits
     // when the camera or the aspect changed, and with every updateDynamic.
     void setViewer(const Scene& scene, const Camera& camera, float aspect);
+    // Goes up whenever a light view's projection changes (a light moved, the fit, the jitter):
+    // what was aimed through the old views must be aimed again.
+    uint64_t getLightViewsVersion() const { return mLightViewsVersion; }
     int getLightResolution() const { return mLightResolution; }
     const Aabb& getBounds() const { return mBounds; }
     // Total area of every instance's triangles in world space (m^2), for derived splat radii.
@@ -53,8 +56,10 @@ class GpuScene {
 
     std::vector<gpu::GpuInstance> mInstances;
     std::vector<LightCamera> mLightCameras;
-    glm::vec2 mLightJitter{0.0f};  // texels (setLightJitter)
-    std::optional<Camera> mViewer; // setViewer
+    glm::vec2 mLightJitter{0.0f};          // texels (setLightJitter)
+    std::optional<Camera> mViewer;         // setViewer
+    std::vector<glm::mat4> mUploadedViews; // clipFromWorld as last uploaded
+    uint64_t mLightViewsVersion = 0;
     float mViewerAspect = 1.0f;
     uint32_t mLightCount = 0;
     int mLightResolution = 0;

@@ -41,6 +41,7 @@ void ImportancePass::execute(const FrameInputs& inputs) {
     const std::vector<LightCamera>& cameras = inputs.scene.getLightCameras();
     const size_t views = cameras.size();
     if (views == 0) return;
+    if (mKeepMaps && views == mViewCount) return;
     if (views != mViewCount) {
         mHits = gl::Buffer("importance hits", views * gpu::kImportanceTexels * sizeof(uint32_t));
         mCdfTables = gl::Buffer("importance tables", computeCdfFloats(views) * sizeof(float));

@@ -16,6 +16,9 @@ class ImportancePass final : public Pass {
     ImportancePass(const GBuffer& viewer, const GBuffer& lights);
     const char* getName() const override { return "importance"; }
     void execute(const FrameInputs& inputs) override;
+    // Keep last frame's maps instead of building new ones (FrameRunner: nothing they depend on
+    // changed); the next execute does nothing.
+    void setKeepMaps(bool keep) { mKeepMaps = keep; }
     void reloadPrograms(ShaderReloadReport& report) override {
         mGather.reloadIfChanged(report);
         mCdf.reloadIfChanged(report);
@@ -32,6 +35,7 @@ class ImportancePass final : public Pass {
     }
 
   private:
+    bool mKeepMaps = false;
     const GBuffer& mViewer;
     const GBuffer& mLights;
     ReloadableProgram mGather;

@@ -65,7 +65,7 @@ void PhotonEmitPass::execute(const FrameInputs& inputs) {
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
     mLightGBuffer.bindTextures(gpu::kUnitLightGBufferFirst);
     mImportanceCdf.bindBase(gl::BufferTarget::Storage, gpu::kBindingImportanceCdf);
-    glUniform2ui(kLocationSeedMode, inputs.seed, inputs.settings.rng);
+    glUniform2ui(kLocationSeedMode, inputs.seed, inputs.settings.rngGenerator);
     glUniform1i(kLocationResolution, scene.getLightResolution());
     mFeedback.attachBuffer(0, mBuffers.getBounce(), 0, mBuffers.getBounce().getSize());
     mWritten.begin();

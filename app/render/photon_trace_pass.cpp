@@ -43,7 +43,7 @@ void PhotonTracePass::execute(const FrameInputs& inputs) {
 
     mTrace.use();
     glUniform4ui(kLocationParams, static_cast<GLuint>(inputs.settings.bounces), inputs.seed,
-                 inputs.settings.rng, 0u);
+                 inputs.settings.rngGenerator, inputs.settings.rngMode);
     glUniform1f(kLocationEpsilon, inputs.scene.getRayEpsilon());
     gl::dispatchComputeIndirect(mBuffers.getCounters(),
                                 offsetof(gpu::PhotonCounters, traceDispatch));

@@ -16,7 +16,11 @@ namespace {
 static_assert(kToneMapChoices[gpu::kTonemapThesis] == "thesis");
 static_assert(kToneMapChoices[gpu::kTonemapFilmic] == "filmic");
 static_assert(kToneMapChoices[gpu::kTonemapLinear] == "linear");
-static_assert(kRngChoices[gpu::kRngPcg] == "pcg" && kRngChoices[gpu::kRngLcg] == "lcg");
+static_assert(kRngGeneratorChoices[gpu::kRngPcg] == "pcg" &&
+              kRngGeneratorChoices[gpu::kRngLcg] == "lcg");
+static_assert(kRngModeChoices[gpu::kRngFixed] == "fixed" &&
+              kRngModeChoices[gpu::kRngPerFrame] == "per_frame" &&
+              kRngModeChoices[gpu::kRngObjectSpace] == "object_space");
 static_assert(kRadiusModeChoices[gpu::kRadiusTravel] == "travel");
 static_assert(kRadiusModeChoices[gpu::kRadiusPathDensity] == "path_density");
 static_assert(kRadiusModeChoices[gpu::kRadiusDensity] == "density");
@@ -99,7 +103,8 @@ FrameSettings resolveFrameSettings(const Settings& settings) {
     f.bouncesSet = settings.isSet("bounces");
     f.importanceSamples = settings.getInt("importance_samples");
     f.importance = f.importanceSamples > 0 ? settings.getFloat("importance") : 0.0f;
-    f.rng = getChoice(settings, "rng");
+    f.rngGenerator = getChoice(settings, "rng_generator");
+    f.rngMode = getChoice(settings, "rng");
     f.radiusMode = getChoice(settings, "radius_mode");
     f.splatNeighbours = computeSplatNeighbours(settings);
     f.radiusMinM = getIfSet(settings, "radius_min");

@@ -105,10 +105,17 @@ const std::vector<SettingDesc>& table() {
          "",
          "viewer pixels per frame that build the importance maps (each also casts one bounce ray)",
          {}},
-        {"rng", SettingType::Enum, 0, 0, 1, "",
-         "random numbers: pcg (stateless hash of photon, bounce and seed) or lcg (the thesis's "
-         "linear congruential generator)",
-         toChoices(kRngChoices)},
+        {"rng", SettingType::Enum, 0, 0, 2, "",
+         "which random numbers scatter a photon from frame to frame: fixed (keyed on the grid cell "
+         "it was emitted from, so it keeps its path while nothing it meets moves; new numbers "
+         "only for accumulated frames), per_frame (a new seed every frame, the thesis's "
+         "prototype), object_space (each bounce keyed on where the photon hit, in the hit "
+         "triangle's own coordinates, thesis 7.2)",
+         toChoices(kRngModeChoices)},
+        {"rng_generator", SettingType::Enum, 0, 0, 1, "",
+         "random number generator: pcg (stateless hash of photon, bounce and seed) or lcg (the "
+         "thesis's linear congruential generator)",
+         toChoices(kRngGeneratorChoices)},
         {"radius_mode", SettingType::Enum, 2, 0, 2, "",
          "splat radius from travel distance (travel, the thesis), from path density "
          "(path_density, McGuire and Luebke 2009) or from the local density of stored photons "

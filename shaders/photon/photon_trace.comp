@@ -14,7 +14,8 @@ layout(std430, binding = kBindingBouncePhotons) readonly buffer BounceBuffer { B
 layout(std430, binding = kBindingResultPhotons) writeonly buffer ResultBuffer { ResultPhoton resultPhotons[]; };
 layout(std430, binding = kBindingPhotonCounters) buffer CounterBuffer { PhotonCounters counters; };
 
-layout(location = 0) uniform uvec4 uParams;   // x = bounces, y = frame seed, z = rng mode
+layout(location = 0) uniform uvec4 uParams;   // x = bounces, y = frame seed, z = generator,
+                                              // w = kRngFixed, kRngPerFrame or kRngObjectSpace
 layout(location = 1) uniform float uEpsilonM; // ray offset off the surface it leaves
 
 // Photons are stored where a splat can show them: diffuse or glossy surfaces; a near-mirror lobe
@@ -38,6 +39,12 @@ void storePhoton(vec3 position, float travelled, vec3 normal, float density, vec
     resultPhotons[slot].incoming = vec4(dir, packReflectionsLight(reflections, light));
     countPhoton(light, 1);
     resultPhotons[slot].power = vec4(power, 0.0);
+}
+
+uint hashObjectPoint(RayHit hit) {
+    const float kGrid = 65536.0; // barycentric steps: a few um on a metre-sized triangle
+    uvec2 b = uvec2(hit.barycentric * kGrid);
+    return hashPcg(hit.instance ^ hashPcg(hit.triangle ^ hashPcg(b.x ^ hashPcg(b.y))));
 }
 
 void main() {
@@ -64,7 +71,11 @@ void main() {
         GpuMaterial m = materials[triangles[hit.triangle].w];
         if (isStoredSurface(m)) storePhoton(position, travelled, n, density, dir, reflections, light, power);
         if (reflections == bounces) break;
-        uint rng = seedRandom(id, reflections, uParams.y);
+        // object_space: the numbers of where the photon hit, in the hit triangle's own terms
+        // (instance, triangle, barycentrics on a 2^-16 grid), so they stay while that surface
+        // and the path to it stay, however the object moved; else the photon's emission cell.
+        uint key = uParams.w == kRngObjectSpace ? hashObjectPoint(hit) : id;
+        uint rng = seedRandom(key, reflections, uParams.y);
         uint event = scatterPhoton(dir, power, n, m.diffuse.rgb, m.specular, m.transmissive,
                                    frontFace, rng, uParams.z);
         if (event == kScatterAbsorbed) break;

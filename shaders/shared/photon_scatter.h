@@ -11,6 +11,10 @@ ISPM_NAMESPACE_BEGIN
 
 ISPM_CONST uint kRngPcg = 0u;
 ISPM_CONST uint kRngLcg = 1u;
+// Which numbers a photon gets from frame to frame (`rng`; FrameRunner, photon_trace.comp).
+ISPM_CONST uint kRngFixed = 0u;
+ISPM_CONST uint kRngPerFrame = 1u;
+ISPM_CONST uint kRngObjectSpace = 2u;
 
 ISPM_CONST uint kScatterAbsorbed = 0u;
 ISPM_CONST uint kScatterDiffuse = 1u;

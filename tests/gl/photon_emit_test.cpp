@@ -611,7 +611,7 @@ class PhotonEmitTest : public GlTest {
         std::array<uint32_t, 5> events{};
         for (uint32_t photons : kBudgets) {
             Settings settings = makeSettings(photons);
-            if (rngMode == gpu::kRngLcg) settings.setEnum("rng", "lcg", "test");
+            if (rngMode == gpu::kRngLcg) settings.setEnum("rng_generator", "lcg", "test");
             FrameRunner runner(scene, settings, gl::TimingMethod::CpuFinish);
             runner.renderFrame();
             const Reference ref = computeReference(runner, scene, kSeed, rngMode);
