@@ -3,6 +3,7 @@
 // frames 0 .. N - 1, and a camera cut or a light switched off leaves no stale light one frame
 // later.
 #include "support/gl_fixture.h"
+#include "support/render_support.h"
 
 #include "image/metrics.h"
 #include "render/accumulate_pass.h"
@@ -40,21 +41,6 @@ Image renderIndirect(FrameRunner& runner, int frames) {
     for (int i = 0; i < frames; ++i)
         runner.renderFrame();
     return readTextureImage(runner.getAov(Aov::Indirect));
-}
-
-// The largest difference over pixels and channels, relative to the image's mean.
-double computeMaxRelativeDifference(const Image& a, const Image& b) {
-    double largest = 0.0;
-    double sum = 0.0;
-    for (size_t i = 0; i < a.pixels.size(); ++i) {
-        for (int c = 0; c < 3; ++c) {
-            largest = std::max(largest, std::abs(double(a.pixels[i][c]) - double(b.pixels[i][c])));
-            sum += double(b.pixels[i][c]);
-        }
-    }
-    const double mean = sum / double(3 * b.pixels.size());
-    EXPECT_GT(mean, 0.0) << "no indirect light to compare";
-    return mean > 0.0 ? largest / mean : 0.0;
 }
 
 class AccumulateTest : public GlTest {};

@@ -3,6 +3,7 @@
 // frame, and object_space's numbers (keyed on the hit point in its triangle) are not fixed's
 // (keyed on the photon's emission cell).
 #include "support/gl_fixture.h"
+#include "support/render_support.h"
 
 #include "render/frame.h"
 #include "render/readback.h"
@@ -36,21 +37,6 @@ std::pair<Image, Image> renderTwoFrames(const std::string& mode) {
     Image first = readTextureImage(runner.getAov(Aov::Indirect));
     runner.renderFrame();
     return {std::move(first), readTextureImage(runner.getAov(Aov::Indirect))};
-}
-
-// The largest difference over pixels and channels, relative to b's mean.
-double computeMaxRelativeDifference(const Image& a, const Image& b) {
-    double largest = 0.0;
-    double sum = 0.0;
-    for (size_t i = 0; i < a.pixels.size(); ++i) {
-        for (int c = 0; c < 3; ++c) {
-            largest = std::max(largest, std::abs(double(a.pixels[i][c]) - double(b.pixels[i][c])));
-            sum += double(b.pixels[i][c]);
-        }
-    }
-    const double mean = sum / double(3 * b.pixels.size());
-    EXPECT_GT(mean, 0.0) << "no indirect light to compare";
-    return mean > 0.0 ? largest / mean : 0.0;
 }
 
 class RngModesTest : public GlTest {};

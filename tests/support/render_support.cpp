@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 
@@ -72,6 +74,20 @@ void expectMatchesGolden(const Image& actual, const std::string& name, const Gol
         writeImage((out / (name + ".diff.png")).string(), d);
         ADD_FAILURE() << "actual and diff images written to " << out;
     }
+}
+
+double computeMaxRelativeDifference(const Image& a, const Image& b) {
+    double largest = 0.0;
+    double sum = 0.0;
+    for (size_t i = 0; i < a.pixels.size(); ++i) {
+        for (int c = 0; c < 3; ++c) {
+            largest = std::max(largest, std::abs(double(a.pixels[i][c]) - double(b.pixels[i][c])));
+            sum += double(b.pixels[i][c]);
+        }
+    }
+    const double mean = sum / double(3 * b.pixels.size());
+    EXPECT_GT(mean, 0.0) << "no light to compare";
+    return mean > 0.0 ? largest / mean : 0.0;
 }
 
 } // namespace ispm::test

@@ -15,6 +15,10 @@ Image renderAov(const Scene& scene, const Settings& settings, Aov aov);
 // The reference path tracer's indirect light: reference(bounces) - reference(0), both at `spp`.
 Image renderReferenceIndirect(const Scene& scene, const Settings& settings, int spp);
 
+// The largest difference over pixels and channels between a and b, relative to b's mean (an
+// expectation fails when b is black: nothing to compare).
+double computeMaxRelativeDifference(const Image& a, const Image& b);
+
 struct GoldenThresholds {
     float pixelTolerance;      // a pixel fails when any channel differs by more
     double maxMeanAbsError;    // over all channels
