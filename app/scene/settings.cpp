@@ -65,11 +65,13 @@ const std::vector<SettingDesc>& table() {
          {}},
         {"shadow_bias",
          SettingType::Float,
-         1.5,
+         1.0,
          0,
          100,
          "texels",
-         "shadow-map depth bias, in light-camera texels at the receiver's depth",
+         "shadow-map bias, in light-camera texels at the receiver's depth: the depth test's "
+         "margin, and how far the receiver is pushed along its normal at grazing light (times "
+         "the sine of the angle to the light)",
          {}},
         {"seed", SettingType::Int, 1, 0, 2147483647, "", "random seed of the frame", {}},
         {"photons",

@@ -68,7 +68,11 @@ float computeVisibility(GpuLight light, vec3 positionW, vec3 normalW) {
     float depth = dot(positionW - view.originAxis.xyz, axis);
     float texelM = ortho ? view.axisTexel.w : view.axisTexel.w * max(depth, 0.0);
     float biasM = frame.shadow.x * texelM;
-    vec3 p = positionW + normalW * biasM;
+    // The normal offset grows with the angle to the light (sin): a surface facing the light
+    // needs none, one at grazing light the whole bias; it moves shadow edges by as much.
+    vec3 toLight = ortho ? -axis : normalize(view.originAxis.xyz - positionW);
+    float cosLight = clamp(abs(dot(normalW, toLight)), 0.0, 1.0);
+    vec3 p = positionW + normalW * (biasM * sqrt(1.0 - cosLight * cosLight));
     vec4 clip = view.clipFromWorld * vec4(p, 1.0);
     if (clip.w <= 0.0) return 1.0;
     vec3 ndc = clip.xyz / clip.w;

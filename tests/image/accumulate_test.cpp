@@ -143,11 +143,10 @@ TEST_F(AccumulateTest, SilhouettesAgainstTheBackgroundAreAntiAliased) {
 }
 
 TEST_F(AccumulateTest, LightCamerasMoveInsideATexelSoShadowEdgesConverge) {
-    // The sun's patch on the floor of the courtyard's room, drawn from 128-texel shadow maps (the
-    // sun's view fitted to the room: about 4 cm texels, several pixels at 48 px): frame 0 draws it
+    // The sun's patch on the floor of the courtyard's room, drawn from 64-texel shadow maps (the
+    // sun's view fitted to the room: about 8 cm texels, several pixels at 48 px): frame 0 draws it
     // in texel-sized steps, the accumulated frames (light cameras moved inside a texel each
-    // frame) approach the patch 1,024-texel maps draw. A small shadow bias: its normal offset (in
-    // texels) moves the patch's edges by as much as the steps, the same in every frame.
+    // frame) approach the patch 1,024-texel maps draw.
     Scene scene = loadScene(std::string(ISPM_ASSET_DIR) + "/scenes/courtyard.json");
     selectCamera(scene, "room");
     auto render = [&scene](int shadowMap, int frames, Image* first) {
@@ -156,7 +155,9 @@ TEST_F(AccumulateTest, LightCamerasMoveInsideATexelSoShadowEdgesConverge) {
         s.set("height", kSize, "test");
         s.set("bounces", 0, "test");
         s.set("shadow_map_size", shadowMap, "test");
-        s.set("shadow_bias", 0.25f, "test"); // the floor is flat and lit at 44 degrees: no acne
+        // Half the default: the normal offset moves the patch's edges by a share of a texel,
+        // the same in every frame, which no jitter undoes.
+        s.set("shadow_bias", 0.5f, "test");
         s.set("accumulate", frames, "test");
         FrameRunner runner(scene, s, gl::TimingMethod::CpuFinish);
         for (int f = 0; f < frames; ++f) {
@@ -168,15 +169,15 @@ TEST_F(AccumulateTest, LightCamerasMoveInsideATexelSoShadowEdgesConverge) {
     constexpr int kFrames = 16;
     const Image fine = render(1024, kFrames, nullptr);
     Image coarseFirst;
-    const Image coarse = render(128, kFrames, &coarseFirst);
+    const Image coarse = render(64, kFrames, &coarseFirst);
     const double firstError = computeRelRmse(coarseFirst, fine, kRelRmseBlock);
     const double accumulatedError = computeRelRmse(coarse, fine, kRelRmseBlock);
-    std::printf("sun patch from 128 texel maps against 1024: frame 0 %.4f, %d frames %.4f\n",
+    std::printf("sun patch from 64 texel maps against 1024: frame 0 %.4f, %d frames %.4f\n",
                 firstError, kFrames, accumulatedError);
     EXPECT_GT(firstError, 0.05); // the steps are there to remove
-    // Measured 0.130 -> 0.029; the camera's own sub-pixel offsets alone (light cameras held)
-    // blur the steps but leave them where they are: 0.129 -> 0.051.
-    EXPECT_LT(accumulatedError, 0.3 * firstError);
+    // Measured 0.247 -> 0.114; the camera's own sub-pixel offsets alone (light cameras held)
+    // leave the steps where they are: 0.252 -> 0.220.
+    EXPECT_LT(accumulatedError, 0.65 * firstError);
 }
 
 TEST(AccumulateJitter, LightOffsetsInsideATexelApartFromThePixels) {
