@@ -48,6 +48,8 @@ void ImportancePass::execute(const FrameInputs& inputs) {
         mPdfMap = gl::Texture::create2DArray("importance pdf", gl::Format::RGBA32F,
                                              int(gpu::kImportanceSize), int(gpu::kImportanceSize),
                                              int(views));
+        // A shadow-only view's layer is never written (no tables): the viewer shows it black.
+        mPdfMap.clear(glm::vec4(0.0f));
         mViewCount = views;
     }
     // Gather samples on a grid of the image's aspect, at most one per pixel.
