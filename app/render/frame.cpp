@@ -141,7 +141,10 @@ uint32_t FrameRunner::getAccumulatedFrames() const {
 }
 
 void FrameRunner::renderFrame() {
-    if (!isSameCamera(mScene.camera, mHistoryCamera)) mHistoryFrames = 0;
+    if (!isSameCamera(mScene.camera, mHistoryCamera)) {
+        mHistoryFrames = 0;
+        mImportanceStale = true;
+    }
     mHistoryCamera = mScene.camera;
     // A full history of a still view is the image: nothing changed, so nothing is drawn (a
     // resting camera costs nothing), and the image stands still.
@@ -162,13 +165,11 @@ void FrameRunner::renderFrame() {
         // The maps are rebuilt when the view, the seed, a light view or a setting changed, not
         // when only objects moved: any map is an unbiased pdf, and a kept one keeps the photons'
         // first hits (and with rng fixed or object_space their paths) where nothing moved.
-        const bool sameAim = !mImportanceStale && isSameCamera(mScene.camera, mImportanceCamera) &&
-                             inputs.seed == mImportanceSeed &&
+        const bool sameAim = !mImportanceStale && inputs.seed == mImportanceSeed &&
                              mGpuScene.getLightViewsVersion() == mImportanceLightViews;
         mImportance->setKeepMaps(sameAim); // the pass still runs: its timer row reads ~0 ms
         runPass(*mImportance, inputs);
         mImportanceStale = false;
-        mImportanceCamera = mScene.camera;
         mImportanceSeed = inputs.seed;
         mImportanceLightViews = mGpuScene.getLightViewsVersion();
         runPass(*mEmit, inputs);

@@ -98,14 +98,14 @@ class FrameRunner {
     const Scene& mScene;
     Settings mSettings;
     FrameSettings mFrameSettings; // mSettings resolved
-    uint32_t mHistoryFrames = 0;
-    uint32_t mFramesDrawn = 0; // since the runner was made (rng = per_frame)
-    // What the importance maps were last built for (renderFrame).
+    uint32_t mHistoryFrames = 0;  // frames in the accumulated history
+    Camera mHistoryCamera;        // the camera they were rendered from
+    uint32_t mFramesDrawn = 0;    // since the runner was made (rng = per_frame)
+    // What the importance maps were last built for (renderFrame): stale after a camera move, a
+    // settings change or a rebuilt scene; else rebuilt when the seed or a light view changed.
     bool mImportanceStale = true;
-    Camera mImportanceCamera;
     uint32_t mImportanceSeed = 0;
-    uint64_t mImportanceLightViews = 0; // frames in the accumulated history
-    Camera mHistoryCamera;              // the camera they were rendered from
+    uint64_t mImportanceLightViews = 0;
     int mWidth;
     int mHeight;
     void setTimings(const std::vector<gl::PassTimer::Sample>& samples);

@@ -1,8 +1,6 @@
 // The per-frame constants of a camera: view and projection, image size, lights, tone map.
 #include "render/frame_constants.h"
 
-#include <glm/gtc/matrix_transform.hpp>
-
 #include <algorithm>
 #include <cmath>
 
@@ -30,16 +28,21 @@ float computeRadicalInverse(uint32_t index, uint32_t base) {
     return inverse;
 }
 
+// Point `frame` of the Halton sequence in bases (x, y), centred: in [-0.5, 0.5)^2, 0 for frame 0.
+glm::vec2 computeHaltonOffset(uint32_t frame, uint32_t baseX, uint32_t baseY) {
+    if (frame == 0) return glm::vec2(0.0f);
+    return glm::vec2(computeRadicalInverse(frame, baseX), computeRadicalInverse(frame, baseY)) -
+           0.5f;
+}
+
 } // namespace
 
 glm::vec2 computePixelJitter(uint32_t frame) {
-    if (frame == 0) return glm::vec2(0.0f);
-    return glm::vec2(computeRadicalInverse(frame, 2), computeRadicalInverse(frame, 3)) - 0.5f;
+    return computeHaltonOffset(frame, 2, 3);
 }
 
 glm::vec2 computeShadowJitter(uint32_t frame) {
-    if (frame == 0) return glm::vec2(0.0f);
-    return glm::vec2(computeRadicalInverse(frame, 5), computeRadicalInverse(frame, 7)) - 0.5f;
+    return computeHaltonOffset(frame, 5, 7);
 }
 
 gpu::FrameConstants computeFrameConstants(const Scene& scene, const GpuScene& gpuScene,
@@ -51,10 +54,7 @@ gpu::FrameConstants computeFrameConstants(const Scene& scene, const GpuScene& gp
     computeCameraRange(cam, gpuScene.getBounds(), nearM, farM);
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
     gpu::FrameConstants fc{};
-    // A shift of jitter pixels is 2 jitter / size in normalised device coordinates.
-    const glm::vec3 shiftNdc(2.0f * jitterPx.x / static_cast<float>(width),
-                             2.0f * jitterPx.y / static_cast<float>(height), 0.0f);
-    fc.clipFromWorld = glm::translate(glm::mat4(1.0f), shiftNdc) *
+    fc.clipFromWorld = computeClipShift(jitterPx, glm::vec2(width, height)) *
                        computeClipFromView(cam, aspect, nearM, farM) * computeViewFromWorld(cam);
     fc.worldFromClip = glm::inverse(fc.clipFromWorld);
     fc.cameraPosition = glm::vec4(cam.position, 1.0f);

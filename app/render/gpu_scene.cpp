@@ -1,8 +1,6 @@
 // Flattening of the scene model into GPU buffers.
 #include "render/gpu_scene.h"
 
-#include <glm/gtc/matrix_transform.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <span>
@@ -157,9 +155,7 @@ void GpuScene::uploadLights(const Scene& scene) {
 }
 
 glm::mat4 GpuScene::getLightClipFromWorld(size_t view) const {
-    // A shift of j texels is 2 j / resolution in normalised device coordinates.
-    const glm::vec2 shift = 2.0f * mLightJitter / static_cast<float>(mLightResolution);
-    return glm::translate(glm::mat4(1.0f), glm::vec3(shift, 0.0f)) *
+    return computeClipShift(mLightJitter, glm::vec2(float(mLightResolution))) *
            mLightCameras[view].getClipFromWorld();
 }
 

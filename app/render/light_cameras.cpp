@@ -115,13 +115,12 @@ std::optional<LightCamera> fitSunView(const LightCamera& sun, const std::vector<
     const glm::vec2 centre = glm::round(0.5f * (lo + hi) / texel) * texel;
     LightCamera fine = sun;
     fine.isShadowOnly = true;
-    // The sun's own projection is symmetric about its axis: keep its depth range, move the
-    // square.
-    // (glm::ortho: m22 = -2 / (far - near), m32 = -(far + near) / (far - near).)
-    const float nearM = (sun.clipFromView[3][2] + 1.0f) / sun.clipFromView[2][2];
-    const float farM = (sun.clipFromView[3][2] - 1.0f) / sun.clipFromView[2][2];
-    fine.clipFromView =
-        glm::ortho(centre.x - half, centre.x + half, centre.y - half, centre.y + half, nearM, farM);
+    // The sun's projection (a square of sunHalf around its axis) narrowed to the fitted square in
+    // x and y; depth as it was.
+    const float zoom = sunHalf / half;
+    fine.clipFromView = glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(-centre / half, 0.0f)),
+                                   glm::vec3(zoom, zoom, 1.0f)) *
+                        sun.clipFromView;
     fine.texelSizeM = texel;
     return fine;
 }

@@ -37,6 +37,9 @@ struct FrameInputs {
     // accumulated frame traces new photons.
     uint32_t seed = 0;
     ProgressiveStep progressive; // this frame's place in the accumulation
+
+    // Every splat radius's factor: radius_scale, times the shrink of accumulated frames.
+    float getRadiusScale() const { return settings.radiusScale * progressive.radiusFactor; }
 };
 
 class Pass {

@@ -65,7 +65,7 @@ void PhotonDensityPass::execute(const FrameInputs& inputs) {
     if (mClip.getSize() != clipBytes) mClip = gl::Buffer("splat clip distances", clipBytes);
     mCells.clearToZero();
     const int neighbours = inputs.settings.splatNeighbours;
-    const float scale = inputs.settings.radiusScale * inputs.progressive.radiusFactor;
+    const float scale = inputs.getRadiusScale();
     const float radiusMin = inputs.settings.radiusMinM.value_or(0.0f) * scale;
     const float even =
         computeEvenRadius(inputs.scene.getSurfaceArea(), inputs.settings.photons, neighbours);

@@ -21,7 +21,7 @@ namespace {
 // Uniform locations of shaders/splat/*.
 constexpr GLint kLocationPass = 0;
 constexpr GLint kLocationRadius = 1;
-constexpr GLint kLocationShape = 2;
+constexpr GLint kLocationSquash = 2;
 constexpr GLint kLocationDivisor = 3;
 constexpr GLint kLocationModes = 4;
 
@@ -39,12 +39,13 @@ constexpr float kMaxRadiusFactor = 2.0f;
 
 } // namespace
 
-SplatRadii computeSplatRadii(double surfaceAreaM2, float diagonalM, const FrameSettings& settings) {
+SplatRadii computeSplatRadii(double surfaceAreaM2, float diagonalM, const FrameSettings& settings,
+                             float radiusScale) {
     const double photons = std::max(1, settings.photons);
     const auto r0 = float(std::sqrt(kSplatOverlap * surfaceAreaM2 / (glm::pi<double>() * photons)));
     SplatRadii r;
-    r.radiusMinM = settings.radiusMinM.value_or(kMinRadiusFactor * r0) * settings.radiusScale;
-    r.radiusMaxM = settings.radiusMaxM.value_or(kMaxRadiusFactor * r0) * settings.radiusScale;
+    r.radiusMinM = settings.radiusMinM.value_or(kMinRadiusFactor * r0) * radiusScale;
+    r.radiusMaxM = settings.radiusMaxM.value_or(kMaxRadiusFactor * r0) * radiusScale;
     r.distMinM = settings.distMinM.value_or(0.0f);
     r.distMaxM = settings.distMaxM.value_or(diagonalM);
     return r;
@@ -89,13 +90,11 @@ void SplatPass::execute(const FrameInputs& inputs) {
     mClip.bindBase(gl::BufferTarget::Storage, gpu::kBindingSplatClip);
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
     mViewer.bindTextures(gpu::kUnitGBufferFirst);
-    SplatRadii r =
-        computeSplatRadii(inputs.scene.getSurfaceArea(),
-                          glm::length(inputs.scene.getBounds().getExtent()), inputs.settings);
-    r.radiusMinM *= inputs.progressive.radiusFactor;
-    r.radiusMaxM *= inputs.progressive.radiusFactor;
+    const SplatRadii r = computeSplatRadii(inputs.scene.getSurfaceArea(),
+                                           glm::length(inputs.scene.getBounds().getExtent()),
+                                           inputs.settings, inputs.getRadiusScale());
     glUniform4f(kLocationRadius, r.radiusMinM, r.radiusMaxM, r.distMinM, r.distMaxM);
-    glUniform4f(kLocationShape, 0.0f, 0.0f, inputs.settings.squash, 0.0f);
+    glUniform1f(kLocationSquash, inputs.settings.squash);
     glUniform2ui(kLocationModes, inputs.settings.radiusMode, cullInRasteriser ? 0u : 1u);
     glUniform1i(kLocationDivisor, inputs.settings.splatDivisor);
     const auto passes = static_cast<GLuint>(inputs.settings.splatPasses);

@@ -23,7 +23,8 @@ struct SplatRadii {
 // cover the scene's surface areakSplatOverlap times; radius_min = r0 / 2 at dist_min = 0,
 // radius_max = 2 r0 at dist_max = the scene's diagonal. radius_scale multiplies both radii.
 // `surfaceAreaM2` and `diagonalM` describe the scene (GpuScene keeps both up to date).
-SplatRadii computeSplatRadii(double surfaceAreaM2, float diagonalM, const FrameSettings& settings);
+SplatRadii computeSplatRadii(double surfaceAreaM2, float diagonalM, const FrameSettings& settings,
+                             float radiusScale);
 
 class SplatPass final : public Pass {
   public:

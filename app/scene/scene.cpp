@@ -72,6 +72,10 @@ glm::mat4 computeClipFromView(const Camera& camera, float aspect, float nearM, f
     return glm::perspective(glm::radians(camera.fovYDeg), aspect, nearM, farM);
 }
 
+glm::mat4 computeClipShift(glm::vec2 shiftPx, glm::vec2 sizePx) {
+    return glm::translate(glm::mat4(1.0f), glm::vec3(2.0f * shiftPx / sizePx, 0.0f));
+}
+
 bool isSameCamera(const Camera& a, const Camera& b) {
     return a.position == b.position && a.target == b.target && a.up == b.up &&
            a.fovYDeg == b.fovYDeg && a.nearM == b.nearM && a.farM == b.farM;

@@ -130,6 +130,9 @@ void selectCamera(Scene& scene, const std::string& name);
 // Camera matrices (OpenGL clip conventions, right-handed, -z forward in view space).
 glm::mat4 computeViewFromWorld(const Camera& camera);
 glm::mat4 computeClipFromView(const Camera& camera, float aspect, float nearM, float farM);
+// Moves an image of `sizePx` by `shiftPx` pixels when applied after a clipFromWorld (sub-pixel
+// jitter of the viewer and of the light cameras): 2 shift / size in normalised device coordinates.
+glm::mat4 computeClipShift(glm::vec2 shiftPx, glm::vec2 sizePx);
 // Whether two cameras see the same image (every field equal).
 bool isSameCamera(const Camera& a, const Camera& b);
 

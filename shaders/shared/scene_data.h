@@ -42,9 +42,9 @@ struct GpuLight {
     vec4 position;     // xyz position (point, spot), w unused
     vec4 directionCos; // xyz unit axis (spot) or travel direction (sun), w = cos(outer)
     vec4 power;        // rgb intensity W/sr (point, spot) or irradiance W/m^2 (sun), w = cos(inner)
-    uvec4 views;       // x = first light view, y = view count (6 for a point light), z = type,
+    uvec4 views;       // x = first light view, y = view count (6 for a point light), z = type
+                       // (kLight*),
                        // w = the sun's fitted shadow-only view + 1 (0: none)
-                       // (kLight*)
 };
 ISPM_STATIC_ASSERT_SIZE(GpuLight, 64);
 
@@ -78,7 +78,7 @@ ISPM_CONST int kUnitDirect = 16;
 ISPM_CONST int kUnitIndirect = 17;
 ISPM_CONST int kUnitHdr = 18;
 ISPM_CONST int kUnitFilterSource = 19; // the denoise pass's input, one iteration to the next
-ISPM_CONST int kUnitHistory = 20;      // the accumulated indirect light of earlier frames
+ISPM_CONST int kUnitHistory = 20;      // a light's average over earlier frames (accumulate)
 
 // Per-frame values every pass may read (std140).
 struct FrameConstants {

@@ -9,7 +9,7 @@
 #include "shared/splat_clip.h"
 
 layout(std430, binding = kBindingResultPhotons) readonly buffer ResultBuffer { ResultPhoton photons[]; };
-layout(location = 2) uniform vec4 uSplatShape; // z = squash
+layout(location = 2) uniform float uSquash; // thickness along the normal / radius
 layout(location = 4) uniform uvec2 uSplatModes; // y = 1: drop front faces here
 layout(location = 3) uniform int uDivisor;     // image pixels per buffer pixel along an axis
 
@@ -41,7 +41,7 @@ void main() {
     float along = dot(d, pn);
     vec3 inPlane = d - along * pn;
     float s2 = dot(inPlane, inPlane) / (vRadius * vRadius);
-    float z = along / (vRadius * uSplatShape.z);
+    float z = along / (vRadius * uSquash);
     if (s2 + z * z > 1.0) discard;
     // Beyond a clip line lies another surface (a wall the disc would climb or pass through).
     vec3 t;

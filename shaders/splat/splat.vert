@@ -42,7 +42,7 @@ void main() {
     float alongT = c.x > 0.0 ? extent.x : extent.y;
     float alongB = c.y > 0.0 ? extent.z : extent.w;
     vec3 world = photon.positionDistance.xyz +
-                 (t * (c.x * alongT) + b * (c.y * alongB) + n * (c.z * radius * uSplatShape.z));
+                 (t * (c.x * alongT) + b * (c.y * alongB) + n * (c.z * radius * uSquash));
     vPhoton = id;
     vRadius = radius;
     gl_Position = toBlockClip(frame.clipFromWorld * vec4(world, 1.0), uDivisor);

@@ -3,7 +3,7 @@
 // the travel radius divided by the square root of the path density, so focused photons splat
 // smaller, never below radius_min. density: the radius the density pass gave the photon.
 layout(location = 1) uniform vec4 uRadius;     // x = radius_min, y = radius_max, z = dist_min, w = dist_max
-layout(location = 2) uniform vec4 uSplatShape; // z = squash
+layout(location = 2) uniform float uSquash; // thickness along the normal / radius
 layout(location = 4) uniform uvec2 uSplatModes; // x = radius mode (kRadius*), y = 1: front faces
                                                 // are dropped in the fragment stage (splat_faces all)
 
