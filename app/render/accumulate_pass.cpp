@@ -1,9 +1,11 @@
 // Accumulation: one full-screen draw mixing this frame's direct and indirect light into their
-// histories, then a copy of the result into the history for the next frame.
+// histories, then copies of the results and of the G-buffer's surface for the next frame.
 #include "render/accumulate_pass.h"
 
 #include "gl/gl.h"
 #include "gl/state.h"
+#include "render/fullscreen.h"
+#include "render/gpu_scene.h"
 
 #include <shared/scene_data.h>
 
@@ -13,7 +15,16 @@
 namespace ispm {
 namespace {
 
-constexpr GLint kLocationWeight = 0; // shaders/denoise/accumulate.frag
+// Uniform locations of shaders/denoise/accumulate.frag.
+constexpr GLint kLocationDirectWeight = 0;
+constexpr GLint kLocationHistoryCap = 1;
+constexpr GLint kLocationReproject = 2;
+constexpr GLint kLocationPreviousClipFromWorld = 3;
+
+// Frames that light averaged while moving counts for when the view comes to rest
+// (computeHistoryCap): enough that the first still frames add their noise to a smooth image, few
+// enough that after `accumulate` still frames it weighs 4 / (accumulate + 4) (11% at 32).
+constexpr uint32_t kMovingFramesCarried = 4;
 
 // Progressive photon mapping's alpha, the share of the photons a shrinking radius keeps (Hachisuka
 // et al. 2008 use 2/3 for an unbounded sequence). Measured over 32 frames of the Cornell box and
@@ -29,6 +40,12 @@ constexpr float kTravelRadiusFactor = 0.5f;
 float computeAccumulateWeight(int accumulate, uint32_t historyFrames) {
     if (accumulate <= 0) return 1.0f;
     return 1.0f / static_cast<float>(historyFrames + 1); // a full history is never drawn to
+}
+
+float computeHistoryCap(int accumulate, const FrameInputs& inputs) {
+    if (accumulate <= 0 || inputs.historyReset) return 0.0f;
+    if (inputs.moved) return float(accumulate - 1);
+    return float(inputs.historyFrames + kMovingFramesCarried);
 }
 
 ProgressiveStep computeProgressiveStep(int accumulate, uint32_t historyFrames,
@@ -48,42 +65,66 @@ ProgressiveStep computeProgressiveStep(int accumulate, uint32_t historyFrames,
     return step;
 }
 
-AccumulatePass::AccumulatePass(const gl::Texture& direct, const gl::Texture& indirect)
-    : mProgram(
+AccumulatePass::AccumulatePass(const GBuffer& viewer, const gl::Texture& direct,
+                               const gl::Texture& indirect)
+    : mViewer(viewer), mDirect(direct), mIndirect(indirect),
+      mProgram(
           ReloadableProgram({.label = "accumulate",
                              .stages = {{gl::ShaderStage::Vertex, "lib/fullscreen.vert"},
-                                        {gl::ShaderStage::Fragment, "denoise/accumulate.frag"}}})),
-      mVertexArray("accumulate vao"),
-      mLights({Light{direct, ColorTarget("direct (accumulated)", gl::Format::RGBA32F), {}},
-               Light{indirect, ColorTarget("indirect (accumulated)", gl::Format::RGBA32F), {}}}) {}
+                                        {gl::ShaderStage::Fragment, "denoise/accumulate.frag"}},
+                             .defines = getGBufferDefines()})),
+      mVertexArray("accumulate vao") {}
 
 void AccumulatePass::resize(int width, int height) {
-    for (size_t i = 0; i < mLights.size(); ++i) {
-        Light& light = mLights[i];
-        light.target.resize(width, height);
-        if (light.history.getWidth() == width && light.history.getHeight() == height) continue;
-        light.history = gl::Texture::create2D(i == kDirect ? "direct history" : "indirect history",
-                                              gl::Format::RGBA32F, width, height);
+    if (mOutputs[kDirect].getWidth() == width && mOutputs[kDirect].getHeight() == height) return;
+    constexpr std::array<const char*, 3> kNames = {"direct", "indirect", "history length"};
+    for (size_t i = 0; i < mOutputs.size(); ++i) {
+        const gl::Format format = i == kLength ? gl::Format::R32F : gl::Format::RGBA32F;
+        const std::string name = kNames[i];
+        mOutputs[i] = gl::Texture::create2D(name + " (accumulated)", format, width, height);
+        mHistory[i] = gl::Texture::create2D(name + " history", format, width, height);
     }
+    mHistoryPosition =
+        gl::Texture::create2D("history position", gl::Format::RGBA32F, width, height);
+    mHistoryNormal = gl::Texture::create2D("history normal", gl::Format::RGBA16F, width, height);
+    mFramebuffer = gl::Framebuffer("accumulate target");
+    for (size_t i = 0; i < mOutputs.size(); ++i)
+        mFramebuffer.attachColor(static_cast<int>(i), mOutputs[i]);
+    mFramebuffer.setDrawBufferCount(static_cast<int>(mOutputs.size()));
+    mFramebuffer.checkComplete();
 }
 
 void AccumulatePass::execute(const FrameInputs& inputs) {
-    const float weight = computeAccumulateWeight(inputs.settings.accumulate, inputs.historyFrames);
-    for (Light& light : mLights) {
-        if (weight >= 1.0f) {
-            light.target.getTexture().copyFrom(light.current); // no history to mix with
-        } else {
-            light.target.bind();
-            gl::applyState({});
-            mProgram.use();
-            mVertexArray.bind();
-            light.current.bindUnit(gpu::kUnitFilterSource);
-            light.history.bindUnit(gpu::kUnitHistory);
-            glUniform1f(kLocationWeight, weight);
-            drawFullscreenTriangle();
-        }
-        if (inputs.settings.accumulate > 0) light.history.copyFrom(light.target.getTexture());
+    const int accumulate = inputs.settings.accumulate;
+    if (accumulate <= 0) {
+        mOutputs[kDirect].copyFrom(mDirect); // no history to mix with
+        mOutputs[kIndirect].copyFrom(mIndirect);
+        return;
     }
+    mFramebuffer.bind();
+    gl::applyState({});
+    mProgram.use();
+    mVertexArray.bind();
+    inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
+    inputs.scene.bind(); // instances and their previous transforms
+    mViewer.bindTextures(gpu::kUnitGBufferFirst);
+    mDirect.bindUnit(gpu::kUnitDirect);
+    mIndirect.bindUnit(gpu::kUnitIndirect);
+    mHistory[kDirect].bindUnit(gpu::kUnitHistoryDirect);
+    mHistory[kIndirect].bindUnit(gpu::kUnitHistoryIndirect);
+    mHistory[kLength].bindUnit(gpu::kUnitHistoryLength);
+    mHistoryPosition.bindUnit(gpu::kUnitHistoryPosition);
+    mHistoryNormal.bindUnit(gpu::kUnitHistoryNormal);
+    glUniform1f(kLocationDirectWeight, computeAccumulateWeight(accumulate, inputs.historyFrames));
+    glUniform1f(kLocationHistoryCap, computeHistoryCap(accumulate, inputs));
+    glUniform1i(kLocationReproject, inputs.moved && !inputs.historyReset ? 1 : 0);
+    glUniformMatrix4fv(kLocationPreviousClipFromWorld, 1, GL_FALSE,
+                       &inputs.previousClipFromWorld[0][0]);
+    drawFullscreenTriangle();
+    for (size_t i = 0; i < mOutputs.size(); ++i)
+        mHistory[i].copyFrom(mOutputs[i]);
+    mHistoryPosition.copyFrom(mViewer.getChannel("position"));
+    mHistoryNormal.copyFrom(mViewer.getChannel("normal"));
 }
 
 } // namespace ispm

@@ -1,23 +1,37 @@
-// AccumulatePass: temporal accumulation of the direct and indirect light while nothing moves.
-// Each frame traces new photons and looks through a new sub-pixel offset of the camera
-// (FrameRunner moves the seed and the jitter on with the frame count), and this pass averages
-// both lights into their histories: a running mean over `accumulate` frames, after which
-// FrameRunner draws nothing more (the image holds). FrameRunner restarts the histories (frame
-// count 0) when the camera, the scene, a light or a setting changes, so no stale light outlives
-// a change by a frame. With `accumulate` 0 the frame's light passes through. Its outputs are the
-// direct and indirect AOVs.
+// AccumulatePass: temporal accumulation of the direct and indirect light. Each frame traces new
+// photons, and while the view is still looks through a new sub-pixel offset of the camera
+// (FrameRunner moves the seed and the offsets on); this pass mixes both lights into their
+// histories:
+// - while nothing moves, a running mean over `accumulate` frames, after which FrameRunner draws
+//   nothing more (the image holds);
+// - when the camera or objects move, the indirect history is reprojected (each pixel's surface
+//   found where it was in the last frame, kept where the same surface is there) and averaged over
+//   at most `accumulate` frames per pixel; the direct light starts anew (shadows move with
+//   objects);
+// - a light, a setting or the scene changed: both start anew, so no stale light outlives a change
+//   by a frame.
+// With `accumulate` 0 the frame's light passes through. Its outputs are the direct and indirect
+// AOVs, and each pixel's history length.
 #pragma once
 
-#include "render/fullscreen.h"
+#include "render/gbuffer.h"
 #include "render/pass.h"
 
 #include <array>
 
 namespace ispm {
 
-// The weight of this frame's light: 1 / (frames + 1), a running mean (FrameRunner draws no
-// frame once the history holds `accumulate`); 1 when accumulation is off or the history empty.
+// The weight of this frame's direct light: 1 / (frames + 1), a running mean of the still view
+// (FrameRunner draws no frame once the history holds `accumulate`); 1 when accumulation is off or
+// the history empty.
 float computeAccumulateWeight(int accumulate, uint32_t historyFrames);
+
+// How many earlier frames a pixel's indirect history may count for at most (its weight against
+// this frame's): none after a reset; `accumulate` - 1 while moving (a running mean of that
+// window); in a still view, frame i counts i + kMovingFramesCarried, so that light averaged while
+// moving (full radii, reprojected) fades as the still frames come in, without a jump to one frame's
+// noise. A still view from a reset counts every frame (its length is i): a plain running mean.
+float computeHistoryCap(int accumulate, const FrameInputs& inputs);
 
 // Frame `historyFrames` of an accumulation (`accumulate` > 0); frame 0 and every frame without
 // accumulation get the settings' radii and `denoiseIterations`.
@@ -35,25 +49,30 @@ ProgressiveStep computeProgressiveStep(int accumulate, uint32_t historyFrames,
 
 class AccumulatePass final : public Pass {
   public:
-    AccumulatePass(const gl::Texture& direct, const gl::Texture& indirect);
+    AccumulatePass(const GBuffer& viewer, const gl::Texture& direct, const gl::Texture& indirect);
     const char* getName() const override { return "accumulate"; }
     void resize(int width, int height) override;
     void execute(const FrameInputs& inputs) override;
     void reloadPrograms(ShaderReloadReport& report) override { mProgram.reloadIfChanged(report); }
-    const gl::Texture& getDirect() const { return mLights[kDirect].target.getTexture(); }
-    const gl::Texture& getIndirect() const { return mLights[kIndirect].target.getTexture(); }
+    const gl::Texture& getDirect() const { return mOutputs[kDirect]; }
+    const gl::Texture& getIndirect() const { return mOutputs[kIndirect]; }
+    // Frames each pixel's indirect light averages (R32F): 1 where its history started anew.
+    const gl::Texture& getHistoryLength() const { return mOutputs[kLength]; }
 
   private:
     static constexpr size_t kDirect = 0;
     static constexpr size_t kIndirect = 1;
-    struct Light {
-        const gl::Texture& current;
-        ColorTarget target;  // this frame's average
-        gl::Texture history; // the previous frame's average
-    };
+    static constexpr size_t kLength = 2;
+    const GBuffer& mViewer;
+    const gl::Texture& mDirect;
+    const gl::Texture& mIndirect;
     ReloadableProgram mProgram;
     gl::VertexArray mVertexArray;
-    std::array<Light, 2> mLights;
+    std::array<gl::Texture, 3> mOutputs; // this frame's averages and lengths
+    std::array<gl::Texture, 3> mHistory; // the last frame's
+    gl::Texture mHistoryPosition;        // the last frame's viewer G-buffer position and normal
+    gl::Texture mHistoryNormal;
+    gl::Framebuffer mFramebuffer;
 };
 
 } // namespace ispm

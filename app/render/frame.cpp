@@ -39,7 +39,8 @@ FrameRunner::FrameRunner(const Scene& scene, const Settings& settings, gl::Timin
     mDenoise = std::make_unique<DenoisePass>(mGBuffer->getGBuffer(), mSplat->getOutput());
     mDirect = std::make_unique<DirectPass>(mGBuffer->getGBuffer(), mLightViews->getGBuffer());
     mUpsample = std::make_unique<UpsamplePass>(mGBuffer->getGBuffer(), mDenoise->getOutput());
-    mAccumulate = std::make_unique<AccumulatePass>(mDirect->getOutput(), mUpsample->getOutput());
+    mAccumulate = std::make_unique<AccumulatePass>(mGBuffer->getGBuffer(), mDirect->getOutput(),
+                                                   mUpsample->getOutput());
     mCompose = std::make_unique<ComposePass>(mGBuffer->getGBuffer(), mAccumulate->getDirect(),
                                              mAccumulate->getIndirect());
     mTonemap = std::make_unique<TonemapPass>(mCompose->getOutput());
@@ -70,7 +71,7 @@ void FrameRunner::setSettings(const Settings& settings) {
     mSettings = settings;
     mImportanceStale = true;
     mFrameSettings = resolveFrameSettings(settings);
-    mHistoryFrames = 0;
+    resetHistory();
     const int lightResolution = mFrameSettings.shadowMapSize;
     if (lightResolution != mGpuScene.getLightResolution()) {
         // The light cameras' resolution is baked into the uploaded scene; the light G-buffer
@@ -111,6 +112,9 @@ FrameInputs FrameRunner::getFrameInputs() const {
             mWidth,
             mHeight,
             mHistoryFrames,
+            mHistoryReset,
+            mMoved,
+            mPreviousClipFromWorld,
             getFrameSeed(),
             computeProgressiveStep(mFrameSettings.accumulate, mHistoryFrames,
                                    mFrameSettings.denoiseIterations)};
@@ -120,19 +124,31 @@ uint32_t FrameRunner::getFrameSeed() const {
     // per_frame: new numbers every frame drawn (the thesis's prototype); the others keep them
     // while the view holds, and move on only to add frames to an accumulation.
     if (mFrameSettings.rngMode == gpu::kRngPerFrame) return mFrameSettings.seed + mFramesDrawn;
-    return mFrameSettings.accumulate > 0 ? mFrameSettings.seed + mHistoryFrames
+    return mFrameSettings.accumulate > 0 ? mFrameSettings.seed + mSequenceFrames
                                          : mFrameSettings.seed;
+}
+
+void FrameRunner::resetHistory() {
+    mHistoryReset = true;
+    mHistoryFrames = 0;
+    mSequenceFrames = 0;
 }
 
 void FrameRunner::updateScene() {
     mGpuScene.updateDynamic(mScene);
+    if (mGpuScene.getLightsVersion() != mHistoryLightsVersion) {
+        resetHistory(); // the light itself changed: everything drawn before is stale
+        return;
+    }
+    // Objects moved: the direct light starts anew, the indirect history is reprojected.
     mHistoryFrames = 0;
+    mMoved = true;
 }
 
 void FrameRunner::rebuildScene() {
     mImportanceStale = true;
     mGpuScene = GpuScene(mScene, mGpuScene.getLightResolution());
-    mHistoryFrames = 0;
+    resetHistory();
 }
 
 uint32_t FrameRunner::getAccumulatedFrames() const {
@@ -143,6 +159,7 @@ uint32_t FrameRunner::getAccumulatedFrames() const {
 void FrameRunner::renderFrame() {
     if (!isSameCamera(mScene.camera, mHistoryCamera)) {
         mHistoryFrames = 0;
+        mMoved = true;
         mImportanceStale = true;
     }
     mHistoryCamera = mScene.camera;
@@ -186,7 +203,13 @@ void FrameRunner::renderFrame() {
     runPass(*mDenoise, inputs);
     runPass(*mUpsample, inputs);
     runPass(*mAccumulate, inputs);
+    mGpuScene.keepTransformsAsPrevious();
+    mPreviousClipFromWorld = mClipFromWorld;
+    mHistoryLightsVersion = mGpuScene.getLightsVersion();
+    mHistoryReset = false;
+    mMoved = false;
     ++mHistoryFrames;
+    ++mSequenceFrames;
     ++mFramesDrawn;
     runPass(*mCompose, inputs);
     runPass(*mTonemap, inputs);

@@ -48,10 +48,14 @@ class FrameRunner {
     // lights after the caller edited the Scene this runner was built on; rebuildScene uploads it
     // anew (BVH included) when lights or instances were added or removed.
     void setSettings(const Settings& settings);
-    // Frames averaged into the indirect light shown: at most `accumulate` (1 without
-    // accumulation, once a frame ran).
+    // Frames of the still view averaged into the light shown: at most `accumulate` (1 without
+    // accumulation, once a frame ran). The indirect light may hold more (getHistoryLength).
     uint32_t getAccumulatedFrames() const;
-    // Each of the three restarts the accumulated history (`accumulate`), as does a camera move.
+    // Frames each pixel's indirect light averages (R32F), with `accumulate` > 0.
+    const gl::Texture& getHistoryLength() const { return mAccumulate->getHistoryLength(); }
+    // setSettings and rebuildScene restart the accumulated history (`accumulate`), as does
+    // updateScene when a light changed; when only objects moved, and when the camera moved, the
+    // indirect history is reprojected and the direct light's restarts.
     void updateScene();
     void rebuildScene();
     const Settings& getSettings() const { return mSettings; }
@@ -91,6 +95,7 @@ class FrameRunner {
   private:
     void resizePasses();
     void updateFrameConstants();
+    void resetHistory();
     // Every pass in frame order, for resize and shader reload.
     std::array<Pass*, 13> getPasses() const;
     void runPass(Pass& pass, const FrameInputs& inputs);
@@ -98,9 +103,17 @@ class FrameRunner {
     const Scene& mScene;
     Settings mSettings;
     FrameSettings mFrameSettings; // mSettings resolved
-    uint32_t mHistoryFrames = 0;  // frames in the accumulated history
-    Camera mHistoryCamera;        // the camera they were rendered from
-    uint32_t mFramesDrawn = 0;    // since the runner was made (rng = per_frame)
+    // The accumulated history (AccumulatePass): frames of the still view in it, whether it must
+    // start anew (a light, a setting or the scene changed) or be reprojected (the camera or an
+    // object moved), the last frame's camera, and frames drawn since it started (the seed).
+    uint32_t mHistoryFrames = 0;
+    bool mHistoryReset = true;
+    bool mMoved = false;
+    glm::mat4 mPreviousClipFromWorld{1.0f};
+    uint32_t mSequenceFrames = 0;
+    uint64_t mHistoryLightsVersion = 0; // GpuScene::getLightsVersion of the history's lights
+    Camera mHistoryCamera;              // the camera of the last frame
+    uint32_t mFramesDrawn = 0;          // since the runner was made (rng = per_frame)
     // What the importance maps were last built for (renderFrame): stale after a camera move, a
     // settings change or a rebuilt scene; else rebuilt when the seed or a light view changed.
     bool mImportanceStale = true;

@@ -19,7 +19,8 @@ constexpr GLint kLocationEye = 2;
 constexpr int kPositionChannel = 0; // the first of kChannels: a draw buffer count of 1 holds it
 constexpr GBufferChannel kChannels[] = {
     {"position", "GBUFFER_POSITION", gl::Format::RGBA32F,
-     "world position in metres; w = 1 on a surface, 0 where nothing was hit"},
+     "world position in metres; w = 1 + the instance's index on a surface, 0 where nothing was "
+     "hit"},
     {"normal", "GBUFFER_NORMAL", gl::Format::RGBA16F,
      "unit world normal turned toward the camera; w = 1 if the camera sees the front face "
      "(counter-clockwise winding), -1 if the back"},

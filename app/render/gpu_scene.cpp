@@ -37,6 +37,19 @@ std::vector<gpu::GpuInstance> buildInstances(const Scene& scene, const BvhScene&
     return instances;
 }
 
+std::vector<glm::mat4> getTransforms(std::span<const gpu::GpuInstance> instances) {
+    std::vector<glm::mat4> transforms;
+    for (const gpu::GpuInstance& inst : instances)
+        transforms.push_back(inst.worldFromObject);
+    return transforms;
+}
+
+// What a light emits and where, without the view indices (the fitted view follows the viewer).
+bool isSameEmission(const gpu::GpuLight& a, const gpu::GpuLight& b) {
+    return a.position == b.position && a.directionCos == b.directionCos && a.power == b.power &&
+           a.views.z == b.views.z;
+}
+
 double computeSceneSurfaceArea(const Scene& scene) {
     double area = 0.0;
     for (const Instance& inst : scene.instances) {
@@ -79,6 +92,9 @@ GpuScene::GpuScene(const Scene& scene, int lightResolution) : mLightResolution(l
     mBlasOrder = gl::Buffer::fromSpan<uint32_t>("bvh triangle order", mBvh.blasTriangleOrder);
     mInstances = buildInstances(scene, mBvh);
     mInstanceBuffer = gl::Buffer::fromSpan<gpu::GpuInstance>("scene instances", mInstances);
+    const std::vector<glm::mat4> transforms = getTransforms(mInstances);
+    mPreviousTransforms =
+        gl::Buffer::fromSpan<glm::mat4>("previous instance transforms", transforms);
     mSurfaceAreaM2 = computeSceneSurfaceArea(scene);
     uploadTopLevel();
     uploadLights(scene);
@@ -107,6 +123,7 @@ void GpuScene::updateDynamic(const Scene& scene) {
     uploadTopLevel();
     mInstances = buildInstances(scene, mBvh);
     mInstanceBuffer.upload<gpu::GpuInstance>(mInstances);
+    mTransformsMoved = true;
     mSurfaceAreaM2 = computeSceneSurfaceArea(scene); // scaled instances change it
     uploadLights(scene);
 }
@@ -145,6 +162,11 @@ void GpuScene::uploadLights(const Scene& scene) {
                              fittedView[lights.size()]);
         firstView += viewCount;
         lights.push_back(g);
+    }
+    if (!std::equal(lights.begin(), lights.end(), mEmitted.begin(), mEmitted.end(),
+                    isSameEmission)) {
+        mEmitted = lights;
+        ++mLightsVersion;
     }
     if (mLights.getSize() == lights.size() * sizeof(gpu::GpuLight) && mLights.getId() != 0) {
         mLights.upload<gpu::GpuLight>(lights);
@@ -198,11 +220,18 @@ void GpuScene::uploadLightViews() {
     }
 }
 
+void GpuScene::keepTransformsAsPrevious() {
+    if (!mTransformsMoved) return;
+    mTransformsMoved = false;
+    mPreviousTransforms.upload<glm::mat4>(getTransforms(mInstances));
+}
+
 void GpuScene::bind() const {
     using gl::BufferTarget;
     mPositions.bindBase(BufferTarget::Storage, gpu::kBindingPositions);
     mTriangles.bindBase(BufferTarget::Storage, gpu::kBindingTriangles);
     mInstanceBuffer.bindBase(BufferTarget::Storage, gpu::kBindingInstances);
+    mPreviousTransforms.bindBase(BufferTarget::Storage, gpu::kBindingPreviousTransforms);
     mMaterials.bindBase(BufferTarget::Storage, gpu::kBindingMaterials);
     mLights.bindBase(BufferTarget::Storage, gpu::kBindingLights);
     mLightViews.bindBase(BufferTarget::Storage, gpu::kBindingLightViews);
@@ -214,8 +243,9 @@ void GpuScene::bind() const {
 
 size_t GpuScene::getGpuBytes() const {
     return mPositions.getSize() + mTriangles.getSize() + mInstanceBuffer.getSize() +
-           mMaterials.getSize() + mLights.getSize() + mLightViews.getSize() + mBlasNodes.getSize() +
-           mBlasOrder.getSize() + mTlasNodes.getSize() + mTlasOrder.getSize();
+           mPreviousTransforms.getSize() + mMaterials.getSize() + mLights.getSize() +
+           mLightViews.getSize() + mBlasNodes.getSize() + mBlasOrder.getSize() +
+           mTlasNodes.getSize() + mTlasOrder.getSize();
 }
 
 } // namespace ispm

@@ -24,6 +24,14 @@ class GpuScene {
 
     void bind() const; // binds every buffer (scene and BVH) to its kBinding* point
 
+    // The instances' transforms of the frame drawn last (kBindingPreviousTransforms), which
+    // reproject its pixels onto objects that moved since: FrameRunner keeps them after each
+    // frame it draws. A new GpuScene starts with the present ones.
+    void keepTransformsAsPrevious();
+    // Goes up when updateDynamic changes what a light emits or where (position, direction,
+    // cones, power, type): light accumulated before is stale.
+    uint64_t getLightsVersion() const { return mLightsVersion; }
+
     uint32_t getInstanceCount() const { return static_cast<uint32_t>(mInstances.size()); }
     const gpu::GpuInstance& getInstance(uint32_t i) const { return mInstances[i]; }
     const std::vector<LightCamera>& getLightCameras() const { return mLightCameras; }
@@ -60,6 +68,9 @@ class GpuScene {
     std::optional<Camera> mViewer;         // setViewer
     std::vector<glm::mat4> mUploadedViews; // clipFromWorld as last uploaded
     uint64_t mLightViewsVersion = 0;
+    std::vector<gpu::GpuLight> mEmitted; // the lights as last uploaded, view indices cleared
+    uint64_t mLightsVersion = 0;
+    bool mTransformsMoved = false; // since keepTransformsAsPrevious
     float mViewerAspect = 1.0f;
     uint32_t mLightCount = 0;
     int mLightResolution = 0;
@@ -68,6 +79,7 @@ class GpuScene {
     gl::Buffer mPositions;
     gl::Buffer mTriangles;
     gl::Buffer mInstanceBuffer;
+    gl::Buffer mPreviousTransforms;
     gl::Buffer mMaterials;
     gl::Buffer mLights;
     gl::Buffer mLightViews;

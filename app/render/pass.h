@@ -32,9 +32,16 @@ struct FrameInputs {
     glm::vec3 cameraPosition{0.0f};
     int width = 0;
     int height = 0;
-    uint32_t historyFrames = 0; // frames accumulated before this one (AccumulatePass)
-    // This frame's random seed: `seed`, moved on by historyFrames while accumulating, so every
-    // accumulated frame traces new photons.
+    // Frames of this still view accumulated before this one: 0 after a move or a reset
+    // (AccumulatePass, the progressive step, the sub-pixel offsets).
+    uint32_t historyFrames = 0;
+    // The accumulated light is stale (a light, a setting or the scene changed): start anew.
+    bool historyReset = true;
+    // The camera or an object moved since the last frame: the history is reprojected.
+    bool moved = false;
+    glm::mat4 previousClipFromWorld{1.0f}; // the last frame's camera, its sub-pixel offset included
+    // This frame's random seed: `seed`, moved on with every frame drawn since the last reset
+    // while accumulating, so every accumulated frame traces new photons.
     uint32_t seed = 0;
     ProgressiveStep progressive; // this frame's place in the accumulation
 

@@ -217,11 +217,13 @@ const std::vector<SettingDesc>& table() {
          0,
          65536,
          "frames",
-         "temporal accumulation of the light: while the camera, the scene and the settings stay "
-         "as they are, each frame traces new photons (seed + frame) through new sub-pixel and "
-         "light-texel offsets, with splat radii and filter shrinking as frames add up, and is "
-         "averaged in, up to this many frames; then the image holds and frames cost nothing; "
-         "any change starts again; 0 = off (each frame alone)",
+         "temporal accumulation of the light: each frame traces new photons (seed + frame); while "
+         "the camera, the scene and the settings stay as they are, it looks through new sub-pixel "
+         "and light-texel offsets, with splat radii and filter shrinking as frames add up, and is "
+         "averaged in, up to this many frames; then the image holds and frames cost nothing; when "
+         "the camera or objects move, the indirect light's history is reprojected (kept where the "
+         "same surface shows, at most this many frames a pixel) and the direct light's restarts; "
+         "a changed light or setting starts again; 0 = off (each frame alone)",
          {}},
         {"splat_faces", SettingType::Enum, 0, 0, 1, "",
          "back: the rasteriser culls the boxes' front faces (the thesis's choice); all: every face "

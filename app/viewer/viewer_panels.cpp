@@ -74,7 +74,8 @@ void drawStatsPanel(const TimingHistory& timings, const PhotonCounts& counts,
     ImGui::Text("stored in view   %u", counts.inView);
     ImGui::Text("overflow         %u", counts.overflow);
     ImGui::Text("luminance max    %.4g W/(m^2 sr)", static_cast<double>(luminanceMax));
-    // Accumulation (setting `accumulate`) restarts whenever the camera, scene or settings change.
+    // Frames of the still view (setting `accumulate`): a move starts the count again, a light or
+    // setting change the whole history.
     ImGui::Text("frames averaged  %u", accumulatedFrames);
 }
 

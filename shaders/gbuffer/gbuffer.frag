@@ -6,6 +6,7 @@ layout(location = 2) uniform vec4 uEye; // w = 1: eye position; w = 0: direction
 in vec3 vPositionW;
 flat in vec3 vNormalW;
 flat in uint vMaterial;
+flat in uint vInstance;
 
 layout(location = GBUFFER_POSITION) out vec4 outPosition;
 layout(location = GBUFFER_NORMAL) out vec4 outNormal;
@@ -20,7 +21,8 @@ void main() {
     bool frontFace = dot(vNormalW, toEye) >= 0.0;
     vec3 n = frontFace ? vNormalW : -vNormalW;
     GpuMaterial m = materials[vMaterial];
-    outPosition = vec4(vPositionW, 1.0);
+    // Instance + 1: >= 1 on a surface (exact in float up to 2^24 instances).
+    outPosition = vec4(vPositionW, float(vInstance + 1u));
     outNormal = vec4(n, frontFace ? 1.0 : -1.0);
     outDiffuse = vec4(m.diffuse.rgb, 0.0);
     outSpecular = m.specular;

@@ -8,6 +8,7 @@ layout(location = 1) uniform mat4 uClipFromWorld;
 out vec3 vPositionW;
 flat out vec3 vNormalW;
 flat out uint vMaterial;
+flat out uint vInstance;
 
 void main() {
     GpuInstance inst = instances[uInstance];
@@ -21,5 +22,6 @@ void main() {
     vPositionW = positionW.xyz;
     vNormalW = normalize(transpose(mat3(inst.objectFromWorld)) * cross(p1 - p0, p2 - p0));
     vMaterial = tri.w;
+    vInstance = uInstance;
     gl_Position = uClipFromWorld * positionW;
 }

@@ -66,7 +66,11 @@ ISPM_CONST int kBindingMaterials = 3;  // GpuMaterial
 ISPM_CONST int kBindingLights = 4;     // GpuLight
 ISPM_CONST int kBindingLightViews = 5; // GpuLightView
 ISPM_CONST int kBindingExposure = 6;   // tone-map statistics
-// 7..10: the BVH (shared/bvh_data.h); 11..: the photon buffers (shared/photon_data.h)
+// mat4 per instance: its worldFromObject when the last frame was drawn (AccumulatePass
+// reprojects the history of moving objects with it).
+ISPM_CONST int kBindingPreviousTransforms = 21;
+// 7..10: the BVH (shared/bvh_data.h); 11..20: the photon and importance buffers
+// (shared/photon_data.h, shared/importance_data.h)
 
 // Binding points (uniform buffers).
 ISPM_CONST int kBindingFrameConstants = 0;
@@ -78,7 +82,13 @@ ISPM_CONST int kUnitDirect = 16;
 ISPM_CONST int kUnitIndirect = 17;
 ISPM_CONST int kUnitHdr = 18;
 ISPM_CONST int kUnitFilterSource = 19; // the denoise pass's input, one iteration to the next
-ISPM_CONST int kUnitHistory = 20;      // a light's average over earlier frames (accumulate)
+// AccumulatePass: the averages over earlier frames, their lengths, and the viewer G-buffer's
+// position and normal they were drawn on.
+ISPM_CONST int kUnitHistoryDirect = 20;
+ISPM_CONST int kUnitHistoryIndirect = 21;
+ISPM_CONST int kUnitHistoryLength = 22;
+ISPM_CONST int kUnitHistoryPosition = 23;
+ISPM_CONST int kUnitHistoryNormal = 24;
 
 // Per-frame values every pass may read (std140).
 struct FrameConstants {

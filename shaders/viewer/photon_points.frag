@@ -2,7 +2,7 @@
 // sees at their pixel: photons lie on surfaces, so the test compares distances from the camera.
 #include "lib/frame_constants.glsl"
 
-layout(binding = 0) uniform sampler2D uPosition; // viewer G-buffer position, w = 1 on a surface
+layout(binding = 0) uniform sampler2D uPosition; // viewer G-buffer position, w >= 1 on a surface
 
 in vec3 vColor;
 in vec3 vPositionW;
