@@ -58,6 +58,7 @@ ProgressiveStep computeProgressiveStep(int accumulate, uint32_t historyFrames,
         squared *= (double(j) + kProgressiveAlpha) / (double(j) + 1.0);
     step.radiusFactor = float(std::sqrt(squared));
     step.travelRadiusFactor = kTravelRadiusFactor;
+    step.spreadStrongPhotons = false;
     int fewer = 0;
     for (uint64_t frames = 4; frames <= uint64_t(historyFrames) + 1; frames *= 4)
         ++fewer;

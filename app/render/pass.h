@@ -19,7 +19,11 @@ struct Scene;
 struct ProgressiveStep {
     float radiusFactor = 1.0f;       // multiplies every splat radius
     float travelRadiusFactor = 0.0f; // density radii at most this times the photon's travel; 0: off
-    int denoiseIterations = 0;       // a-trous iterations of this frame
+    // A density radius measures a photon against its neighbours' mean power, so a much stronger
+    // one spreads wide (one frame's noise); off, its own power counts in the density (less blur
+    // for averaged frames, whose noise the average takes down).
+    bool spreadStrongPhotons = true;
+    int denoiseIterations = 0; // a-trous iterations of this frame
 };
 
 // What a frame hands every pass.

@@ -26,6 +26,7 @@ constexpr GLint kLocationTableMask = 2;
 constexpr GLint kLocationRadiusScale = 3;
 constexpr GLint kLocationEpsilon = 4;
 constexpr GLint kLocationTravelFactor = 5;
+constexpr GLint kLocationSpreadStrong = 6;
 constexpr GLuint kStageCount = 0;
 constexpr GLuint kStageRadius = 1;
 constexpr GLuint kStageClip = 2;
@@ -83,6 +84,7 @@ void PhotonDensityPass::execute(const FrameInputs& inputs) {
     glUniform1f(kLocationRadiusScale, scale);
     glUniform1f(kLocationEpsilon, inputs.scene.getRayEpsilon());
     glUniform1f(kLocationTravelFactor, inputs.progressive.travelRadiusFactor);
+    glUniform1i(kLocationSpreadStrong, inputs.progressive.spreadStrongPhotons ? 1 : 0);
     const size_t dispatchOffset = offsetof(gpu::PhotonCounters, densityDispatch);
     glUniform1ui(kLocationStage, kStageCount);
     gl::dispatchComputeIndirect(mBuffers.getCounters(), dispatchOffset);

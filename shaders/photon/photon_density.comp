@@ -2,10 +2,12 @@
 // sums its power, into a hashed grid of cubic cells at each level (cell size h0 * 2^level).
 // Stage 1 finds, per photon, the finest level whose 2x2x2 block of cells around it holds at least
 // k photons and takes the local power density E = power / area from that block (a plane through
-// it cuts about (2h)^2). The photon's disc gets the radius at which its own power is 1/k of what
-// lands there, r = sqrt(k P / (pi E)): with equal powers, the disc that holds k photons; a photon
-// k times stronger than its neighbours (importance sampling's floor, another light) spreads
-// wider instead of making a bright spot. Times radius_scale, clamped.
+// it cuts about (2h)^2; in one frame the others' mean power times the count, so that a strong
+// photon does not set the density it is measured against). The photon's disc gets the radius at
+// which its own power is 1/k of what lands there, r = sqrt(k P / (pi E)): with equal powers, the
+// disc that holds k photons; a photon k times stronger than its neighbours (importance sampling's
+// floor, another light) spreads sqrt(k) times wider instead of making a bright spot. Times
+// radius_scale, clamped.
 //
 // Stage 1 also culls photons whose disc lies outside the view frustum (radius 0: the splat skips
 // them) and lists those whose disc may meet a surface; stage 2 casts, for the listed photons
@@ -38,6 +40,7 @@ layout(location = 2) uniform uint uTableMask; // slots - 1 (a power of two)
 layout(location = 3) uniform float uRadiusScale;
 layout(location = 4) uniform float uEpsilonM; // ray offset off a surface (m)
 layout(location = 5) uniform float uTravelFactor; // radius at most this times the travel; 0: off
+layout(location = 6) uniform bool uSpreadStrong;  // measure a photon against its neighbours only
 
 // The clip rays run this far above the surface, as a fraction of the radius: steps lower than
 // that do not clip a disc, walls do.
@@ -210,7 +213,13 @@ void main() {
         }
     }
     float side = 2.0 * getCellSize(hi);
-    float powerDensity = max(block.y, power) / (side * side);
+    // One frame: the others' mean power stands for every photon of the block, since a photon
+    // much stronger than its neighbours (a low pdf of the importance map, reached after a few
+    // bounces) would otherwise set the density it is measured against and stay a bright spot.
+    // Averaged frames count it in: their noise falls with the frames, the wider disc's blur not.
+    float others = block.x > 1.5 ? (block.y - power) / (block.x - 1.0) : power;
+    float powerDensity = uSpreadStrong ? max(others, 1e-30) * max(block.x, 1.0) / (side * side)
+                                       : max(block.y, power) / (side * side);
     float radius = sqrt(k * power / (kPi * powerDensity)) * uRadiusScale;
     // Never wider than the coarsest block: a lone photon in an empty scene stays finite.
     radius = min(radius, 2.0 * getCellSize(kDensityLevels - 1u));

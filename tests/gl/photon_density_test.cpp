@@ -161,15 +161,25 @@ TEST_F(PhotonDensityTest, StrongPhotonSpreadsWider) {
     addSquare(photons, -0.5f, -0.5f, 1.0f, 60, 3u);
     const size_t strong = photons.size() / 2 + 30; // near the middle
     photons[strong].power = glm::vec4(glm::vec3(kPowerW * kNeighbours), 0.0f);
-    const DensityRun run = runDensity(makeFloorScene(), photons);
-    const float weak = computeMedianRadius(run, {-0.2f, -0.2f}, {0.2f, 0.2f});
-    const float ratio = run.photons[strong].power.w / weak;
-    std::printf("strong photon: radius %.3f x its neighbours' (sqrt(k) = %.3f)\n", double(ratio),
-                std::sqrt(double(kNeighbours)));
-    // The strong photon adds its own power to the local density (which halves its radius's
-    // growth a little): measured 4.1 for sqrt(32) = 5.7. Above 3: far from the equal radius a
-    // count-only estimate would give.
-    EXPECT_GT(ratio, 3.0f);
+    const auto measure = [&](ProgressiveStep step) {
+        const DensityRun run = runDensity(makeFloorScene(), photons, step);
+        const float weak = computeMedianRadius(run, {-0.2f, -0.2f}, {0.2f, 0.2f});
+        return run.photons[strong].power.w / weak;
+    };
+    const float oneFrame = measure({});
+    const float averaged = measure({.spreadStrongPhotons = false});
+    std::printf(
+        "strong photon: radius %.3f x its neighbours' in one frame, %.3f in averaged frames "
+        "(sqrt(k) = %.3f)\n",
+        double(oneFrame), double(averaged), std::sqrt(double(kNeighbours)));
+    // One frame measures it against its neighbours' mean power: sqrt(k) but for the jitter of
+    // the square's pattern (measured 5.74 for 5.66; 5% allows another pattern).
+    EXPECT_NEAR(oneFrame / std::sqrt(float(kNeighbours)), 1.0f, 0.05f);
+    // Averaged frames add its own power to the local density, which holds its growth back
+    // (measured 4.2): less blur where the average takes the noise down anyway; still far from
+    // the equal radius a count-only estimate would give.
+    EXPECT_GT(averaged, 3.0f);
+    EXPECT_LT(averaged, 0.85f * oneFrame);
 }
 
 // The distance to the nearest line any of photon i's rays found (0 when none did).

@@ -357,6 +357,7 @@ TEST(AccumulateProgressive, RadiiShrinkAndTheFilterNarrowsWithFrames) {
          {computeProgressiveStep(0, 9, 3), computeProgressiveStep(32, 0, 3)}) {
         EXPECT_EQ(step.radiusFactor, 1.0f);
         EXPECT_EQ(step.travelRadiusFactor, 0.0f);
+        EXPECT_TRUE(step.spreadStrongPhotons);
         EXPECT_EQ(step.denoiseIterations, 3);
     }
     // r_i^2 / r_0^2 = prod_{j<i} (j + alpha) / (j + 1), of order i^(alpha - 1): strictly
@@ -367,6 +368,7 @@ TEST(AccumulateProgressive, RadiiShrinkAndTheFilterNarrowsWithFrames) {
         EXPECT_LT(step.radiusFactor, previous) << i;
         EXPECT_GT(step.radiusFactor * step.radiusFactor, 1.0f / float(i + 1)) << i;
         EXPECT_GT(step.travelRadiusFactor, 0.0f) << i;
+        EXPECT_FALSE(step.spreadStrongPhotons) << i;
         previous = step.radiusFactor;
     }
     // The second frame: (0 + alpha) / 1.
