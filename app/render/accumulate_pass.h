@@ -35,13 +35,14 @@ float computeHistoryCap(int accumulate, const FrameInputs& inputs);
 
 // Frame `historyFrames` of an accumulation (`accumulate` > 0); frame 0 and every frame without
 // accumulation get the settings' radii and `denoiseIterations`.
-// - Radii shrink as frames are averaged, as in progressive photon mapping (Knaus and Zwicker
-//   2011): frame i's squared radius is frame 0's times prod_{j<i} (j + alpha) / (j + 1), about
-//   i^(alpha - 1), so that the average's blur (bias ~ r^2) and noise (variance ~ 1 / (i r^2))
-//   both go to zero.
-// - From frame 1 on, a density radius is at most kTravelRadiusFactor times the photon's travel:
+// - Every frame's density radius is at most kTravelRadiusFactor times the photon's travel:
 //   light that came from a surface at distance d varies over about d (a wall's foot, a concave
-//   corner), which one frame's neighbour count blurs; the average pays for the extra noise.
+//   corner), which a neighbour count blurs.
+// - From frame 1 on, density discs hold kAveragedNeighbourShare of splat_neighbours, and radii
+//   shrink as frames are averaged, as in progressive photon mapping (Knaus and Zwicker 2011):
+//   frame i's squared radius is times prod_{j<i} (j + alpha) / (j + 1), about i^(alpha - 1), so
+//   that the average's blur (bias ~ r^2) and noise (variance ~ 1 / (i r^2)) both go to zero;
+//   strong photons count in their own density (spreadStrongPhotons off).
 // - The average's noise variance falls as 1 / frames and each a-trous iteration widens the
 //   filter 2x (4x its area): one iteration fewer for every 4x frames.
 ProgressiveStep computeProgressiveStep(int accumulate, uint32_t historyFrames,

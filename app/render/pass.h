@@ -18,6 +18,7 @@ struct Scene;
 // as more frames are averaged, bias matters more than one frame's noise.
 struct ProgressiveStep {
     float radiusFactor = 1.0f;       // multiplies every splat radius
+    float neighbourFactor = 1.0f;    // multiplies splat_neighbours (radius_mode density)
     float travelRadiusFactor = 0.0f; // density radii at most this times the photon's travel; 0: off
     // A density radius measures a photon against its neighbours' mean power, so a much stronger
     // one spreads wide (one frame's noise); off, its own power counts in the density (less blur

@@ -65,7 +65,9 @@ void PhotonDensityPass::execute(const FrameInputs& inputs) {
         size_t(std::max(mBuffers.getResultCapacity(), 1u)) * gpu::kClipVec4s * sizeof(glm::vec4);
     if (mClip.getSize() != clipBytes) mClip = gl::Buffer("splat clip distances", clipBytes);
     mCells.clearToZero();
-    const int neighbours = inputs.settings.splatNeighbours;
+    const int neighbours = std::max(int(std::lround(float(inputs.settings.splatNeighbours) *
+                                                    inputs.progressive.neighbourFactor)),
+                                    1);
     const float scale = inputs.getRadiusScale();
     const float radiusMin = inputs.settings.radiusMinM.value_or(0.0f) * scale;
     const float even =

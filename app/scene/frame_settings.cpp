@@ -31,14 +31,18 @@ static_assert(kSplatResolutionChoices[0] == "auto" && kSplatResolutionChoices[2]
 // neighbours' (relative noise ~ 1 / sqrt(k)), few enough to keep detail and the splat's cost,
 // which grows with k (every lit pixel is covered by about k discs). k grows with the budget as
 // sqrt(photons), so more photons buy both less noise and sharper light: 25 at 50,000 photons.
-// With the filter after the splats fewer neighbours do as well: measured at 256x256, rel RMSE
-// of Cornell / courtyard outside / room 0.146 / 0.339 / 0.371 at k 16, 0.143 / 0.334 / 0.364
-// at 24, 0.139 / 0.334 / 0.382 at 45; medians over six seeds with the splats at half
-// resolution, 0.152 / 0.274 / 0.302 at 25 and 0.144 / 0.264 / 0.269 at 40, for 20% more frame
-// time.
-constexpr double kNeighboursPerSqrtPhoton = 0.11;
+// One frame's noise against its blur. Medians over six seeds at 256x256, 50,000 photons, rel
+// RMSE of Cornell / courtyard outside / room, once strong photons spread and every disc is at
+// most half its photon's travel: 0.148 / 0.263 / 0.275 at k 25 (0.11 sqrt(photons), the
+// earlier rule), 0.141 / 0.241 / 0.261 at 44, 0.136 / 0.229 / 0.249 at 64, 0.133 / 0.227 / 0.228
+// at 90, 0.132 / 0.231 / 0.235 at 128. Wider discs lose light in concave corners, though (a
+// disc cut by a wall keeps its power but spreads it away from the corner): the Cornell box's
+// pixels within 2 cm of an edge get 0.99 of the middle's light at 44, 0.95 at 64, 0.93 at 90
+// (FailureModeTest.CornersAndEdgesLoseIndirectEnergy holds 0.95). Accumulated frames hold fewer
+// (computeProgressiveStep): their average takes the noise down, the blur stays.
+constexpr double kNeighboursPerSqrtPhoton = 0.2;
 constexpr int kMinNeighbours = 16;
-constexpr int kMaxNeighbours = 128;
+constexpr int kMaxNeighbours = 256;
 
 // splat_resolution auto: half resolution from this image size on. The splat's cost follows its
 // fragments (Cornell box, 50,000 photons: 174 ms at 128 px, 460 at 256, 1,420 at 512 on

@@ -129,7 +129,8 @@ const std::vector<SettingDesc>& table() {
          1,
          4096,
          "",
-         "radius_mode density: photons a splat disc holds; derived: 0.11 sqrt(photons), 16 to 128",
+         "radius_mode density: photons a splat disc holds in one frame; derived: 0.2 "
+         "sqrt(photons), 16 to 256 (accumulated frames hold fewer, see accumulate)",
          {},
          true},
         {"radius_min",

@@ -356,7 +356,8 @@ TEST(AccumulateProgressive, RadiiShrinkAndTheFilterNarrowsWithFrames) {
     for (const ProgressiveStep step :
          {computeProgressiveStep(0, 9, 3), computeProgressiveStep(32, 0, 3)}) {
         EXPECT_EQ(step.radiusFactor, 1.0f);
-        EXPECT_EQ(step.travelRadiusFactor, 0.0f);
+        EXPECT_EQ(step.neighbourFactor, 1.0f);
+        EXPECT_GT(step.travelRadiusFactor, 0.0f); // every frame
         EXPECT_TRUE(step.spreadStrongPhotons);
         EXPECT_EQ(step.denoiseIterations, 3);
     }
@@ -369,6 +370,9 @@ TEST(AccumulateProgressive, RadiiShrinkAndTheFilterNarrowsWithFrames) {
         EXPECT_GT(step.radiusFactor * step.radiusFactor, 1.0f / float(i + 1)) << i;
         EXPECT_GT(step.travelRadiusFactor, 0.0f) << i;
         EXPECT_FALSE(step.spreadStrongPhotons) << i;
+        // Fewer photons a disc than one frame's: the average takes their noise down.
+        EXPECT_LT(step.neighbourFactor, 1.0f) << i;
+        EXPECT_GT(step.neighbourFactor, 0.0f) << i;
         previous = step.radiusFactor;
     }
     // The second frame: (0 + alpha) / 1.
