@@ -1,0 +1,70 @@
+// The thesis's tone map (section 5.4.5) on saturated colours: the luminance (0.3 R + 0.6 G +
+// 0.1 B) is mapped, clamped at luminance_max, and the colour scaled by mapped / original
+// luminance before the gamma, so a saturated colour keeps its hue; a per-channel clamp and gamma
+// would wash it out. The image is an emitting plane filling the view, nothing lit.
+#include "support/analytic_scenes.h"
+#include "support/gl_fixture.h"
+
+#include "render/frame.h"
+#include "render/readback.h"
+
+#include <cmath>
+
+namespace ispm::test {
+namespace {
+
+constexpr int kSize = 8;
+
+// The display value of the middle pixel of a plane emitting `radiance`, with luminance_max 2 W/(m^2
+// sr), gamma 2.2 and the operator `tonemap`.
+glm::vec3 renderDisplay(glm::vec3 radiance, const char* tonemap) {
+    Scene scene = makeLitPlane(0.0f, 0.0f, 1.0f, 100.0f); // black, unlit: emission alone
+    scene.materials[0].emission = radiance;
+    scene.camera.position = {0.0f, 1.0f, 0.01f};
+    scene.camera.target = {0.0f, 0.0f, 0.0f};
+    Settings settings;
+    settings.set("width", kSize, "test");
+    settings.set("height", kSize, "test");
+    settings.set("bounces", 0, "test");
+    settings.set("luminance_max", 2.0, "test");
+    settings.set("gamma", 2.2, "test");
+    settings.setEnum("tonemap", tonemap, "test");
+    FrameRunner runner(scene, settings, gl::TimingMethod::CpuFinish);
+    runner.renderFrame();
+    const std::vector<glm::vec4> texels = readTextureTopDown(runner.getAov(Aov::Display));
+    return glm::vec3(texels[(kSize / 2) * kSize + kSize / 2]);
+}
+
+glm::vec3 applyGamma(glm::vec3 c) {
+    return glm::pow(c, glm::vec3(1.0f / 2.2f));
+}
+
+// 8-bit display values: half a step of rounding, and a little for the GPU's pow.
+constexpr float kDisplayTolerance = 1.0f / 255.0f;
+
+void expectNear(glm::vec3 actual, glm::vec3 expected) {
+    for (int i = 0; i < 3; ++i)
+        EXPECT_NEAR(actual[i], expected[i], kDisplayTolerance) << "channel " << i;
+}
+
+class TonemapTest : public GlTest {};
+
+TEST_F(TonemapTest, ThesisOperatorKeepsTheHueOfSaturatedColours) {
+    // Luminance 0.44, under luminance_max 2: the colour is divided by 2 as it is, then gamma:
+    // (0.73, 0.35, 0.35). Clamping and gamma-correcting each channel on its own gives
+    // (1.00, 0.23, 0.23) for the same colour.
+    const glm::vec3 red(1.0f, 0.2f, 0.2f);
+    expectNear(renderDisplay(red, "thesis"), applyGamma(red / 2.0f));
+    expectNear(renderDisplay(red, "thesis"), glm::vec3(0.730f, 0.351f, 0.351f));
+    // Luminance 3.52, over luminance_max: mapped to 2, the colour scaled by 2 / 3.52 (red then
+    // passes white and clips, green and blue keep their share of the luminance).
+    const glm::vec3 bright(8.0f, 1.6f, 1.6f);
+    const glm::vec3 scaled = bright * (2.0f / 3.52f) / 2.0f;
+    expectNear(renderDisplay(bright, "thesis"), applyGamma(glm::min(scaled, glm::vec3(1.0f))));
+    // Linear clips each channel: red at white, green and blue at 0.8 of it, hue lost.
+    expectNear(renderDisplay(bright, "linear"),
+               applyGamma(glm::min(bright / 2.0f, glm::vec3(1.0f))));
+}
+
+} // namespace
+} // namespace ispm::test
