@@ -115,8 +115,8 @@ const std::vector<SettingDesc>& table() {
          "triangle's own coordinates, thesis 7.2)",
          toChoices(kRngModeChoices)},
         {"rng_generator", SettingType::Enum, 0, 0, 1, "",
-         "random number generator: pcg (stateless hash of photon, bounce and seed) or lcg (the "
-         "thesis's linear congruential generator)",
+         "random number generator: pcg (stateless hash of photon, bounce and seed) or lcg (a "
+         "linear congruential generator, Numerical Recipes constants)",
          toChoices(kRngGeneratorChoices)},
         {"radius_mode", SettingType::Enum, 2, 0, 2, "",
          "splat radius from travel distance (travel, the thesis), from path density "
@@ -227,8 +227,9 @@ const std::vector<SettingDesc>& table() {
          "a changed light or setting starts again; 0 = off (each frame alone)",
          {}},
         {"splat_faces", SettingType::Enum, 0, 0, 1, "",
-         "back: the rasteriser culls the boxes' front faces (the thesis's choice); all: every face "
-         "is rasterised and the fragment stage drops front faces (same image, for measuring)",
+         "back: the rasteriser culls the boxes' front faces (each covered pixel shaded once, the "
+         "camera inside a box included); all: every face is rasterised and the fragment stage "
+         "drops front faces (same image, for measuring)",
          toChoices(kSplatFacesChoices)},
     };
     return kTable;

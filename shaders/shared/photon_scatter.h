@@ -36,8 +36,8 @@ ISPM_INLINE uint seedRandom(uint photon, uint bounce, uint frameSeed) {
     return hashPcg(photon ^ hashPcg(bounce ^ hashPcg(frameSeed)));
 }
 
-// Next number in [0, 1) with 24 bits. kRngLcg steps the thesis's linear congruential generator
-// (Numerical Recipes constants); kRngPcg re-hashes the state.
+// Next number in [0, 1) with 24 bits. kRngLcg steps a linear congruential generator (Numerical
+// Recipes constants); kRngPcg re-hashes the state.
 ISPM_INLINE float nextRandom(ISPM_INOUT(uint) state, uint mode) {
     if (mode == kRngLcg) {
         state = 1664525u * state + 1013904223u;

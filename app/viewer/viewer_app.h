@@ -1,0 +1,112 @@
+// The viewer's state and parts (`ispm view`), shared by its sources: viewer.cpp runs the frame
+// loop, viewer_script.cpp plays scripted input and writes the script's outputs,
+// viewer_panel_column.cpp draws the ImGui panel column. Internal to app/viewer/.
+#pragma once
+
+#include "gl/context.h"
+#include "gl/gl.h" // before GLFW: glad's header must come first
+#include "gl/timer.h"
+#include "render/frame.h"
+#include "scene/scene.h"
+#include "viewer/animation_panel.h"
+#include "viewer/debug_view.h"
+#include "viewer/fly_camera.h"
+#include "viewer/imgui_layer.h"
+#include "viewer/input_script.h"
+#include "viewer/photon_points.h"
+#include "viewer/reference_view.h"
+#include "viewer/settings_panel.h"
+#include "viewer/viewer.h"
+#include "viewer/viewer_panels.h"
+
+#include <GLFW/glfw3.h>
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace ispm {
+
+inline constexpr int kPanelWidthPx = 380;    // the panel column right of the scene region
+inline constexpr size_t kPathCapacity = 512; // the panel's save-path field
+inline constexpr std::array<const char*, 4> kPointsNames = {"none", "bounce", "result", "both"};
+
+struct KeyAxis {
+    int key;
+    char name;
+    glm::vec3 move; // right, up, forward
+};
+
+inline constexpr std::array<KeyAxis, 6> kMoveKeys = {{
+    {GLFW_KEY_W, 'W', {0, 0, 1}},
+    {GLFW_KEY_S, 'S', {0, 0, -1}},
+    {GLFW_KEY_D, 'D', {1, 0, 0}},
+    {GLFW_KEY_A, 'A', {-1, 0, 0}},
+    {GLFW_KEY_E, 'E', {0, 1, 0}},
+    {GLFW_KEY_Q, 'Q', {0, -1, 0}},
+}};
+
+class Viewer {
+  public:
+    Viewer(Scene scene, const ViewerOptions& options);
+    int run();
+
+  private:
+    static void onScroll(GLFWwindow* window, double dx, double dy);
+    static void onKey(GLFWwindow* window, int key, int scancode, int action, int mods);
+    GLFWwindow* installCallbacks();
+    void syncRenderSize();
+    void applySettings(const Settings& settings);
+    void runScriptCommand(const ScriptCommand& c, CameraInput& input,
+                          std::vector<const ScriptCommand*>& afterFrame);
+    void writeScriptOutput(const ScriptCommand& c);
+    CameraInput readUserInput();
+    void drawPanels();
+    void takeScreenshot(const std::string& path);
+    void drawScenePicker();
+    void switchScene(const std::string& path);
+    void reloadShaders();
+    void waitForFile(const ScriptCommand& c);
+    void drawFrame(); // the frame or debug view, the photon points, the panels
+
+    Scene mScene;
+    ViewerOptions mOptions;
+    gl::WindowContext mContext;
+    GLFWwindow* mWindow;
+    gl::TimingMethod mTiming;
+    std::unique_ptr<FrameRunner> mRunner; // rebuilt when the scene picker loads another scene
+    ImGuiLayer mImGui;
+    DebugViewDrawer mDrawer;
+    PhotonPointsDrawer mPointsDrawer;
+    PhotonPoints mPoints = PhotonPoints::None;
+    ReferenceView mReference;
+    bool mReloadRequested = false; // F5
+    std::string mShaderStatus;     // the last reload's result (its errors stay until fixed)
+    bool mShaderError = false;
+    std::vector<DebugView> mViews = buildDebugViews();
+    int mViewIndex = 0;
+    ViewTransform mTransform;
+    FlyCamera mFly;
+    std::vector<std::string> mScenePaths;
+    std::string mPendingScenePath;
+    ScriptPlayer mScript;
+    TimingHistory mTimings;
+    PhotonCounts mCounts;       // of a recent frame (see kStatsReadbackFrames)
+    float mLuminanceMax = 0.0f; // likewise
+    uint64_t mFrameIndex = 0;
+    int mWindowWidth = 0;
+    int mWindowHeight = 0;
+    double mLastTime = 0.0;
+    double mPendingWheel = 0.0;
+    glm::dvec2 mLastCursor{0.0};
+    bool mDragging = false;
+    bool mScreenshotRequested = false; // F12
+    int mScreenshotCount = 0;
+    LightEdit mLightEdit = LightEdit::None;
+    AnimationClock mClock;
+    std::array<char, kPathCapacity> mSavePath{"settings.json"};
+    std::string mStatus;
+};
+
+} // namespace ispm

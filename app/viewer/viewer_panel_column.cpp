@@ -1,0 +1,113 @@
+// The viewer's panel column: scene picker, view, reference, camera, settings, lights, animation
+// and stats, right of the rendered region.
+#include "viewer/viewer_app.h"
+
+#include "core/strings.h"
+#include "scene/scene_loader.h"
+
+#include <imgui.h>
+
+#include <filesystem>
+
+namespace ispm {
+namespace {
+
+constexpr float kMaxExposureStops = 20.0f; // the debug view's exposure slider
+
+} // namespace
+
+void Viewer::drawPanels() {
+    const int renderWidth = mRunner->getWidth();
+    ImGui::SetNextWindowPos(ImVec2(static_cast<float>(renderWidth), 0.0f));
+    ImGui::SetNextWindowSize(
+        ImVec2(static_cast<float>(kPanelWidthPx), static_cast<float>(mWindowHeight)));
+    ImGui::Begin("ispm", nullptr,
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                     ImGuiWindowFlags_NoSavedSettings);
+    drawScenePicker();
+    if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) {
+        const DebugView& current = mViews[static_cast<size_t>(mViewIndex)];
+        if (ImGui::BeginCombo("debug view", current.name.c_str())) {
+            for (size_t i = 0; i < mViews.size(); ++i) {
+                if (ImGui::Selectable(mViews[i].name.c_str(), static_cast<int>(i) == mViewIndex)) {
+                    mViewIndex = static_cast<int>(i);
+                }
+            }
+            ImGui::EndCombo();
+        }
+        ImGui::SliderFloat("view stops", &mTransform.exposureStops, -kMaxExposureStops,
+                           kMaxExposureStops);
+        int points = static_cast<int>(mPoints);
+        if (ImGui::Combo("photon points", &points, kPointsNames.data(),
+                         static_cast<int>(kPointsNames.size()))) {
+            mPoints = static_cast<PhotonPoints>(points);
+        }
+        if (current.source == DebugView::Source::LightGBuffer ||
+            current.source == DebugView::Source::LightImportance) {
+            const int layers = mRunner->getLightGBuffer().getLayers();
+            ImGui::SliderInt("light camera", &mTransform.lightLayer, 0, std::max(0, layers - 1));
+        }
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        ImGui::TextWrapped("F12: screenshot   F5: reload shaders   drag: look   WASD/QE: fly   "
+                           "wheel: speed");
+        ImGui::PopStyleColor();
+        if (!mShaderStatus.empty()) {
+            const ImVec4 kErrorColour(1.0f, 0.4f, 0.4f, 1.0f);
+            const ImVec4 kOkColour(0.6f, 0.9f, 0.6f, 1.0f);
+            ImGui::PushStyleColor(ImGuiCol_Text, mShaderError ? kErrorColour : kOkColour);
+            ImGui::TextWrapped("%s", mShaderStatus.c_str());
+            ImGui::PopStyleColor();
+        }
+    }
+    if (ImGui::CollapsingHeader("Reference")) mReference.drawPanel(*mRunner);
+    if (ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen)) {
+        float speed = mFly.getSpeed();
+        if (ImGui::DragFloat("speed m/s", &speed, speed * 0.01f, 1e-4f, 1e6f, "%.3g")) {
+            mFly.setSpeed(speed);
+        }
+        const glm::vec3& p = mScene.camera.position;
+        ImGui::Text("position %.3f %.3f %.3f", static_cast<double>(p.x), static_cast<double>(p.y),
+                    static_cast<double>(p.z));
+        if (ImGui::Button("reset camera")) mFly.reset(mScene.camera);
+    }
+    if (ImGui::CollapsingHeader("Settings", ImGuiTreeNodeFlags_DefaultOpen)) {
+        Settings edited = mRunner->getSettings();
+        if (drawSettingsPanel(edited)) applySettings(edited);
+        ImGui::InputText("##savepath", mSavePath.data(), mSavePath.size());
+        ImGui::SameLine();
+        if (ImGui::Button("save")) {
+            saveRenderBlock(mSavePath.data(), mRunner->getSettings());
+            mStatus = strCat("saved the render block to ", mSavePath.data());
+        }
+    }
+    if (ImGui::CollapsingHeader("Lights")) {
+        const LightEdit edit =
+            drawLightsPanel(mScene.lights, mScene.camera.position,
+                            glm::length(mScene.computeWorldBounds().getExtent()));
+        if (edit != LightEdit::None && mLightEdit != LightEdit::AddedOrRemoved) mLightEdit = edit;
+    }
+    if (mScene.isAnimated() && ImGui::CollapsingHeader("Animation")) drawAnimationPanel(mClock);
+    if (ImGui::CollapsingHeader("Stats", ImGuiTreeNodeFlags_DefaultOpen)) {
+        drawStatsPanel(mTimings, mCounts, mContext.getInfo().renderer,
+                       gl::getTimingMethodName(mRunner->getTimingMethod()), mLuminanceMax,
+                       mRunner->getAccumulatedFrames());
+    }
+    if (!mStatus.empty()) ImGui::TextWrapped("%s", mStatus.c_str());
+    ImGui::End();
+}
+
+void Viewer::drawScenePicker() {
+    if (mScenePaths.empty()) return;
+    const std::string current = std::filesystem::path(mScene.sourcePath).filename().string();
+    if (!ImGui::BeginCombo("scene", current.c_str())) return;
+    std::string picked;
+    for (const std::string& path : mScenePaths) {
+        const std::string name = std::filesystem::path(path).filename().string();
+        if (ImGui::Selectable(name.c_str(), name == current)) picked = path;
+    }
+    ImGui::EndCombo();
+    // Switched at the start of the next frame: this frame's panels still read the old runner.
+    if (!picked.empty()) mPendingScenePath = picked;
+}
+
+} // namespace ispm
