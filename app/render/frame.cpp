@@ -13,6 +13,12 @@
 #include <cmath>
 
 namespace ispm {
+namespace {
+
+// frame_ms_target: frames measured at one budget before it changes (their median).
+constexpr size_t kBudgetFrames = 3;
+
+} // namespace
 
 Aov parseAov(const std::string& text, const std::string& where) {
     if (text == "direct") return Aov::Direct;
@@ -72,6 +78,7 @@ void FrameRunner::setSettings(const Settings& settings) {
     mImportanceStale = true;
     mFrameSettings = resolveFrameSettings(settings);
     resetHistory();
+    mBudgetCosts.clear(); // measured at the old settings
     const int lightResolution = mFrameSettings.shadowMapSize;
     if (lightResolution != mGpuScene.getLightResolution()) {
         // The light cameras' resolution is baked into the uploaded scene; the light G-buffer
@@ -213,7 +220,45 @@ void FrameRunner::renderFrame() {
     ++mFramesDrawn;
     runPass(*mCompose, inputs);
     runPass(*mTonemap, inputs);
-    if (auto samples = mTimer.collect()) setTimings(*samples);
+    if (auto samples = mTimer.collect()) {
+        setTimings(*samples);
+        adaptPhotonBudget();
+    }
+}
+
+void FrameRunner::adaptPhotonBudget() {
+    const double target = mFrameSettings.frameMsTarget;
+    // A still view that accumulates is converging: a new budget would restart it (and once its
+    // history is full, frames cost nothing).
+    if (target <= 0.0 || (mFrameSettings.accumulate > 0 && mHistoryFrames > 1)) {
+        mBudgetCosts.clear();
+        return;
+    }
+    if (mBudgetSettle > 0) {
+        --mBudgetSettle;
+        return;
+    }
+    const std::vector<std::string> photonPasses = {mEmit->getName(), mTrace->getName(),
+                                                   mDensity->getName(), mSplat->getName()};
+    mBudgetCosts.push_back(splitFrameCost(mTimings, photonPasses));
+    if (mBudgetCosts.size() < kBudgetFrames) return;
+    // The median frame of the window: one slow frame (another process, a first use of a
+    // program) does not move the budget.
+    std::sort(mBudgetCosts.begin(), mBudgetCosts.end(), [](const FrameCost& a, const FrameCost& b) {
+        return a.fixedMs + a.photonMs < b.fixedMs + b.photonMs;
+    });
+    const FrameCost median = mBudgetCosts[mBudgetCosts.size() / 2];
+    mBudgetCosts.clear();
+    const int photons = ispm::adaptPhotonBudget(mFrameSettings.photons, median, target,
+                                                int(findSetting("photons")->maxValue));
+    if (photons == mFrameSettings.photons) return;
+    Settings next = mSettings;
+    next.set("photons", photons, "frame_ms_target");
+    setSettings(next);
+    // Timer queries answer a few frames late: those frames still measured the old budget.
+    mBudgetSettle = mTimer.getMethod() == gl::TimingMethod::TimerQuery
+                        ? int(gl::PassTimer::kMaxFramesInFlight)
+                        : 0;
 }
 
 void FrameRunner::waitForTimings() {

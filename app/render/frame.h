@@ -5,6 +5,7 @@
 #include "gl/timer.h"
 #include "render/accumulate_pass.h"
 #include "render/denoise_pass.h"
+#include "render/frame_budget.h"
 #include "render/frame_constants.h"
 #include "render/gbuffer_pass.h"
 #include "render/gpu_scene.h"
@@ -122,7 +123,12 @@ class FrameRunner {
     int mWidth;
     int mHeight;
     void setTimings(const std::vector<gl::PassTimer::Sample>& samples);
-    uint32_t getFrameSeed() const; // FrameInputs::seed
+    // frame_ms_target: records the newest timings and, once enough frames measured the present
+    // budget, sets the adapted one (a settings change: the history starts anew).
+    void adaptPhotonBudget();
+    std::vector<FrameCost> mBudgetCosts; // frames measured at the present budget
+    int mBudgetSettle = 0;               // frames whose timings may predate the last change
+    uint32_t getFrameSeed() const;       // FrameInputs::seed
 
     gl::PassTimer mTimer;
     std::vector<PassTiming> mTimings;

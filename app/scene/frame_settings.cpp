@@ -103,6 +103,7 @@ FrameSettings resolveFrameSettings(const Settings& settings) {
     f.shadowBiasTexels = settings.getFloat("shadow_bias");
     f.seed = static_cast<uint32_t>(settings.getInt("seed"));
     f.photons = settings.getInt("photons");
+    f.frameMsTarget = settings.getFloat("frame_ms_target");
     f.bounces = settings.getInt("bounces");
     f.bouncesSet = settings.isSet("bounces");
     f.importanceSamples = settings.getInt("importance_samples");

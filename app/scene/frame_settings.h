@@ -41,6 +41,7 @@ struct FrameSettings {
     // Photons.
     uint32_t seed = 0;
     int photons = 0;
+    float frameMsTarget = 0.0f; // 0: the budget as set
     int bounces = 0;
     bool bouncesSet = false; // the reference path tracer has its own default
     float importance = 0.0f; // aimed share; 0 when importanceSamples is 0

@@ -82,6 +82,16 @@ const std::vector<SettingDesc>& table() {
          "",
          "photon budget of the frame, shared among the lights (photon_share, else by power)",
          {}},
+        {"frame_ms_target",
+         SettingType::Float,
+         0,
+         0,
+         1e6,
+         "ms",
+         "frame time to hold: the photon budget follows the measured times of the photon passes "
+         "(emit, trace, density, splat) over recent frames, steps of at most 2x, changes under "
+         "10% left alone, 1000 photons at least; not while a still view accumulates; 0 = off",
+         {}},
         {"bounces",
          SettingType::Int,
          3,

@@ -1,0 +1,58 @@
+// frame_ms_target in a running FrameRunner: a target no frame can meet takes the budget down to
+// its floor in 2x steps, a target far above the frame takes it up, and a still view that
+// accumulates keeps its budget.
+#include "support/gl_fixture.h"
+
+#include "render/frame.h"
+#include "render/frame_budget.h"
+#include "scene/scene_loader.h"
+
+#include <string>
+
+namespace ispm::test {
+namespace {
+
+Settings makeSettings(const Scene& scene, double targetMs, int accumulate) {
+    Settings s = scene.settings;
+    s.set("width", 32, "test");
+    s.set("height", 32, "test");
+    s.set("photons", 8000, "test");
+    s.set("bounces", 1, "test");
+    s.set("shadow_map_size", 128, "test");
+    s.set("frame_ms_target", targetMs, "test");
+    s.set("accumulate", accumulate, "test");
+    return s;
+}
+
+class FrameBudgetTest : public GlTest {};
+
+TEST_F(FrameBudgetTest, BudgetFollowsTheTarget) {
+    const Scene scene = loadScene(std::string(ISPM_ASSET_DIR) + "/scenes/cornell.json");
+    {
+        // 1 us a frame: 8000 -> 4000 -> 2000 -> 1000, three frames measured at each budget.
+        FrameRunner runner(scene, makeSettings(scene, 1e-3, 0), gl::TimingMethod::CpuFinish);
+        for (int f = 0; f < 3; ++f)
+            runner.renderFrame();
+        EXPECT_EQ(runner.getSettings().getInt("photons"), 4000);
+        for (int f = 0; f < 9; ++f)
+            runner.renderFrame();
+        EXPECT_EQ(runner.getSettings().getInt("photons"), kMinAdaptedPhotons);
+    }
+    {
+        // 1,000 s a frame: the budget doubles every three frames.
+        FrameRunner runner(scene, makeSettings(scene, 1e6, 0), gl::TimingMethod::CpuFinish);
+        for (int f = 0; f < 6; ++f)
+            runner.renderFrame();
+        EXPECT_EQ(runner.getSettings().getInt("photons"), 32000);
+    }
+    {
+        // A still view accumulating: its frames converge, the budget stays.
+        FrameRunner runner(scene, makeSettings(scene, 1e-3, 16), gl::TimingMethod::CpuFinish);
+        for (int f = 0; f < 9; ++f)
+            runner.renderFrame();
+        EXPECT_EQ(runner.getSettings().getInt("photons"), 8000);
+    }
+}
+
+} // namespace
+} // namespace ispm::test
