@@ -18,6 +18,7 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <exception>
 
@@ -85,6 +86,10 @@ PixelMask readMask(const std::string& path, const Image& like) {
 
 int runCompare(const std::string& a, const std::string& b, const std::string& minusPath,
                const std::string& maskPath, double maxRelMse) {
+    // NonNegativeNumber lets nan through (nan < 0 is false), which would turn the check off.
+    if (!std::isfinite(maxRelMse)) {
+        throw InputError(strCat("--max-relmse: expected a finite number >= 0, got ", maxRelMse));
+    }
     const Image test = readImage(a);
     Image reference = readImage(b);
     if (!minusPath.empty()) {

@@ -25,6 +25,8 @@
 #include <string_view>
 #include <system_error>
 
+#include <unistd.h>
+
 namespace ispm {
 namespace {
 
@@ -45,17 +47,38 @@ std::string getLowerExtension(const std::string& path) {
     return extension;
 }
 
-void writeFileBytes(const std::string& path, std::string_view bytes) {
+bool writeWhole(const std::string& path, std::string_view bytes) {
     std::ofstream file(path, std::ios::binary | std::ios::trunc);
     file.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
     file.close();
-    if (!file) {
+    return static_cast<bool>(file);
+}
+
+// Writes a temporary file beside `path` and renames it into place: a failed write (a full disk)
+// leaves whatever was at `path` as it was. Where no file can be made beside it (a folder that is
+// not writable, the file itself is), it is written in place.
+void writeFileBytes(const std::string& path, std::string_view bytes) {
+    const std::string temporary = strCat(path, ".tmp-", getpid());
+    std::error_code error;
+    if (!std::ofstream(temporary, std::ios::binary).is_open()) {
+        if (!writeWhole(path, bytes))
+            throw std::runtime_error(strCat(path, ": cannot write the image file"));
+        return;
+    }
+    if (writeWhole(temporary, bytes))
+        std::filesystem::rename(temporary, path, error);
+    else
+        error = std::make_error_code(std::errc::io_error);
+    if (error) {
+        std::filesystem::remove(temporary, error);
         throw std::runtime_error(strCat(path, ": cannot write the image file"));
     }
 }
 
 // False when the file cannot be opened or read; the caller reports it as an InputError.
 bool readFileBytes(const std::string& path, std::string& bytes) {
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(path, error)) return false; // a directory opens too
     std::ifstream file(path, std::ios::binary | std::ios::ate);
     const std::streamoff size = file ? static_cast<std::streamoff>(file.tellg()) : -1;
     if (size < 0) { // not opened, or not seekable (a directory)
@@ -263,7 +286,10 @@ Image readImage(const std::string& path) {
     if (!readFileBytes(path, bytes)) {
         std::error_code ignored; // exists() without it throws on, say, a permission error
         const bool exists = std::filesystem::exists(path, ignored);
-        throw fail(exists ? "cannot read the file" : "no such file");
+        const bool folder = std::filesystem::is_directory(path, ignored);
+        throw fail(folder   ? "a folder, not a file"
+                   : exists ? "cannot read the file"
+                            : "no such file");
     }
     try {
         if (bytes.starts_with(kPngSignature)) {

@@ -125,13 +125,14 @@ Image decodePfm(std::string_view bytes) {
         throw std::runtime_error(strCat("bad scale ", scale, " in header"));
     }
 
-    Image image(width, height);
-    const size_t dataSize = image.getPixelCount() * channels * kBytesPerFloat;
+    // Checked before the image is allocated: a header may claim far more than the file holds.
+    const size_t dataSize = size_t(width) * size_t(height) * channels * kBytesPerFloat;
     if (bytes.size() - dataOffset < dataSize) {
         throw std::runtime_error(strCat("truncated: ", width, "x", height, " needs ", dataSize,
                                         " bytes of pixels, the file has ",
                                         bytes.size() - dataOffset));
     }
+    Image image(width, height);
 
     const bool littleEndian = scale < 0.0f;
     const float magnitude = std::abs(scale);

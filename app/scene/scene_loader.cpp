@@ -107,7 +107,14 @@ void parseRender(const JsonNode& node, Settings& settings) {
     for (const auto& [name, value] : node.getMembers()) {
         const std::string where = strCat(node.getFile(), ": ", value.getPath());
         const nlohmann::json& json = value.getJson();
-        if (json.is_number()) {
+        const SettingDesc* desc = findSetting(name);
+        if (json.is_number() && desc && desc->type == SettingType::Enum) {
+            // A number would be read as the index of a choice ("tonemap": 1 meant filmic).
+            std::string choices;
+            for (std::string_view c : desc->choices)
+                choices += strCat(choices.empty() ? "" : ", ", c);
+            value.failGot(strCat("one of ", choices, " (a name, not a number)"));
+        } else if (json.is_number()) {
             settings.set(name, json.get<double>(), where);
         } else if (json.is_string()) {
             settings.setEnum(name, json.get<std::string>(), where);

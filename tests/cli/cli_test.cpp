@@ -131,6 +131,10 @@ TEST_F(CliTest, CompareReportsMetricsAndThreshold) {
             .exitCode,
         0);
     expectBadInput("compare " + a + " " + (mDir / "none.pfm").string(), {"none.pfm"});
+    // A folder (read as a huge file before: std::bad_alloc) and a threshold that is no number
+    // (nan passed the range check and turned the check off).
+    expectBadInput("compare " + mDir.string() + " " + a, {mDir.string(), "folder"});
+    expectBadInput("compare " + a + " " + b + " --max-relmse nan", {"--max-relmse"});
 }
 
 TEST_F(CliTest, CompareMaskRestrictsThePixels) {

@@ -211,6 +211,41 @@ TEST(ImageIoTest, UnwritablePathIsARuntimeErrorNamingIt) {
     }
 }
 
+TEST(ImageIoTest, AFailedWriteKeepsWhatWasThere) {
+    // The target is a folder with a file in it: the image cannot take its place, so the write
+    // fails, and neither the folder nor its file nor a temporary file is left changed.
+    const std::string folder = getTempPath("_target.pfm");
+    std::filesystem::create_directories(folder);
+    writeBytes(folder + "/kept.txt", "kept");
+    EXPECT_THROW(writeImage(folder, Image(2, 2)), std::runtime_error);
+    EXPECT_EQ(readBytes(folder + "/kept.txt"), "kept");
+    for (const auto& entry :
+         std::filesystem::directory_iterator(std::filesystem::path(folder).parent_path())) {
+        EXPECT_EQ(entry.path().string().find(folder + ".tmp"), std::string::npos)
+            << entry.path() << " left behind";
+    }
+    std::filesystem::remove_all(folder);
+    // A good write replaces an older image whole.
+    const std::string path = getTempPath(".pfm");
+    writeImage(path, makeRandomImage(8, 8, 0.0f, 1.0f, 1));
+    const Image second = makeRandomImage(3, 5, 0.0f, 1.0f, 2);
+    writeImage(path, second);
+    EXPECT_EQ(readImage(path).pixels, second.pixels);
+    std::filesystem::remove(path);
+}
+
+TEST(ImageIoTest, FolderAndOversizedHeaderAreInputErrors) {
+    const std::string folder = getTempPath("_folder");
+    std::filesystem::create_directories(folder);
+    expectInputErrorNaming(folder, [&] { readImage(folder); }); // was std::bad_alloc
+    std::filesystem::remove_all(folder);
+    // A header claiming 1048576 x 100 pixels over a few bytes: refused before any allocation.
+    const std::string path = getTempPath(".pfm");
+    writeBytes(path, "PF\n1048576 100\n-1.0\nabc");
+    expectInputErrorNaming(path, [&] { readImage(path); });
+    std::filesystem::remove(path);
+}
+
 TEST(ImageIoTest, MissingFileIsAnInputErrorNamingIt) {
     const std::string path = getTempPath("_missing.exr");
     expectInputErrorNaming(path, [&] { readImage(path); });

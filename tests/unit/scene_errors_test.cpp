@@ -298,6 +298,11 @@ std::vector<ErrorCase> getErrorCases() {
              d["render"] = {{"gamma", true}};
          }),
          {"/render/gamma"}},
+        {"SettingChoiceAsNumber",
+         mutate([](json& d) {
+             d["render"] = {{"tonemap", 1}};
+         }),
+         {"/render/tonemap", "filmic", "not a number"}},
         {"CityHeightRangeReversed",
          mutate([](json& d) {
              d["objects"][0] = makeBoxCity("building_height", {30, 10});
