@@ -12,6 +12,8 @@
 #include <cstdio>
 #include <filesystem>
 
+#include <unistd.h>
+
 namespace ispm {
 
 void addCameraOption(CLI::App& cmd, std::string& cameraName) {
@@ -28,6 +30,24 @@ OutputKind classifyOutput(const std::string& path, const std::string& where) {
     if (ext == ".exr") return OutputKind::Exr;
     throw InputError(
         strCat(where, ": expected a file ending in .png, .pfm or .exr, got '", path, "'"));
+}
+
+void checkWritableOutput(const std::string& path, const std::string& where) {
+    namespace fs = std::filesystem;
+    const fs::path target(path);
+    const fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+    std::error_code error;
+    const auto fail = [&](std::string_view why) {
+        return InputError(strCat(where, ": cannot write '", path, "': ", why));
+    };
+    if (!fs::is_directory(folder, error)) throw fail(strCat("no folder '", folder.string(), "'"));
+    if (fs::is_directory(target, error)) throw fail("a folder is in its place");
+    // The file is written beside itself and renamed into place (image_io.cpp), or in place.
+    const bool folderWritable = access(folder.c_str(), W_OK) == 0;
+    const bool fileWritable = fs::exists(target, error) && access(target.c_str(), W_OK) == 0;
+    if (!folderWritable && !fileWritable) {
+        throw fail(strCat("the folder '", folder.string(), "' is not writable"));
+    }
 }
 
 Settings makeCommandLineSettings(const std::vector<std::string>& sets, std::optional<int> width,

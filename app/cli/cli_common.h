@@ -22,6 +22,9 @@ enum class OutputKind { Png, Pfm, Exr };
 
 // From the file extension; throws InputError naming `where` for anything else.
 OutputKind classifyOutput(const std::string& path, const std::string& where);
+// Throws InputError naming `where` when `path` cannot be written: its folder missing or not
+// writable, or a folder in its place. Checked before a render, not after it.
+void checkWritableOutput(const std::string& path, const std::string& where);
 
 // --set values, then --width/--height, checked against the settings table. Callers merge the
 // result over the scene's `render` block (the command line wins).

@@ -97,6 +97,7 @@ int runReference(const RenderOptions& options, const Scene& scene, const Setting
 int runRender(const RenderOptions& options) {
     const auto start = std::chrono::steady_clock::now();
     const OutputKind kind = classifyOutput(options.outputPath, "--output");
+    checkWritableOutput(options.outputPath, "--output");
     const Aov aov = parseAov(options.aov, "--aov");
     if (options.mode != "ispm" && options.mode != "reference") {
         throw InputError(strCat("--mode: expected ispm or reference, got '", options.mode, "'"));

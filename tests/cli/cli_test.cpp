@@ -108,6 +108,13 @@ TEST_F(CliTest, BadCommandLineValuesExitTwo) {
     expectBadInput("render " + scene + " -o x.png --set tonemap=sepia", {"tonemap", "sepia"});
     expectBadInput("render " + scene + " -o x.pfm --aov sideways", {"--aov"});
     expectBadInput("render " + scene + " -o x.png --time -1", {"--time"});
+    // Outputs that cannot be written are refused before the render (exit 2), not after it.
+    expectBadInput("render " + scene + " -o " + (mDir / "no_folder" / "x.png").string(),
+                   {"--output", "no_folder"});
+    expectBadInput("render " + scene + " -o " + mDir.string() + "/", {"--output"});
+    std::filesystem::create_directories(mDir / "taken.png");
+    expectBadInput("render " + scene + " -o " + (mDir / "taken.png").string(),
+                   {"--output", "taken.png", "folder"});
     expectBadInput("render " + scene + " -o x.png --time soon", {"--time"});
     expectBadInput("frobnicate", {"frobnicate"});
 }
