@@ -3,6 +3,7 @@
 // Codecs work on memory buffers so that every failure is reported the same way.
 #include "image/image_io.h"
 
+#include "core/file_write.h"
 #include "core/input_error.h"
 #include "core/strings.h"
 #include "image/pfm.h"
@@ -25,8 +26,6 @@
 #include <string_view>
 #include <system_error>
 
-#include <unistd.h>
-
 namespace ispm {
 namespace {
 
@@ -45,34 +44,6 @@ std::string getLowerExtension(const std::string& path) {
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     return extension;
-}
-
-bool writeWhole(const std::string& path, std::string_view bytes) {
-    std::ofstream file(path, std::ios::binary | std::ios::trunc);
-    file.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    file.close();
-    return static_cast<bool>(file);
-}
-
-// Writes a temporary file beside `path` and renames it into place: a failed write (a full disk)
-// leaves whatever was at `path` as it was. Where no file can be made beside it (a folder that is
-// not writable, the file itself is), it is written in place.
-void writeFileBytes(const std::string& path, std::string_view bytes) {
-    const std::string temporary = strCat(path, ".tmp-", getpid());
-    std::error_code error;
-    if (!std::ofstream(temporary, std::ios::binary).is_open()) {
-        if (!writeWhole(path, bytes))
-            throw std::runtime_error(strCat(path, ": cannot write the image file"));
-        return;
-    }
-    if (writeWhole(temporary, bytes))
-        std::filesystem::rename(temporary, path, error);
-    else
-        error = std::make_error_code(std::errc::io_error);
-    if (error) {
-        std::filesystem::remove(temporary, error);
-        throw std::runtime_error(strCat(path, ": cannot write the image file"));
-    }
 }
 
 // False when the file cannot be opened or read; the caller reports it as an InputError.
@@ -161,6 +132,10 @@ Image decodePng(std::string_view bytes) {
     if (message) {
         FreeEXRErrorMessage(message);
     }
+    // tinyexr ends its messages with a newline and may hold several: one line for the user.
+    while (!reason.empty() && std::isspace(static_cast<unsigned char>(reason.back())))
+        reason.pop_back();
+    std::replace(reason.begin(), reason.end(), '\n', ';');
     throw std::runtime_error(reason);
 }
 
@@ -275,7 +250,11 @@ void writeImage(const std::string& path, const Image& image) {
     } catch (const std::runtime_error& e) {
         throw std::runtime_error(strCat(path, ": ", e.what()));
     }
-    writeFileBytes(path, bytes);
+    try {
+        writeFileWhole(path, bytes);
+    } catch (const std::runtime_error&) {
+        throw std::runtime_error(strCat(path, ": cannot write the image file"));
+    }
 }
 
 Image readImage(const std::string& path) {

@@ -2,12 +2,16 @@
 // shortest round-trip form, independent of the C++ locale.
 #include "scene/obj_io.h"
 
+#include "core/file_write.h"
+#include "core/input_error.h"
 #include "core/strings.h"
 #include "scene/mesh_builder.h"
 
 #include <tiny_obj_loader.h>
 
+#include <algorithm>
 #include <array>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
@@ -70,14 +74,6 @@ void appendVec3(std::string& out, const char* keyword, const glm::vec3& v) {
         appendFloat(out, v[i]);
     }
     out += '\n';
-}
-
-void writeFile(const std::filesystem::path& path, const std::string& text) {
-    std::ofstream out(path, std::ios::binary);
-    if (!out) throw std::runtime_error(strCat(path.string(), ": cannot open for writing"));
-    out.write(text.data(), static_cast<std::streamsize>(text.size()));
-    out.close();
-    if (!out) throw std::runtime_error(strCat(path.string(), ": write failed"));
 }
 
 } // namespace
@@ -153,6 +149,14 @@ ObjModel importObj(const std::string& objPath) {
 
 void exportObj(const Scene& scene, const std::string& objPath) {
     const std::filesystem::path path(objPath);
+    std::string extension = path.extension().string();
+    for (char& c : extension)
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (extension != ".obj") {
+        // The MTL goes beside it under the same name: "-o x.mtl" would write the MTL and then
+        // the OBJ over it.
+        throw InputError(strCat("-o: expected a file ending in .obj, got '", objPath, "'"));
+    }
     std::filesystem::path mtlPath = path;
     mtlPath.replace_extension(".mtl");
 
@@ -160,7 +164,10 @@ void exportObj(const Scene& scene, const std::string& objPath) {
     std::string mtl = "# ispm scene materials\n";
     for (size_t i = 0; i < scene.materials.size(); ++i) {
         const Material& m = scene.materials[i];
-        names.push_back(sanitizeName(m.name, "material_", i));
+        std::string name = sanitizeName(m.name, "material_", i);
+        // Names that differ only in blanks would meet: later ones take their index.
+        if (std::find(names.begin(), names.end(), name) != names.end()) name += strCat("_", i);
+        names.push_back(name);
         const bool isTransmissive = m.transmissive != glm::vec3(0.0f);
         mtl += "\nnewmtl " + names.back() + "\n";
         appendVec3(mtl, "Kd", m.diffuse);
@@ -198,8 +205,8 @@ void exportObj(const Scene& scene, const std::string& objPath) {
         }
         vertexBase += mesh.positions.size();
     }
-    writeFile(mtlPath, mtl);
-    writeFile(path, obj);
+    // Both land or neither: no cut OBJ, no MTL without its OBJ.
+    writeFilesWhole({{mtlPath.string(), mtl}, {path.string(), obj}});
 }
 
 } // namespace ispm

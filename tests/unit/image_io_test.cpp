@@ -265,6 +265,17 @@ TEST(ImageIoTest, CorruptOrUnknownFilesAreInputErrors) {
     const std::string path = getTempPath(".exr");
     writeBytes(path, std::string("\x76\x2f\x31\x01", 4) + "garbage");
     expectInputErrorNaming(path, [&] { readImage(path); });
+    // Truncated EXR: tinyexr's message ends with a newline; the error is still one line.
+    writeImage(path, makeRandomImage(4, 4, 0.0f, 1.0f, 5));
+    std::string exr = readBytes(path);
+    exr.resize(exr.size() / 2);
+    writeBytes(path, exr);
+    try {
+        readImage(path);
+        ADD_FAILURE() << "expected an InputError";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
+    }
     writeBytes(path, "\x89PNG\r\n\x1a\ngarbage");
     expectInputErrorNaming(path, [&] { readImage(path); });
     writeBytes(path, "GIF89a");

@@ -1,5 +1,6 @@
 // OBJ import through scene files (materials from MTL, overrides, errors) and OBJ + MTL export of
 // whole scenes, generated geometry included.
+#include "core/input_error.h"
 #include "scene/box_city.h"
 #include "scene/obj_io.h"
 #include "scene_test_util.h"
@@ -161,6 +162,28 @@ TEST(ObjExport, UnwritablePathThrowsNamingTheFile) {
     } catch (const std::runtime_error& e) {
         EXPECT_TRUE(contains(e.what(), "/nonexistent_ispm_dir/out.")) << e.what();
     }
+}
+
+TEST(ObjExport, NamesStayApartAndOnlyObjPathsAreTaken) {
+    ScratchDir dir;
+    Scene scene = loadScene(dir.write("s.json", R"({
+        "camera": {"position": [0, 1, -3], "target": [0, 0, 0]},
+        "materials": {"red paint": {"diffuse": [0.8, 0.1, 0.1]},
+                      "red_paint": {"diffuse": [0.1, 0.1, 0.8]}},
+        "objects": [
+            {"type": "box", "material": "red paint", "min": [0, 0, 0], "max": [1, 1, 1]},
+            {"type": "box", "material": "red_paint", "min": [2, 0, 0], "max": [3, 1, 1]}
+        ]
+    })"));
+    const std::string objPath = dir.getPath("two.obj");
+    exportObj(scene, objPath);
+    // Two materials whose names meet once blanks become underscores stay two materials.
+    const ObjModel back = importObj(objPath);
+    ASSERT_EQ(back.materials.size(), 2u);
+    EXPECT_NE(back.materials[0].name, back.materials[1].name);
+    EXPECT_NE(back.materials[0].diffuse, back.materials[1].diffuse);
+    // "-o x.mtl" would have written the MTL and then the OBJ over it.
+    EXPECT_THROW(exportObj(scene, dir.getPath("two.mtl")), InputError);
 }
 
 } // namespace
