@@ -15,6 +15,10 @@ namespace ispm {
 namespace {
 
 constexpr size_t kMaxShownValueChars = 40; // longer values are cut in messages, which stay one line
+// Scene files nest a handful of levels (an animation's keyframes are the deepest, at 5). Deeper
+// text is refused as it is read: each level costs the path tracker a path as long as the depth,
+// and 100,000 levels exhausted memory and the stack.
+constexpr int kMaxJsonDepth = 64;
 
 // Follows nlohmann's parse callbacks to know the JSON path of the value being read.
 class PathTracker {
@@ -112,7 +116,13 @@ std::string stripExceptionId(const std::string& message) {
 nlohmann::json parseJsonText(const std::string& text, const std::string& file) {
     PathTracker tracker(file);
     const nlohmann::json::parser_callback_t callback =
-        [&tracker](int /*depth*/, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+        [&tracker, &file](int depth, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+            using Event = nlohmann::json::parse_event_t;
+            if (depth >= kMaxJsonDepth &&
+                (event == Event::object_start || event == Event::array_start)) {
+                throwInputError(file, tracker.getCurrentPath(),
+                                strCat("at most ", kMaxJsonDepth, " levels of nesting"));
+            }
             return tracker.onEvent(event, parsed);
         };
     try {

@@ -377,6 +377,18 @@ TEST(SceneErrors, MissingSceneFileIsInputError) {
     }
 }
 
+TEST(SceneErrors, DeepNestingIsRefusedAsItIsRead) {
+    // 100,000 nested arrays (200 KB) took memory quadratic in the depth and crashed.
+    constexpr size_t kDepth = 100000;
+    ScratchDir dir;
+    const std::string text =
+        "{\"camera\": " + std::string(kDepth, '[') + std::string(kDepth, ']') + "}";
+    const std::string message = getLoadError(dir, text, "deep.json");
+    EXPECT_TRUE(contains(message, "deep.json")) << message.substr(0, 200);
+    EXPECT_TRUE(contains(message, "levels of nesting")) << message.substr(0, 200);
+    EXPECT_LT(message.size(), 400u); // one line, its path cut at the limit
+}
+
 TEST(SceneErrors, MessageHasTheDocumentedForm) {
     // "<file>: <JSON path>: expected <what>", as the format document promises.
     ScratchDir dir;
