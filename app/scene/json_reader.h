@@ -27,6 +27,10 @@ struct NumberRange {
     bool isHiOpen = false;
 
     static NumberRange getAny() { return {}; }
+    // Positions, offsets and angles: within 10,000 km (or degrees), where a float still resolves
+    // a metre and the renderer's derived planes and epsilons stay finite (3e38 gave NaN pixels).
+    static NumberRange getCoordinate() { return {-kMaxCoordinate, kMaxCoordinate, false, false}; }
+    static constexpr double kMaxCoordinate = 1e7;
     static NumberRange getAtLeast(double lo) { return {lo, kInf, false, false}; }
     static NumberRange getAbove(double lo) { return {lo, kInf, true, false}; }
     static NumberRange getClosed(double lo, double hi) { return {lo, hi, false, false}; }
@@ -73,7 +77,7 @@ class JsonNode {
     std::string readString() const;
 
     // Exactly 3 numbers; each element checked against `range` (errors name the element's path).
-    glm::vec3 readVec3(const NumberRange& range = NumberRange::getAny()) const;
+    glm::vec3 readVec3(const NumberRange& range = NumberRange::getCoordinate()) const;
     // A non-zero vector, normalised.
     glm::vec3 readDirection() const;
     // [min, max] with each in `range` and min <= max.

@@ -19,6 +19,7 @@ namespace {
 // A spot's light camera has a field of view of twice its outer angle: at 90 degrees the
 // perspective projection degenerates, so the outer half-angle stops just short of it.
 constexpr double kMaxSpotHalfAngleDeg = 89.9;
+constexpr double kMaxLightPower = 1e12;
 // The camera's up vector must make at least this sine with the view direction to define a roll.
 constexpr float kMinUpSine = 1e-4f;
 constexpr double kMaxFovYDeg = 180.0; // exclusive: a pinhole sees less than a half space
@@ -59,7 +60,8 @@ Light parseLight(const JsonNode& node) {
     node.requireObject("a light");
     const JsonNode typeNode = node.get("type");
     const std::string type = typeNode.readString();
-    const NumberRange nonNegative = NumberRange::getAtLeast(0.0);
+    // Up to 1e12 W/sr or W/m^2 (the sun gives 1e3 W/m^2): 3e38 W/sr overflowed photon powers.
+    const NumberRange nonNegative = NumberRange::getClosed(0.0, kMaxLightPower);
     Light light;
     if (type == "point") {
         node.checkKeys({"type", "position", "intensity", "photon_share", "animation"},

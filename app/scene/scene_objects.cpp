@@ -19,6 +19,8 @@ namespace ispm {
 namespace {
 
 constexpr size_t kMatrixSize = 4;
+constexpr double kMinScale = 1e-6; // `scale`, per axis
+constexpr double kMaxScale = 1e6;
 // An affine matrix's last row is (0 0 0 1) within this (tools print 1e-17 for zero).
 constexpr float kAffineTolerance = 1e-6f;
 // |det| of the 3x3 part below this fraction of its columns' length product: flat or singular.
@@ -77,7 +79,8 @@ glm::mat4 parseTransform(const JsonNode& object) {
         m = glm::rotate(m, glm::radians(deg.x), glm::vec3(1, 0, 0));
     }
     if (auto s = object.find("scale")) {
-        const NumberRange positive = NumberRange::getAbove(0.0);
+        // A millionth to a million: 1e-38 and 1e-45 (a denormal) broke the BVH and the planes.
+        const NumberRange positive = NumberRange::getClosed(kMinScale, kMaxScale);
         const glm::vec3 scale =
             s->getJson().is_number() ? glm::vec3(s->readFloat(positive)) : s->readVec3(positive);
         m = glm::scale(m, scale);

@@ -211,7 +211,7 @@ TEST(AnimationTest, ErrorsNameFileAndPath) {
          {"/lights/1/animation/orbit/centre", "unknown key"}},
         {"spot bad rate",
          makeScene(nullptr, json{{"rotate_deg_per_s", {0, "x", 0}}}),
-         {"/lights/0/animation/rotate_deg_per_s/1", "finite number"}},
+         {"/lights/0/animation/rotate_deg_per_s/1", "a number in"}},
         {"point turned in place", pointDoc, {"/lights/0/animation/pivot", "point light"}},
     };
     ScratchDir dir;

@@ -232,7 +232,7 @@ std::vector<ErrorCase> getErrorCases() {
          {"/objects/0/matrix", "4x4"}},
         {"ZeroScale",
          mutate([](json& d) { d["objects"][0]["scale"] = 0; }),
-         {"/objects/0/scale", "> 0"}},
+         {"/objects/0/scale", "[1e-06, 1000000]"}},
         {"BoxMaxBelowMin",
          mutate([](json& d) {
              d["objects"][0] = {
@@ -248,7 +248,7 @@ std::vector<ErrorCase> getErrorCases() {
          mutate([](json& d) {
              d["lights"][0]["intensity"] = {1, -2, 1};
          }),
-         {"/lights/0/intensity/1", ">= 0"}},
+         {"/lights/0/intensity/1", "[0, 1e+12]"}},
         {"SpotTooWide",
          mutate([](json& d) {
              d["lights"][0] = {{"type", "spot"},          {"position", {0, 2, 0}},
@@ -298,6 +298,19 @@ std::vector<ErrorCase> getErrorCases() {
              d["render"] = {{"gamma", true}};
          }),
          {"/render/gamma"}},
+        {"FarTranslate",
+         mutate([](json& d) {
+             d["objects"][0]["translate"] = {3e38, 0, 0};
+         }),
+         {"/objects/0/translate/0", "3e+38"}},
+        {"TinyScale",
+         mutate([](json& d) { d["objects"][0]["scale"] = 1e-38; }),
+         {"/objects/0/scale", "1e-06"}},
+        {"HugeIntensity",
+         mutate([](json& d) {
+             d["lights"][0]["intensity"] = {3e38, 3e38, 3e38};
+         }),
+         {"/lights/0/intensity/0", "1e+12"}},
         {"SettingChoiceAsNumber",
          mutate([](json& d) {
              d["render"] = {{"tonemap", 1}};
