@@ -47,6 +47,25 @@ Material convertMaterial(const tinyobj::material_t& m) {
         material.transmissive = toVec3(m.transmittance);
         material.ior = static_cast<float>(m.ior);
     }
+    // What the JSON loader checks for its own materials: finite, not negative, emission bounded
+    // like a light (negative reflectances and unbounded emission were accepted).
+    const auto check = [&m](const char* key, glm::vec3 v, float hi) {
+        for (int i = 0; i < 3; ++i) {
+            if (!(v[i] >= 0.0f && v[i] <= hi)) {
+                throw std::runtime_error(strCat("material '", m.name, "': ", key, " ", v[i],
+                                                ": expected a number in [0, ", hi, "]"));
+            }
+        }
+    };
+    constexpr float kMaxReflectance = 1.0f;
+    constexpr float kMaxEmission = 1e12f; // W/(m^2 sr), as light intensities
+    check("Kd", material.diffuse, kMaxReflectance);
+    check("Ks", material.specular, kMaxReflectance);
+    check("Tf", material.transmissive, kMaxReflectance);
+    check("Ke", material.emission, kMaxEmission);
+    if (!std::isfinite(material.phongExponent) || !std::isfinite(material.ior)) {
+        throw std::runtime_error(strCat("material '", m.name, "': Ns or Ni is not finite"));
+    }
     return material;
 }
 

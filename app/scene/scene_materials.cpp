@@ -27,7 +27,8 @@ Material parseMaterial(const JsonNode& node, std::string name) {
         material.ior = v->readFloat(NumberRange::getAtLeast(static_cast<double>(kMinIor)));
     }
     if (auto v = node.find("emission")) {
-        material.emission = v->readVec3(NumberRange::getAtLeast(0.0));
+        // Bounded like light intensities (inf made NaN pixels).
+        material.emission = v->readVec3(NumberRange::getClosed(0.0, 1e12));
     }
     const std::string problem = checkMaterialEnergy(material);
     if (!problem.empty()) node.fail(problem);

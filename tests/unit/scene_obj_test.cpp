@@ -85,6 +85,21 @@ TEST(ObjImport, MtlMaterialMustConserveEnergy) {
     EXPECT_TRUE(contains(message, "'red'")) << message;
 }
 
+TEST(ObjImport, MaterialValuesOutOfRangeAreErrors) {
+    // Checked as the JSON loader checks its own materials (a negative reflectance or an emission
+    // of 1e30 was accepted).
+    for (const char* mtl : {"newmtl red\nKd 0.5 -0.1 0.1\nnewmtl shiny\n",
+                            "newmtl red\nKd 0.5 0.1 0.1\nKe 1e30 0 0\nnewmtl shiny\n",
+                            "newmtl red\nKd 0.5 0.1 0.1\nKs -1 0 0\nnewmtl shiny\n"}) {
+        ScratchDir dir;
+        dir.write("model.obj", kObjText);
+        dir.write("model.mtl", mtl);
+        const std::string message = getLoadError(dir, makeObjScene(""), "s.json");
+        EXPECT_TRUE(contains(message, "/objects/0/obj")) << message;
+        EXPECT_TRUE(contains(message, "'red'")) << message;
+    }
+}
+
 TEST(ObjImport, FileWithoutFacesIsAnError) {
     ScratchDir dir;
     dir.write("model.obj", "v 0 0 0\nv 1 0 0\n");
