@@ -15,6 +15,8 @@
 namespace ispm {
 namespace {
 
+constexpr uint64_t kMaxResultPhotons = uint64_t(1) << 23; // 64 bytes each
+
 // Uniform locations of shaders/photon/photon_emit.geom.
 constexpr GLint kLocationView = 0;
 constexpr GLint kLocationGridSize = 1;
@@ -46,7 +48,11 @@ void PhotonEmitPass::execute(const FrameInputs& inputs) {
                                   static_cast<uint32_t>(inputs.settings.photons));
     const uint32_t photons = countPhotons(mGrids);
     const auto bounces = static_cast<uint32_t>(inputs.settings.bounces);
-    mBuffers.reserve(std::max(photons, 1u), std::max(photons * bounces, 1u));
+    // Every photon may store a result at every bounce, but most are absorbed or leave first: the
+    // result buffer holds at most kMaxResultPhotons (512 MiB); appends past it are counted as
+    // overflow, which render and bench print.
+    const uint64_t results = std::min<uint64_t>(uint64_t(photons) * bounces, kMaxResultPhotons);
+    mBuffers.reserve(std::max(photons, 1u), std::max(uint32_t(results), 1u));
     std::vector<glm::uvec4> gridTable;
     mGridLights.clear();
     for (const EmissionGrid& g : mGrids) {

@@ -96,7 +96,7 @@ const std::vector<SettingDesc>& table() {
          SettingType::Int,
          3,
          0,
-         16,
+         64, // the reference's default: --bounces reaches it in both modes
          "",
          "indirect light that reflected 1..bounces times is kept (0: direct light only)",
          {}},

@@ -116,6 +116,8 @@ TEST_F(CliTest, BadCommandLineValuesExitTwo) {
     expectBadInput("render " + scene + " -o " + (mDir / "taken.png").string(),
                    {"--output", "taken.png", "folder"});
     expectBadInput("render " + scene + " -o x.png --time soon", {"--time"});
+    // --bounces reaches the reference's default of 64 in both modes, no further.
+    expectBadInput("render " + scene + " -o x.png --bounces 65", {"--bounces", "64"});
     expectBadInput("frobnicate", {"frobnicate"});
 }
 
