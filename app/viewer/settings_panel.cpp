@@ -2,6 +2,8 @@
 // ranges from 1e-6 to 1e9; Ctrl+click types a value.
 #include "viewer/settings_panel.h"
 
+#include "core/file_write.h"
+
 #include "core/strings.h"
 
 #include <imgui.h>
@@ -119,10 +121,12 @@ bool drawSettingsPanel(Settings& settings) {
 }
 
 void saveRenderBlock(const std::string& path, const Settings& settings) {
-    std::ofstream file(path);
     const nlohmann::json document = {{"render", formatRenderBlock(settings)}};
-    file << document.dump(kJsonIndent) << "\n";
-    if (!file) throw std::runtime_error(strCat(path, ": cannot write the render block"));
+    try {
+        writeFileWhole(path, document.dump(kJsonIndent) + "\n");
+    } catch (const std::runtime_error&) {
+        throw std::runtime_error(strCat(path, ": cannot write the render block"));
+    }
 }
 
 } // namespace ispm

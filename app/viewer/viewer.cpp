@@ -259,7 +259,18 @@ int Viewer::run() {
         for (const ScriptCommand* c : afterFrame)
             writeScriptOutput(*c);
         if (mScreenshotRequested) {
-            takeScreenshot(strCat("ispm_screenshot_", mScreenshotCount++, ".png"));
+            // F12: numbered past the files already there, reported in the panel when the folder
+            // cannot take it.
+            std::string path;
+            std::error_code error;
+            do {
+                path = strCat("ispm_screenshot_", mScreenshotCount++, ".png");
+            } while (std::filesystem::exists(path, error));
+            try {
+                takeScreenshot(path);
+            } catch (const std::runtime_error& e) {
+                mStatus = e.what();
+            }
             mScreenshotRequested = false;
         }
         ++frame;

@@ -76,8 +76,12 @@ void Viewer::drawPanels() {
         ImGui::InputText("##savepath", mSavePath.data(), mSavePath.size());
         ImGui::SameLine();
         if (ImGui::Button("save")) {
-            saveRenderBlock(mSavePath.data(), mRunner->getSettings());
-            mStatus = strCat("saved the render block to ", mSavePath.data());
+            try { // an unwritable path is reported here, the viewer goes on
+                saveRenderBlock(mSavePath.data(), mRunner->getSettings());
+                mStatus = strCat("saved the render block to ", mSavePath.data());
+            } catch (const std::runtime_error& e) {
+                mStatus = e.what();
+            }
         }
     }
     if (ImGui::CollapsingHeader("Lights")) {
