@@ -3,10 +3,11 @@
 # configurations labelled by photon count with their Pareto front, and the path tracer's curve.
 # Usage: tools/plot_bench.py CSV OUT.png [--title T]   (Debian's matplotlib: /usr/bin/python3)
 import argparse
-import csv
 import sys
 
 import matplotlib
+from csv_input import fail
+from csv_input import read_rows as read_csv_rows
 
 matplotlib.use("Agg")  # headless: no display on the test machine
 import matplotlib.pyplot as plt  # noqa: E402
@@ -14,25 +15,11 @@ import matplotlib.pyplot as plt  # noqa: E402
 FIGURE_SIZE_IN = (7.0, 5.0)
 DPI = 120
 LABEL_OFFSET_PT = (5, 4)  # photon-count labels sit just above and right of their point
-EXIT_BAD_INPUT = 2  # the same code the ispm CLI uses for bad input
 REQUIRED_COLUMNS = ("kind", "spp", "photons", "total_ms", "relmse_total")
 
 
-def fail(message):
-    print(f"plot_bench.py: {message}", file=sys.stderr)
-    sys.exit(EXIT_BAD_INPUT)
-
-
 def read_rows(path):
-    try:
-        with open(path, newline="") as f:
-            reader = csv.DictReader(f)
-            missing = [c for c in REQUIRED_COLUMNS if c not in (reader.fieldnames or [])]
-            if missing:
-                fail(f"{path}: expected columns {', '.join(missing)} (an `ispm bench --sweep` CSV)")
-            rows = list(reader)
-    except OSError as e:
-        fail(f"{path}: {e.strerror}")
+    rows = read_csv_rows(path, REQUIRED_COLUMNS, "an `ispm bench --sweep` CSV")
     ispm = [r for r in rows if r["kind"] == "ispm"]
     reference = [r for r in rows if r["kind"] == "reference"]
     if not ispm and not reference:

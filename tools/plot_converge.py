@@ -2,35 +2,21 @@
 # Draws tools/converge.sh's CSV as rel RMSE (4x4) of the indirect light against accumulated frames
 # (log-log), one line per scene, with the 1/sqrt(frames) of pure noise from each first frame.
 # Usage: tools/plot_converge.py CSV OUT.png   (Debian's matplotlib: /usr/bin/python3)
-import csv
 import sys
 
 import matplotlib
+from csv_input import fail, read_rows
 
 matplotlib.use("Agg")  # headless: no display on the test machine
 import matplotlib.pyplot as plt  # noqa: E402
 
 FIGURE_SIZE_IN = (7.0, 5.0)
 DPI = 120
-EXIT_BAD_INPUT = 2  # the same code the ispm CLI uses for bad input
 REQUIRED_COLUMNS = ("label", "frames", "energy", "rel_rmse4")
 
 
-def fail(message):
-    print(f"plot_converge.py: {message}", file=sys.stderr)
-    sys.exit(EXIT_BAD_INPUT)
-
-
 def read_series(path):
-    try:
-        with open(path, newline="") as f:
-            reader = csv.DictReader(f)
-            missing = [c for c in REQUIRED_COLUMNS if c not in (reader.fieldnames or [])]
-            if missing:
-                fail(f"{path}: expected columns {', '.join(missing)} (a tools/converge.sh CSV)")
-            rows = list(reader)
-    except OSError as e:
-        fail(f"{path}: {e.strerror}")
+    rows = read_rows(path, REQUIRED_COLUMNS, "a tools/converge.sh CSV")
     series = {}
     for i, r in enumerate(rows, start=2):
         try:

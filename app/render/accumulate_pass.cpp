@@ -48,7 +48,8 @@ float computeAccumulateWeight(int accumulate, uint32_t historyFrames) {
     return 1.0f / static_cast<float>(historyFrames + 1); // a full history is never drawn to
 }
 
-float computeHistoryCap(int accumulate, const FrameInputs& inputs) {
+float computeHistoryCap(const FrameInputs& inputs) {
+    const int accumulate = inputs.settings.accumulate;
     if (accumulate <= 0 || inputs.historyReset) return 0.0f;
     if (inputs.moved) return float(accumulate - 1);
     return float(inputs.historyFrames + kMovingFramesCarried);
@@ -124,8 +125,8 @@ void AccumulatePass::execute(const FrameInputs& inputs) {
     mHistoryPosition.bindUnit(gpu::kUnitHistoryPosition);
     mHistoryNormal.bindUnit(gpu::kUnitHistoryNormal);
     glUniform1f(kLocationDirectWeight, computeAccumulateWeight(accumulate, inputs.historyFrames));
-    glUniform1f(kLocationHistoryCap, computeHistoryCap(accumulate, inputs));
-    glUniform1i(kLocationReproject, inputs.moved && !inputs.historyReset ? 1 : 0);
+    glUniform1f(kLocationHistoryCap, computeHistoryCap(inputs));
+    glUniform1i(kLocationReproject, inputs.moved ? 1 : 0); // after a reset the cap is 0
     glUniformMatrix4fv(kLocationPreviousClipFromWorld, 1, GL_FALSE,
                        &inputs.previousClipFromWorld[0][0]);
     drawFullscreenTriangle();

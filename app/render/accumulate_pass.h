@@ -31,7 +31,7 @@ float computeAccumulateWeight(int accumulate, uint32_t historyFrames);
 // window); in a still view, frame i counts i + kMovingFramesCarried, so that light averaged while
 // moving (full radii, reprojected) fades as the still frames come in, without a jump to one frame's
 // noise. A still view from a reset counts every frame (its length is i): a plain running mean.
-float computeHistoryCap(int accumulate, const FrameInputs& inputs);
+float computeHistoryCap(const FrameInputs& inputs);
 
 // Frame `historyFrames` of an accumulation (`accumulate` > 0); frame 0 and every frame without
 // accumulation get the settings' radii and `denoiseIterations`.

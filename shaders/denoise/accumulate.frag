@@ -89,11 +89,12 @@ void main() {
     vec4 direct = texelFetch(uDirect, pixel, 0);
     outDirect = uDirectWeight >= 1.0 ? direct
                                      : mix(texelFetch(uHistoryDirect, pixel, 0), direct, uDirectWeight);
+    // A cap of 0 (a reset) reads no history at all: the textures may hold anything then.
     History history = History(vec3(0.0), 0.0);
-    if (!uReproject) {
+    if (uHistoryCap > 0.0 && !uReproject) {
         history = History(texelFetch(uHistoryIndirect, pixel, 0).rgb,
                           texelFetch(uHistoryLength, pixel, 0).r);
-    } else {
+    } else if (uHistoryCap > 0.0) {
         vec4 position = texelFetch(uPosition, pixel, 0);
         if (position.w >= 0.5) history = fetchReprojected(position, texelFetch(uNormal, pixel, 0).xyz);
     }
