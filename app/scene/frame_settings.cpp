@@ -17,7 +17,8 @@ static_assert(kToneMapChoices[gpu::kTonemapThesis] == "thesis");
 static_assert(kToneMapChoices[gpu::kTonemapFilmic] == "filmic");
 static_assert(kToneMapChoices[gpu::kTonemapLinear] == "linear");
 static_assert(kRngGeneratorChoices[gpu::kRngPcg] == "pcg" &&
-              kRngGeneratorChoices[gpu::kRngLcg] == "lcg");
+              kRngGeneratorChoices[gpu::kRngLcg] == "lcg" &&
+              kRngGeneratorChoices[gpu::kRngSobol] == "sobol");
 static_assert(kRngModeChoices[gpu::kRngFixed] == "fixed" &&
               kRngModeChoices[gpu::kRngPerFrame] == "per_frame" &&
               kRngModeChoices[gpu::kRngObjectSpace] == "object_space");

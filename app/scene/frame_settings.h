@@ -18,7 +18,7 @@ namespace ispm {
 
 // Choices of the enum settings, in the order of their constants in shaders/shared/.
 inline constexpr std::array<std::string_view, 3> kToneMapChoices = {"thesis", "filmic", "linear"};
-inline constexpr std::array<std::string_view, 2> kRngGeneratorChoices = {"pcg", "lcg"};
+inline constexpr std::array<std::string_view, 3> kRngGeneratorChoices = {"pcg", "lcg", "sobol"};
 inline constexpr std::array<std::string_view, 3> kRngModeChoices = {"fixed", "per_frame",
                                                                     "object_space"};
 inline constexpr std::array<std::string_view, 3> kRadiusModeChoices = {"travel", "path_density",
@@ -46,7 +46,7 @@ struct FrameSettings {
     bool bouncesSet = false; // the reference path tracer has its own default
     float importance = 0.0f; // aimed share; 0 when importanceSamples is 0
     int importanceSamples = 0;
-    uint32_t rngGenerator = 0; // gpu::kRngPcg, kRngLcg
+    uint32_t rngGenerator = 0; // gpu::kRngPcg, kRngLcg, kRngSobol
     uint32_t rngMode = 0;      // gpu::kRngFixed, kRngPerFrame, kRngObjectSpace
     // Splats.
     uint32_t radiusMode = 0; // gpu::kRadius*

@@ -124,9 +124,12 @@ const std::vector<SettingDesc>& table() {
          "prototype), object_space (each bounce keyed on where the photon hit, in the hit "
          "triangle's own coordinates, thesis 7.2)",
          toChoices(kRngModeChoices)},
-        {"rng_generator", SettingType::Enum, 0, 0, 1, "",
-         "random number generator: pcg (stateless hash of photon, bounce and seed) or lcg (a "
-         "linear congruential generator, Numerical Recipes constants)",
+        {"rng_generator", SettingType::Enum, 2, 0, 2, "",
+         "random number generator: pcg (stateless hash of photon, bounce and seed), lcg (a "
+         "linear congruential generator, Numerical Recipes constants) or sobol (the first "
+         "bounce from an Owen-scrambled Sobol sequence over the emission grid in Z order, so "
+         "neighbouring photons take stratified roulette decisions and directions; later "
+         "bounces pcg)",
          toChoices(kRngGeneratorChoices)},
         {"radius_mode", SettingType::Enum, 2, 0, 2, "",
          "splat radius from travel distance (travel, the thesis), from path density "

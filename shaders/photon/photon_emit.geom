@@ -77,9 +77,20 @@ void main() {
     vec4 specular = texelFetch(uLightSpecular, at, 0);
     vec4 transmissive = texelFetch(uLightTransmissive, at, 0);
     uint photon = uFirstPhoton + index;
-    uint rng = seedRandom(photon, 0u, uSeedMode.x);
-    uint event = scatterPhoton(dir, power, normal.xyz, diffuse, specular, transmissive,
-                               normal.w > 0.0, rng, uSeedMode.y);
+    vec3 numbers;
+    if (uSeedMode.y == kRngSobol) {
+        // The cell's place on the Z-order curve indexes the sequence; the view and frame seed
+        // the scrambling.
+        uint scramble = seedRandom(uView, kSobolScrambleSlot, uSeedMode.x);
+        numbers = computeSobolNumbers(computeZOrder(cell), scramble);
+    } else {
+        uint rng = seedRandom(photon, 0u, uSeedMode.x);
+        numbers.x = nextRandom(rng, uSeedMode.y);
+        numbers.y = nextRandom(rng, uSeedMode.y);
+        numbers.z = nextRandom(rng, uSeedMode.y);
+    }
+    uint event = scatterSurfaceWith(dir, power, normal.xyz, diffuse, specular, transmissive,
+                                    normal.w > 0.0, numbers, 1.0);
     if (event == kScatterAbsorbed) return;
 
     outPositionDistance = vec4(position.xyz, travelled);

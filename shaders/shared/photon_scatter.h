@@ -11,10 +11,14 @@ ISPM_NAMESPACE_BEGIN
 
 ISPM_CONST uint kRngPcg = 0u;
 ISPM_CONST uint kRngLcg = 1u;
+ISPM_CONST uint kRngSobol = 2u; // the first bounce from computeSobolNumbers, later ones pcg
 // Which numbers a photon gets from frame to frame (`rng`; FrameRunner, photon_trace.comp).
 ISPM_CONST uint kRngFixed = 0u;
 ISPM_CONST uint kRngPerFrame = 1u;
 ISPM_CONST uint kRngObjectSpace = 2u;
+
+// Bounce slot of seedRandom for the Sobol scrambling seed of a light view (photon = view).
+ISPM_CONST uint kSobolScrambleSlot = 0xfffffffeu;
 
 ISPM_CONST uint kScatterAbsorbed = 0u;
 ISPM_CONST uint kScatterDiffuse = 1u;
@@ -45,6 +49,82 @@ ISPM_INLINE float nextRandom(ISPM_INOUT(uint) state, uint mode) {
         state = hashPcg(state);
     }
     return float(state >> 8u) * (1.0f / 16777216.0f);
+}
+
+// Z order of a grid cell (bits of x and y interleaved, 16 each): cells close in the grid get
+// close indices, so any run of indices covers a compact patch of the light view.
+ISPM_INLINE uint spreadBits16(uint v) {
+    v &= 0xffffu;
+    v = (v | (v << 8u)) & 0x00ff00ffu;
+    v = (v | (v << 4u)) & 0x0f0f0f0fu;
+    v = (v | (v << 2u)) & 0x33333333u;
+    v = (v | (v << 1u)) & 0x55555555u;
+    return v;
+}
+ISPM_INLINE uint computeZOrder(uvec2 cell) {
+    return spreadBits16(cell.x) | (spreadBits16(cell.y) << 1u);
+}
+
+ISPM_INLINE uint reverseBits32(uint v) {
+    v = ((v >> 1u) & 0x55555555u) | ((v & 0x55555555u) << 1u);
+    v = ((v >> 2u) & 0x33333333u) | ((v & 0x33333333u) << 2u);
+    v = ((v >> 4u) & 0x0f0f0f0fu) | ((v & 0x0f0f0f0fu) << 4u);
+    v = ((v >> 8u) & 0x00ff00ffu) | ((v & 0x00ff00ffu) << 8u);
+    return (v >> 16u) | (v << 16u);
+}
+
+// Nested uniform (Owen) scrambling of a 32-bit fraction: each bit is flipped by a hash of the
+// bits above it (the Laine-Karras construction with Vegdahl's constants, as in Burley 2020,
+// "Practical Hash-based Owen Scrambling"). Scrambled points stay a net and each is uniform.
+ISPM_INLINE uint scrambleOwen(uint v, uint seed) {
+    v = reverseBits32(v);
+    v ^= v * 0x3d20adeau;
+    v += seed;
+    v *= (seed >> 16u) | 1u;
+    v ^= v * 0x05526c56u;
+    v ^= v * 0x53a22864u;
+    return reverseBits32(v);
+}
+
+// Sobol points of one index in the first three dimensions (direction numbers of the
+// polynomials 1, x + 1 and x^2 + x + 1), unscrambled, as 32-bit fractions.
+ISPM_INLINE uvec3 computeSobolBits(uint index) {
+    uvec3 bits = uvec3(0u);
+    uint v0 = 0x80000000u;
+    uint v1 = 0x80000000u;
+    uint v2 = 0x80000000u;
+    uint v2Before = 0u; // dimension 2's direction number one step back
+    for (uint bit = 0u; bit < 32u; ++bit) {
+        if ((index & (1u << bit)) != 0u) bits ^= uvec3(v0, v1, v2);
+        v0 >>= 1u;
+        v1 ^= v1 >> 1u;
+        uint next = bit == 0u ? 0xc0000000u : v2 ^ v2Before ^ (v2Before >> 2u);
+        v2Before = v2;
+        v2 = next;
+    }
+    return bits;
+}
+
+// The first bounce's three numbers (roulette, then the lobe's two) for the photon of Z-order
+// index `index`, from Sobol points Owen-scrambled per dimension with seeds from `seed`: the
+// roulette takes dimension 0 of the index, the lobe dimensions 1 and 2 of the index shuffled
+// within its aligned run (Owen scrambling of the index's own bits). Any aligned run of 4^k
+// indices is a square patch of grid cells and maps onto itself, so in each dimension, and in
+// the lobe's pair, the patch's numbers are stratified: its photons survive the roulette in the
+// right proportion and leave in well spread directions. The shuffle keeps the decision and the
+// direction apart (unshuffled, all three share the index's low bit: the survivors of a roulette
+// near 1/2 would all leave within 45 degrees of the normal). Each number stays uniform, so the
+// estimate stays unbiased.
+ISPM_INLINE vec3 computeSobolNumbers(uint index, uint seed) {
+    uint s0 = hashPcg(seed);
+    uint s1 = hashPcg(s0);
+    uint s2 = hashPcg(s1);
+    uint s3 = hashPcg(s2);
+    uint roulette = computeSobolBits(index).x;
+    uvec3 lobe = computeSobolBits(scrambleOwen(index, s3));
+    uvec3 bits =
+        uvec3(scrambleOwen(roulette, s0), scrambleOwen(lobe.y, s1), scrambleOwen(lobe.z, s2));
+    return vec3(bits >> 8u) * (1.0f / 16777216.0f);
 }
 
 // An orthonormal basis around unit n (Duff et al. 2017).
@@ -98,15 +178,16 @@ ISPM_INLINE float computeMean(vec3 v) {
 // probability. selectScale = 1 is Russian roulette on the albedo (photons: absorbed paths end);
 // selectScale = 1 / (sum of the means) always picks a lobe (camera paths of the reference, which
 // apply their own roulette). Updates dir and weight; returns the kScatter* event.
-ISPM_INLINE uint scatterSurface(ISPM_INOUT(vec3) dir, ISPM_INOUT(vec3) weight, vec3 n, vec3 diffuse,
-                                vec4 specular, vec4 transmissive, bool entering,
-                                ISPM_INOUT(uint) rng, uint mode, float selectScale) {
+// `numbers`: (u for the lobe, u1 and u2 for its direction).
+ISPM_INLINE uint scatterSurfaceWith(ISPM_INOUT(vec3) dir, ISPM_INOUT(vec3) weight, vec3 n,
+                                    vec3 diffuse, vec4 specular, vec4 transmissive, bool entering,
+                                    vec3 numbers, float selectScale) {
     float pd = computeMean(diffuse) * selectScale;
     float ps = computeMean(vec3(specular)) * selectScale;
     float pt = computeMean(vec3(transmissive)) * selectScale;
-    float u = nextRandom(rng, mode);
-    float u1 = nextRandom(rng, mode);
-    float u2 = nextRandom(rng, mode);
+    float u = numbers.x;
+    float u1 = numbers.y;
+    float u2 = numbers.z;
     if (u < pd) {
         dir = sampleCosine(n, u1, u2);
         weight = weight * (diffuse / pd);
@@ -137,6 +218,17 @@ ISPM_INLINE uint scatterSurface(ISPM_INOUT(vec3) dir, ISPM_INOUT(vec3) weight, v
         return kScatterRefract;
     }
     return kScatterAbsorbed;
+}
+
+// The same with three numbers drawn from `rng`.
+ISPM_INLINE uint scatterSurface(ISPM_INOUT(vec3) dir, ISPM_INOUT(vec3) weight, vec3 n, vec3 diffuse,
+                                vec4 specular, vec4 transmissive, bool entering,
+                                ISPM_INOUT(uint) rng, uint mode, float selectScale) {
+    float u = nextRandom(rng, mode);
+    float u1 = nextRandom(rng, mode);
+    float u2 = nextRandom(rng, mode);
+    return scatterSurfaceWith(dir, weight, n, diffuse, specular, transmissive, entering,
+                              vec3(u, u1, u2), selectScale);
 }
 
 // Photons: Russian roulette on the albedo, absorbed photons end.

@@ -30,7 +30,8 @@ TEST(SettingsEnums, ChoicesMatchTheShaderConstants) {
     expectChoices("radius_mode", {{"travel", gpu::kRadiusTravel},
                                   {"path_density", gpu::kRadiusPathDensity},
                                   {"density", gpu::kRadiusDensity}});
-    expectChoices("rng_generator", {{"pcg", gpu::kRngPcg}, {"lcg", gpu::kRngLcg}});
+    expectChoices("rng_generator",
+                  {{"pcg", gpu::kRngPcg}, {"lcg", gpu::kRngLcg}, {"sobol", gpu::kRngSobol}});
     expectChoices("rng", {{"fixed", gpu::kRngFixed},
                           {"per_frame", gpu::kRngPerFrame},
                           {"object_space", gpu::kRngObjectSpace}});
