@@ -17,6 +17,8 @@
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <string_view>
+#include <vector>
 
 namespace ispm {
 
@@ -95,9 +97,85 @@ void appendVec3(std::string& out, const char* keyword, const glm::vec3& v) {
     out += '\n';
 }
 
+// Whole-line checks of the numbers tinyobjloader reads: it turns a token it cannot read ("nan",
+// "inf", "1.0x") into 0 and wraps face indices past int, silently. Each number of a vertex
+// (v, vn, vt), face (f: the first of each slash group; the others are not used) and material
+// (MTL colours, exponents, opacity, illumination model) must read whole, be finite, and face
+// indices must fit. Throws with the file, line and token.
+bool readWholeDouble(std::string_view token, double& value) {
+    if (token.size() > 1 && token.front() == '+') token.remove_prefix(1); // from_chars takes no '+'
+    const auto result = std::from_chars(token.data(), token.data() + token.size(), value);
+    return result.ec == std::errc() && result.ptr == token.data() + token.size() &&
+           std::isfinite(value);
+}
+
+std::vector<std::string_view> splitTokens(std::string_view line) {
+    std::vector<std::string_view> tokens;
+    size_t at = 0;
+    while (at < line.size()) {
+        while (at < line.size() && std::isspace(static_cast<unsigned char>(line[at])))
+            ++at;
+        const size_t start = at;
+        while (at < line.size() && !std::isspace(static_cast<unsigned char>(line[at])))
+            ++at;
+        if (at > start) tokens.push_back(line.substr(start, at - start));
+    }
+    return tokens;
+}
+
+void checkNumbers(const std::filesystem::path& path, bool isMtl) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return; // tinyobjloader reports a missing OBJ; a missing MTL is its warning
+    // The OBJ's own name is in the caller's message; an MTL's is not.
+    const std::string where = isMtl ? strCat("'", path.filename().string(), "' line ") : "line ";
+    std::string line;
+    for (size_t lineNumber = 1; std::getline(in, line); ++lineNumber) {
+        const std::vector<std::string_view> tokens = splitTokens(line);
+        if (tokens.empty() || tokens[0].front() == '#') continue;
+        const std::string_view key = tokens[0];
+        const auto fail = [&](std::string_view token, const char* expected) {
+            throw std::runtime_error(strCat(where, lineNumber, " (", key, "): expected ", expected,
+                                            ", got '", token, "'"));
+        };
+        if (!isMtl && key == "mtllib") {
+            for (size_t i = 1; i < tokens.size(); ++i)
+                checkNumbers(path.parent_path() / std::string(tokens[i]), true);
+            continue;
+        }
+        if (!isMtl && key == "f") {
+            for (size_t i = 1; i < tokens.size(); ++i) {
+                const std::string_view first = tokens[i].substr(0, tokens[i].find('/'));
+                std::string_view digits = first;
+                if (digits.size() > 1 && digits.front() == '+') digits.remove_prefix(1);
+                int index = 0;
+                const auto r = std::from_chars(digits.data(), digits.data() + digits.size(), index);
+                if (r.ec != std::errc() || r.ptr != digits.data() + digits.size() || index == 0) {
+                    fail(tokens[i],
+                         "a vertex index (a non-zero whole number that fits in 32 bits)");
+                }
+            }
+            continue;
+        }
+        static constexpr std::array<std::string_view, 3> kObjNumbers = {"v", "vn", "vt"};
+        static constexpr std::array<std::string_view, 11> kMtlNumbers = {
+            "Ka", "Kd", "Ks", "Ke", "Kt", "Tf", "Ns", "Ni", "d", "Tr", "illum"};
+        const bool numeric =
+            isMtl ? std::find(kMtlNumbers.begin(), kMtlNumbers.end(), key) != kMtlNumbers.end()
+                  : std::find(kObjNumbers.begin(), kObjNumbers.end(), key) != kObjNumbers.end();
+        if (!numeric) continue;
+        for (size_t i = 1; i < tokens.size(); ++i) {
+            // MTL colours may be given as "xyz x y z" or "spectral file.rfl" (not read).
+            if (isMtl && i == 1 && (tokens[i] == "xyz" || tokens[i] == "spectral")) break;
+            double value = 0.0;
+            if (!readWholeDouble(tokens[i], value)) fail(tokens[i], "a finite number");
+        }
+    }
+}
+
 } // namespace
 
 ObjModel importObj(const std::string& objPath) {
+    checkNumbers(objPath, false);
     tinyobj::ObjReaderConfig config;
     config.triangulate = true;
     config.vertex_color = false;

@@ -100,6 +100,40 @@ TEST(ObjImport, MaterialValuesOutOfRangeAreErrors) {
     }
 }
 
+TEST(ObjImport, NumbersThatDoNotReadWholeAreErrors) {
+    // tinyobjloader reads "nan", "inf" and "1.5x" as 0 and wraps face indices past 32 bits; each
+    // is refused with its line and token.
+    struct Case {
+        std::string obj;
+        std::string mtl;
+        std::string expected;
+    };
+    const std::string quad = "mtllib model.mtl\nusemtl red\n";
+    const std::vector<Case> cases = {
+        {quad + "v 0 0 0\nv 1 0 0\nv 0 nan 1\nf 1 2 3\n", kMtlText, "line 5 (v)"},
+        {quad + "v 0 0 0\nv 1 0 -inf\nv 0 1 1\nf 1 2 3\n", kMtlText, "'-inf'"},
+        {quad + "v 0 0 0\nv 1 0 0\nv 0 1.5x 1\nf 1 2 3\n", kMtlText, "'1.5x'"},
+        {quad + "v 0 0 0\nv 1 0 0\nv 0 1 1\nf 1 2 99999999999\n", kMtlText, "(f)"},
+        {quad + "v 0 0 0\nv 1 0 0\nv 0 1 1\nf 1 2 3\n", "newmtl red\nKd nan 0.5 0.5\n",
+         "'model.mtl' line 2 (Kd)"},
+        {quad + "v 0 0 0\nv 1 0 0\nv 0 1 1\nf 1 2 3\n", "newmtl red\nKd 0.5 0.5 0.5\nKe inf 0 0\n",
+         "'model.mtl' line 3 (Ke)"},
+    };
+    for (const Case& c : cases) {
+        ScratchDir dir;
+        dir.write("model.obj", c.obj);
+        dir.write("model.mtl", c.mtl);
+        const std::string message = getLoadError(dir, makeObjScene(""), "s.json");
+        EXPECT_TRUE(contains(message, "s.json: /objects/0/obj")) << message;
+        EXPECT_TRUE(contains(message, c.expected)) << message;
+    }
+    // Signs, exponents and relative indices still read.
+    ScratchDir dir;
+    dir.write("model.obj", quad + "v +0 0 0\nv 1e0 0 0\nv 0 .5 1\nf -3 -2 -1\n");
+    dir.write("model.mtl", kMtlText);
+    EXPECT_EQ(loadScene(dir.write("s.json", makeObjScene(""))).meshes[0].triangles.size(), 1u);
+}
+
 TEST(ObjImport, FileWithoutFacesIsAnError) {
     ScratchDir dir;
     dir.write("model.obj", "v 0 0 0\nv 1 0 0\n");
