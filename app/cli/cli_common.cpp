@@ -4,6 +4,7 @@
 #include "core/input_error.h"
 #include "core/strings.h"
 #include "gl/debug.h"
+#include "render/splat_pass.h"
 
 #include <CLI/CLI.hpp>
 
@@ -58,6 +59,14 @@ Settings makeCommandLineSettings(const std::vector<std::string>& sets, std::opti
     if (width) settings.set("width", *width, "--width");
     if (height) settings.set("height", *height, "--height");
     return settings;
+}
+
+void warnIfLightFades(const FrameRunner& runner, const Settings& settings) {
+    const GpuScene& scene = runner.getGpuScene();
+    const std::string warning =
+        describeOversizedSplats(scene.getSurfaceArea(), glm::length(scene.getBounds().getExtent()),
+                                resolveFrameSettings(settings));
+    if (!warning.empty()) std::fprintf(stderr, "ispm: warning: %s\n", warning.c_str());
 }
 
 void printTimings(const FrameRunner& runner, const gl::ContextInfo& info) {

@@ -1,6 +1,8 @@
 // Splatting and the derived radius defaults.
 #include "render/splat_pass.h"
 
+#include "core/strings.h"
+
 #include "gl/gl.h"
 #include "gl/state.h"
 #include "render/gpu_scene.h"
@@ -49,6 +51,23 @@ SplatRadii computeSplatRadii(double surfaceAreaM2, float diagonalM, const FrameS
     r.distMinM = settings.distMinM.value_or(0.0f);
     r.distMaxM = settings.distMaxM.value_or(diagonalM);
     return r;
+}
+
+std::string describeOversizedSplats(double surfaceAreaM2, float diagonalM,
+                                    const FrameSettings& settings) {
+    constexpr float kMaxShareOfDiagonal = 0.2f;
+    if (settings.radiusMode == gpu::kRadiusDensity || !settings.hasIndirect()) return "";
+    const SplatRadii r =
+        computeSplatRadii(surfaceAreaM2, diagonalM, settings, settings.radiusScale);
+    const float largest = std::max(r.radiusMinM, r.radiusMaxM);
+    if (!(largest > kMaxShareOfDiagonal * diagonalM)) return "";
+    return strCat("splat discs reach a radius of ", largest,
+                  " m (radius_max x radius_scale) in a "
+                  "scene ",
+                  diagonalM,
+                  " m across: most of their light falls where no surface "
+                  "is and the indirect light fades; lower radius_scale or radius_max, or use "
+                  "radius_mode=density");
 }
 
 SplatPass::SplatPass(const GBuffer& viewer, const PhotonBuffers& buffers, const gl::Buffer& clip)

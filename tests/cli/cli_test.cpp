@@ -75,6 +75,24 @@ TEST_F(CliTest, RendersPngAndPfm) {
     EXPECT_EQ(readImage(pfm).width, 8);
 }
 
+TEST_F(CliTest, SplatsWiderThanTheSceneAreWarnedAbout) {
+    // Travel radii 30 times their derived size are wider than this 2.8 m scene: the render
+    // still runs (exit 0) but says why its indirect light fades. The default radii say nothing.
+    const std::string scene = writeScene("good.json", kGoodScene);
+    const std::string base = "render " + scene + " -o " + (mDir / "out.pfm").string() +
+                             " --width 16 --height 16 --aov indirect -q";
+    RunResult r = run(base + " --set radius_mode=travel --set radius_scale=30");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("ispm: warning: splat discs reach a radius of"), std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("radius_scale"), std::string::npos) << r.output;
+    for (const char* fine : {"", " --set radius_mode=travel", " --set radius_scale=30"}) {
+        r = run(base + fine);
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+        EXPECT_EQ(r.output.find("warning"), std::string::npos) << fine << ": " << r.output;
+    }
+}
+
 TEST_F(CliTest, BadSceneFilesExitTwoWithFileAndPath) {
     expectBadInput("render " + writeScene("broken.json", "{ \"camera\": ") + " -o x.png",
                    {"broken.json"});
