@@ -37,7 +37,6 @@ constexpr float kMaxRadiusFactor = 4.0f;
 // Hashed slots per stored photon: each photon lands in one cell per level, distinct at the
 // finest few levels; 8 slots keep the table under 70% full at capacity.
 constexpr uint32_t kSlotsPerPhoton = 8;
-constexpr size_t kUintsPerSlot = 4; // key, count, power, padding (16-byte slots)
 
 } // namespace
 
@@ -58,7 +57,7 @@ void PhotonDensityPass::execute(const FrameInputs& inputs) {
         std::bit_ceil(std::max(mBuffers.getResultCapacity(), 1u) * kSlotsPerPhoton);
     // The table, then the clip list (a uint per result photon).
     const size_t cellBytes =
-        (size_t(slots) * kUintsPerSlot + mBuffers.getResultCapacity()) * sizeof(uint32_t);
+        (size_t(slots) * gpu::kDensitySlotUints + mBuffers.getResultCapacity()) * sizeof(uint32_t);
     if (cellBytes != mCells.getSize())
         mCells = gl::Buffer("photon density cells and clip list", cellBytes);
     const size_t clipBytes =

@@ -29,19 +29,21 @@ static_assert(kSplatResolutionChoices[0] == "auto" && kSplatResolutionChoices[2]
               kSplatResolutionChoices[3] == "1/4");
 
 // Photons a splat disc holds by default: enough that one photon's noise averages out over its
-// neighbours' (relative noise ~ 1 / sqrt(k)), few enough to keep detail and the splat's cost,
-// which grows with k (every lit pixel is covered by about k discs). k grows with the budget as
-// sqrt(photons), so more photons buy both less noise and sharper light: 25 at 50,000 photons.
-// One frame's noise against its blur. Medians over six seeds at 256x256, 50,000 photons, rel
-// RMSE of Cornell / courtyard outside / room, once strong photons spread and every disc is at
-// most half its photon's travel: 0.148 / 0.263 / 0.275 at k 25 (0.11 sqrt(photons), the
-// earlier rule), 0.141 / 0.241 / 0.261 at 44, 0.136 / 0.229 / 0.249 at 64, 0.133 / 0.227 / 0.228
-// at 90, 0.132 / 0.231 / 0.235 at 128. Wider discs lose light in concave corners, though (a
-// disc cut by a wall keeps its power but spreads it away from the corner): the Cornell box's
-// pixels within 2 cm of an edge get 0.99 of the middle's light at 44, 0.95 at 64, 0.93 at 90
-// (FailureModeTest.CornersAndEdgesLoseIndirectEnergy holds 0.95). Accumulated frames hold fewer
-// (computeProgressiveStep): their average takes the noise down, the blur stays.
-constexpr double kNeighboursPerSqrtPhoton = 0.2;
+// neighbours' (relative noise ~ 1 / sqrt(k)), few enough to keep detail. k grows with the budget
+// as sqrt(photons), so more photons buy both less noise and sharper light: 67 at 50,000 photons.
+// One frame's noise against its blur. Medians over eight seeds at 256x256, 50,000 photons, rel
+// RMSE of Cornell / courtyard outside / room, with sobol first bounces and each block's area
+// from its photons' span: 0.127 / 0.263 / 0.221 at k 44 (0.2 sqrt(photons)), 0.123 / 0.252 /
+// 0.215 at 56, 0.121 / 0.247 / 0.207 at 67, 0.117 / 0.236 / 0.203 at 89; the average of the
+// eight seeds (the bias) stays 0.081 / 0.14 / 0.15 throughout. Before the span, wider discs
+// lost light in concave corners (a block there counted air as area): the Cornell box's pixels
+// within 2 cm of an edge got 0.95 of the middle's light at 64, 0.93 at 90; with it they get
+// 1.0 at 67 and 89 (FailureModeTest.CornersAndEdgesLoseIndirectEnergy). 89 leaves 0.7% of the
+// Cornell box's pixels dark at 2,000 photons (FailureModeTest.SparsePhotonsLeaveUncoveredPixels
+// holds 0.5%), 67 leaves 0.09%. The splat's cost grows little with k (Cornell box, 256 px:
+// 246-261 ms at 44, 265-274 at 67). Accumulated frames hold fewer (computeProgressiveStep):
+// their average takes the noise down, the blur stays.
+constexpr double kNeighboursPerSqrtPhoton = 0.3;
 constexpr int kMinNeighbours = 16;
 constexpr int kMaxNeighbours = 256;
 

@@ -1,9 +1,10 @@
 // Splat radii from the local density of result photons. Stage 0 counts every stored photon, and
 // sums its power, into a hashed grid of cubic cells at each level (cell size h0 * 2^level).
 // Stage 1 finds, per photon, the finest level whose 2x2x2 block of cells around it holds at least
-// k photons and takes the local power density E = power / area from that block (a plane through
-// it cuts about (2h)^2; in one frame the others' mean power times the count, so that a strong
-// photon does not set the density it is measured against). The photon's disc gets the radius at
+// k photons and takes the local power density E = power / area from that block (the area its
+// photons span on their plane, at most the (2h)^2 a plane through it cuts; in one frame the
+// others' mean power times the count, so that a strong photon does not set the density it is
+// measured against). The photon's disc gets the radius at
 // which its own power is 1/k of what lands there, r = sqrt(k P / (pi E)): with equal powers, the
 // disc that holds k photons; a photon k times stronger than its neighbours (importance sampling's
 // floor, another light) spreads sqrt(k) times wider instead of making a bright spot. Times
@@ -28,9 +29,12 @@ layout(local_size_x = kTraceGroupSize) in;
 layout(std430, binding = kBindingResultPhotons) buffer ResultBuffer { ResultPhoton photons[]; };
 layout(std430, binding = kBindingPhotonCounters) buffer CounterBuffer { PhotonCounters counters; };
 layout(std430, binding = kBindingSplatClip) writeonly buffer SplatClip { vec4 splatClip[]; };
-// Slot s: key at 4s (0 = empty), photon count at 4s + 1, power (float bits) at 4s + 2. After the
-// slots, the clip list: per entry a photon index, bit 30 set when triangles above the surface
-// are near, bit 31 when triangles beneath it are.
+// Slot s at S = kDensitySlotUints s: key at S (0 = empty), photon count at S + 1, power (float
+// bits) at S + 2; at S + 4 .. S + 7 the extent of its photons along the two axes of the plane
+// their facing is closest to, as fixed-point fractions of the cell (kExtentOne = the whole
+// cell): M - min u, max u, M - min v, max v, all kept by atomicMax from a cleared table. After
+// the slots, the clip list: per entry a photon index, bit 30 set when triangles above the
+// surface are near, bit 31 when triangles beneath it are.
 layout(std430, binding = kBindingDensityCells) buffer DensityCells { uint cells[]; };
 
 layout(location = 0) uniform uint uStage;     // 0: count, 1: radii and the clip list, 2: clip rays
@@ -90,49 +94,104 @@ void addFloat(uint index, float value) {
     }
 }
 
-void insertCell(ivec3 c, uint level, uint facing, float power) {
+const float kExtentOne = 16777216.0; // 2^24: a whole cell in the extent words
+
+float getCellSize(uint level) { return uGrid.x * exp2(float(level)); }
+
+// The two axes of the plane a facing is closest to.
+ivec2 getPlaneAxes(uint facing) {
+    int axis = int(facing / 2u);
+    return ivec2((axis + 1) % 3, (axis + 2) % 3);
+}
+
+void insertCell(vec3 p, uint level, uint facing, float power) {
+    float size = getCellSize(level);
+    ivec3 c = ivec3(floor(p / size));
     uint h = hashCell(c, level, facing);
     uint key = h | 1u;
     uint slot = hashPcg(h) & uTableMask;
     for (uint i = 0u; i < kDensityProbes; ++i) {
-        uint previous = atomicCompSwap(cells[4u * slot], 0u, key);
+        uint at = kDensitySlotUints * slot;
+        uint previous = atomicCompSwap(cells[at], 0u, key);
         if (previous == 0u || previous == key) {
-            atomicAdd(cells[4u * slot + 1u], 1u);
-            addFloat(4u * slot + 2u, power);
+            atomicAdd(cells[at + 1u], 1u);
+            addFloat(at + 2u, power);
+            ivec2 axes = getPlaneAxes(facing);
+            vec3 within = clamp(p / size - vec3(c), 0.0, 1.0) * kExtentOne;
+            uvec2 q = uvec2(within[axes.x], within[axes.y]);
+            atomicMax(cells[at + 4u], uint(kExtentOne) - q.x);
+            atomicMax(cells[at + 5u], q.x);
+            atomicMax(cells[at + 6u], uint(kExtentOne) - q.y);
+            atomicMax(cells[at + 7u], q.y);
             return;
         }
         slot = (slot + 1u) & uTableMask;
     }
 }
 
-// (photon count, power) of a cell.
-vec2 findCell(ivec3 c, uint level, uint facing) {
+// A block of cells: photon count, power, and where its photons lie along the plane's axes
+// (world coordinates, lo and hi).
+struct Block {
+    float count;
+    float power;
+    vec2 lo;
+    vec2 hi;
+};
+
+// Adds cell c's photons to `block`.
+void addCell(inout Block block, ivec3 c, uint level, uint facing) {
     uint h = hashCell(c, level, facing);
     uint key = h | 1u;
     uint slot = hashPcg(h) & uTableMask;
     for (uint i = 0u; i < kDensityProbes; ++i) {
-        uint k = cells[4u * slot];
-        if (k == key) return vec2(float(cells[4u * slot + 1u]), uintBitsToFloat(cells[4u * slot + 2u]));
-        if (k == 0u) return vec2(0.0);
+        uint at = kDensitySlotUints * slot;
+        uint k = cells[at];
+        if (k == 0u) return;
+        if (k == key) {
+            block.count += float(cells[at + 1u]);
+            block.power += uintBitsToFloat(cells[at + 2u]);
+            float size = getCellSize(level);
+            ivec2 axes = getPlaneAxes(facing);
+            vec2 origin = vec2(float(c[axes.x]), float(c[axes.y])) * size;
+            float scale = size / kExtentOne;
+            vec2 lo = origin + (kExtentOne - vec2(cells[at + 4u], cells[at + 6u])) * scale;
+            vec2 hi = origin + vec2(cells[at + 5u], cells[at + 7u]) * scale;
+            block.lo = min(block.lo, lo);
+            block.hi = max(block.hi, hi);
+            return;
+        }
         slot = (slot + 1u) & uTableMask;
     }
-    return vec2(0.0);
 }
 
-float getCellSize(uint level) { return uGrid.x * exp2(float(level)); }
-
-// (photon count, power) of the 2x2x2 cells nearest to p (a cube of side 2h around it).
-vec2 sumBlock(vec3 p, uint level, uint facing) {
+// The 2x2x2 cells nearest to p (a cube of side 2h around it).
+Block sumBlock(vec3 p, uint level, uint facing) {
     ivec3 first = ivec3(floor(p / getCellSize(level) - 0.5));
-    vec2 sum = vec2(0.0);
-    for (int i = 0; i < 8; ++i) sum += findCell(first + ivec3(i & 1, (i >> 1) & 1, i >> 2), level, facing);
-    return sum;
+    Block block = Block(0.0, 0.0, vec2(3.4e38), vec2(-3.4e38));
+    for (int i = 0; i < 8; ++i) addCell(block, first + ivec3(i & 1, (i >> 1) & 1, i >> 2), level, facing);
+    return block;
+}
+
+// The area of surface the block's photons stand for. A plane through the block cuts about
+// side^2; a surface narrower than the block (a door jamb, a wall's end, a ledge) or one that
+// ends inside it cuts less, and counting side^2 there makes the density too low and the discs
+// too wide (light blurred along a jamb). So each axis of the plane takes the span of the
+// photons, widened by (n + 1) / (n - 1) (n uniform points span (n - 1) / (n + 1) of their
+// interval on average), at most the side. Below kMinSpanCount photons the span says little and
+// the side stands; a span is at least kMinSpanShare of the side.
+const float kMinSpanCount = 24.0;
+const float kMinSpanShare = 1.0 / 16.0;
+float computeBlockArea(Block block, float side) {
+    if (block.count < kMinSpanCount) return side * side;
+    vec2 span = (block.hi - block.lo) * ((block.count + 1.0) / (block.count - 1.0));
+    span = clamp(span, vec2(kMinSpanShare * side), vec2(side));
+    return span.x * span.y;
 }
 
 // The photon's power as one number: the mean over RGB, so saturated colours count.
 float getPhotonPower(uint index) { return max(computeMean(photons[index].power.rgb), 1e-30); }
 
-uint getClipListStart() { return 4u * (uTableMask + 1u); }
+uint getClipListStart() { return kDensitySlotUints * (uTableMask + 1u); }
 
 const uint kNearAbove = 1u << 30;
 const uint kNearBeneath = 1u << 31;
@@ -190,21 +249,19 @@ void main() {
     float power = getPhotonPower(index);
     uint facing = getFacing(photons[index].normalDensity.xyz);
     if (uStage == 0u) {
-        for (uint level = 0u; level < kDensityLevels; ++level) {
-            insertCell(ivec3(floor(p / getCellSize(level))), level, facing, power);
-        }
+        for (uint level = 0u; level < kDensityLevels; ++level) insertCell(p, level, facing, power);
         return;
     }
     // Counts grow with the level: binary search for the finest one that holds k.
     float k = uGrid.y;
     uint lo = 0u;
     uint hi = kDensityLevels - 1u;
-    vec2 block = sumBlock(p, hi, facing);
-    if (block.x >= k) {
+    Block block = sumBlock(p, hi, facing);
+    if (block.count >= k) {
         while (lo < hi) {
             uint mid = (lo + hi) / 2u;
-            vec2 b = sumBlock(p, mid, facing);
-            if (b.x >= k) {
+            Block b = sumBlock(p, mid, facing);
+            if (b.count >= k) {
                 hi = mid;
                 block = b;
             } else {
@@ -213,13 +270,14 @@ void main() {
         }
     }
     float side = 2.0 * getCellSize(hi);
+    float area = computeBlockArea(block, side);
     // One frame: the others' mean power stands for every photon of the block, since a photon
     // much stronger than its neighbours (a low pdf of the importance map, reached after a few
     // bounces) would otherwise set the density it is measured against and stay a bright spot.
     // Averaged frames count it in: their noise falls with the frames, the wider disc's blur not.
-    float others = block.x > 1.5 ? (block.y - power) / (block.x - 1.0) : power;
-    float powerDensity = uSpreadStrong ? max(others, 1e-30) * max(block.x, 1.0) / (side * side)
-                                       : max(block.y, power) / (side * side);
+    float others = block.count > 1.5 ? (block.power - power) / (block.count - 1.0) : power;
+    float powerDensity = uSpreadStrong ? max(others, 1e-30) * max(block.count, 1.0) / area
+                                       : max(block.power, power) / area;
     float radius = sqrt(k * power / (kPi * powerDensity)) * uRadiusScale;
     // Never wider than the coarsest block: a lone photon in an empty scene stays finite.
     radius = min(radius, 2.0 * getCellSize(kDensityLevels - 1u));

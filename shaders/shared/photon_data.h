@@ -63,8 +63,8 @@ ISPM_CONST int kBindingSplatDraws = 14;    // indexed draw commands, kSplatDrawU
 ISPM_CONST int kBindingLightCounts = 19;   // uvec4 per light (LightPhotonCounters)
 ISPM_CONST int kBindingEmissionGrids = 20; // uvec4 per grid: first photon, view, 0, 0
 ISPM_CONST uint kReflectionBits = 8u;      // ResultPhoton.incoming.w: reflections, then light
-ISPM_CONST int kBindingDensityCells = 17;  // photon_density.comp's hashed grid (4 uints a slot),
-                                           // then its clip list (a uint per result photon)
+ISPM_CONST int kBindingDensityCells = 17;  // photon_density.comp's hashed grid (kDensitySlotUints
+                                           // a slot), then its clip list (a uint per result photon)
 
 // Splat radius modes (setting radius_mode, checked against the table in splat_pass.cpp).
 ISPM_CONST uint kRadiusTravel = 0u;
@@ -75,6 +75,9 @@ ISPM_CONST uint kRadiusDensity = 2u;
 // level, each level's cells twice the size of the one below.
 ISPM_CONST uint kDensityLevels = 8u;
 ISPM_CONST uint kDensityProbes = 32u; // open addressing gives up after this many slots
+// A slot: key, photon count, power, unused, then the in-plane extent of its photons (see
+// photon_density.comp).
+ISPM_CONST uint kDensitySlotUints = 8u;
 
 ISPM_NAMESPACE_END
 
