@@ -19,18 +19,6 @@
 namespace ispm {
 namespace {
 
-// Uniform locations of shaders/photon/photon_density.comp.
-constexpr GLint kLocationStage = 0;
-constexpr GLint kLocationGrid = 1;
-constexpr GLint kLocationTableMask = 2;
-constexpr GLint kLocationRadiusScale = 3;
-constexpr GLint kLocationEpsilon = 4;
-constexpr GLint kLocationTravelFactor = 5;
-constexpr GLint kLocationSpreadStrong = 6;
-constexpr GLuint kStageCount = 0;
-constexpr GLuint kStageRadius = 1;
-constexpr GLuint kStageClip = 2;
-
 // Fractions of the evenly-spread radius (computeEvenRadius): the finest cell, the largest radius.
 constexpr float kFinestCellFraction = 1.0f / 16.0f;
 constexpr float kMaxRadiusFactor = 4.0f;
@@ -50,7 +38,8 @@ PhotonDensityPass::PhotonDensityPass(PhotonBuffers& buffers)
     : mBuffers(buffers),
       mProgram(ReloadableProgram(
           {.label = "photon density",
-           .stages = {{gl::ShaderStage::Compute, "photon/photon_density.comp"}}})) {}
+           .stages = {{gl::ShaderStage::Compute, "photon/photon_density.comp"}}})),
+      mParams("photon density parameters", sizeof(gpu::DensityParams)) {}
 
 void PhotonDensityPass::execute(const FrameInputs& inputs) {
     const uint32_t slots =
@@ -74,27 +63,36 @@ void PhotonDensityPass::execute(const FrameInputs& inputs) {
     const float radiusMax = inputs.settings.radiusMaxM.value_or(kMaxRadiusFactor * even) * scale;
     const float cell = kFinestCellFraction * even;
 
+    gpu::DensityParams params{};
+    params.grid = glm::vec4(cell, float(neighbours), radiusMin, radiusMax);
+    params.scales =
+        glm::vec4(scale, inputs.scene.getRayEpsilon(), inputs.progressive.travelRadiusFactor, 0.0f);
+    params.control = glm::uvec4(gpu::kDensityStageCount, slots - 1,
+                                inputs.progressive.spreadStrongPhotons ? 1u : 0u, 0u);
+    mParams.upload(0, sizeof(params), &params);
+
     mBuffers.bind();
     inputs.scene.bind();
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
+    mParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
     mCells.bindBase(gl::BufferTarget::Storage, gpu::kBindingDensityCells);
     mClip.bindBase(gl::BufferTarget::Storage, gpu::kBindingSplatClip);
     mProgram.use();
-    glUniform4f(kLocationGrid, cell, float(neighbours), radiusMin, radiusMax);
-    glUniform1ui(kLocationTableMask, slots - 1);
-    glUniform1f(kLocationRadiusScale, scale);
-    glUniform1f(kLocationEpsilon, inputs.scene.getRayEpsilon());
-    glUniform1f(kLocationTravelFactor, inputs.progressive.travelRadiusFactor);
-    glUniform1i(kLocationSpreadStrong, inputs.progressive.spreadStrongPhotons ? 1 : 0);
+    // Each stage reads its number from the block: written again between the dispatches (the
+    // GL orders the update after the dispatch before it).
+    const auto setStage = [&](uint32_t stage) {
+        params.control.x = stage;
+        mParams.upload(offsetof(gpu::DensityParams, control), sizeof(params.control),
+                       &params.control);
+    };
     const size_t dispatchOffset = offsetof(gpu::PhotonCounters, densityDispatch);
-    glUniform1ui(kLocationStage, kStageCount);
     gl::dispatchComputeIndirect(mBuffers.getCounters(), dispatchOffset);
     gl::memoryBarrier(gl::Barrier::Storage);
-    glUniform1ui(kLocationStage, kStageRadius);
+    setStage(gpu::kDensityStageRadius);
     gl::dispatchComputeIndirect(mBuffers.getCounters(), dispatchOffset);
     // Stage 1 wrote the clip list and its dispatch arguments.
     gl::memoryBarrier(gl::Barrier::Storage | gl::Barrier::Command);
-    glUniform1ui(kLocationStage, kStageClip);
+    setStage(gpu::kDensityStageClip);
     gl::dispatchComputeIndirect(mBuffers.getCounters(),
                                 offsetof(gpu::PhotonCounters, clipDispatch));
     // The splat's vertex stage reads the radii.

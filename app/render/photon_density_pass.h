@@ -28,6 +28,7 @@ class PhotonDensityPass final : public Pass {
   private:
     PhotonBuffers& mBuffers;
     ReloadableProgram mProgram;
+    gl::Buffer mParams; // gpu::DensityParams
     gl::Buffer mCells;
     gl::Buffer mClip;
 };

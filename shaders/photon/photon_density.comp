@@ -37,14 +37,7 @@ layout(std430, binding = kBindingSplatClip) writeonly buffer SplatClip { vec4 sp
 // surface are near, bit 31 when triangles beneath it are.
 layout(std430, binding = kBindingDensityCells) buffer DensityCells { uint cells[]; };
 
-layout(location = 0) uniform uint uStage;     // 0: count, 1: radii and the clip list, 2: clip rays
-layout(location = 1) uniform vec4 uGrid;      // x = finest cell (m), y = neighbours k,
-                                              // z = radius min (m), w = radius max (m)
-layout(location = 2) uniform uint uTableMask; // slots - 1 (a power of two)
-layout(location = 3) uniform float uRadiusScale;
-layout(location = 4) uniform float uEpsilonM; // ray offset off a surface (m)
-layout(location = 5) uniform float uTravelFactor; // radius at most this times the travel; 0: off
-layout(location = 6) uniform bool uSpreadStrong;  // measure a photon against its neighbours only
+layout(std140, binding = kBindingPassParams) uniform DensityParamsBlock { DensityParams params; };
 
 // The clip rays run this far above the surface, as a fraction of the radius: steps lower than
 // that do not clip a disc, walls do.
@@ -96,7 +89,7 @@ void addFloat(uint index, float value) {
 
 const float kExtentOne = 16777216.0; // 2^24: a whole cell in the extent words
 
-float getCellSize(uint level) { return uGrid.x * exp2(float(level)); }
+float getCellSize(uint level) { return params.grid.x * exp2(float(level)); }
 
 // The two axes of the plane a facing is closest to.
 ivec2 getPlaneAxes(uint facing) {
@@ -109,7 +102,7 @@ void insertCell(vec3 p, uint level, uint facing, float power) {
     ivec3 c = ivec3(floor(p / size));
     uint h = hashCell(c, level, facing);
     uint key = h | 1u;
-    uint slot = hashPcg(h) & uTableMask;
+    uint slot = hashPcg(h) & params.control.y;
     for (uint i = 0u; i < kDensityProbes; ++i) {
         uint at = kDensitySlotUints * slot;
         uint previous = atomicCompSwap(cells[at], 0u, key);
@@ -125,7 +118,7 @@ void insertCell(vec3 p, uint level, uint facing, float power) {
             atomicMax(cells[at + 7u], q.y);
             return;
         }
-        slot = (slot + 1u) & uTableMask;
+        slot = (slot + 1u) & params.control.y;
     }
 }
 
@@ -142,7 +135,7 @@ struct Block {
 void addCell(inout Block block, ivec3 c, uint level, uint facing) {
     uint h = hashCell(c, level, facing);
     uint key = h | 1u;
-    uint slot = hashPcg(h) & uTableMask;
+    uint slot = hashPcg(h) & params.control.y;
     for (uint i = 0u; i < kDensityProbes; ++i) {
         uint at = kDensitySlotUints * slot;
         uint k = cells[at];
@@ -160,7 +153,7 @@ void addCell(inout Block block, ivec3 c, uint level, uint facing) {
             block.hi = max(block.hi, hi);
             return;
         }
-        slot = (slot + 1u) & uTableMask;
+        slot = (slot + 1u) & params.control.y;
     }
 }
 
@@ -191,15 +184,15 @@ float computeBlockArea(Block block, float side) {
 // The photon's power as one number: the mean over RGB, so saturated colours count.
 float getPhotonPower(uint index) { return max(computeMean(photons[index].power.rgb), 1e-30); }
 
-uint getClipListStart() { return kDensitySlotUints * (uTableMask + 1u); }
+uint getClipListStart() { return kDensitySlotUints * (params.control.y + 1u); }
 
 const uint kNearAbove = 1u << 30;
 const uint kNearBeneath = 1u << 31;
 
 // Ray origins: above the surface by kClipLift of the radius (at least a few ray epsilons), and
 // just beneath it.
-vec3 getAboveOrigin(vec3 p, vec3 n, float radius) { return p + n * max(4.0 * uEpsilonM, kClipLift * radius); }
-vec3 getBeneathOrigin(vec3 p, vec3 n) { return p - n * (4.0 * uEpsilonM); }
+vec3 getAboveOrigin(vec3 p, vec3 n, float radius) { return p + n * max(4.0 * params.scales.y, kClipLift * radius); }
+vec3 getBeneathOrigin(vec3 p, vec3 n) { return p - n * (4.0 * params.scales.y); }
 // Half the box the rays around an origin sweep.
 vec3 getSweep(vec3 n, float radius) {
     vec3 t;
@@ -240,7 +233,7 @@ void castClipRays(uint entry) {
 
 void main() {
     uint index = gl_GlobalInvocationID.x;
-    if (uStage == 2u) {
+    if (params.control.x == kDensityStageClip) {
         if (index < counters.clipDispatch.w) castClipRays(cells[getClipListStart() + index]);
         return;
     }
@@ -248,12 +241,12 @@ void main() {
     vec3 p = photons[index].positionDistance.xyz;
     float power = getPhotonPower(index);
     uint facing = getFacing(photons[index].normalDensity.xyz);
-    if (uStage == 0u) {
+    if (params.control.x == kDensityStageCount) {
         for (uint level = 0u; level < kDensityLevels; ++level) insertCell(p, level, facing, power);
         return;
     }
     // Counts grow with the level: binary search for the finest one that holds k.
-    float k = uGrid.y;
+    float k = params.grid.y;
     uint lo = 0u;
     uint hi = kDensityLevels - 1u;
     Block block = sumBlock(p, hi, facing);
@@ -276,18 +269,19 @@ void main() {
     // bounces) would otherwise set the density it is measured against and stay a bright spot.
     // Averaged frames count it in: their noise falls with the frames, the wider disc's blur not.
     float others = block.count > 1.5 ? (block.power - power) / (block.count - 1.0) : power;
-    float powerDensity = uSpreadStrong ? max(others, 1e-30) * max(block.count, 1.0) / area
-                                       : max(block.power, power) / area;
-    float radius = sqrt(k * power / (kPi * powerDensity)) * uRadiusScale;
+    bool spreadStrong = params.control.z != 0u;
+    float powerDensity = spreadStrong ? max(others, 1e-30) * max(block.count, 1.0) / area
+                                      : max(block.power, power) / area;
+    float radius = sqrt(k * power / (kPi * powerDensity)) * params.scales.x;
     // Never wider than the coarsest block: a lone photon in an empty scene stays finite.
     radius = min(radius, 2.0 * getCellSize(kDensityLevels - 1u));
     // While frames are averaged: light from a surface d away varies over about d (a wall's foot);
     // the finest cell keeps a photon that travelled almost nothing from a point-sized disc.
-    if (uTravelFactor > 0.0) {
+    if (params.scales.z > 0.0) {
         float travel = photons[index].positionDistance.w;
-        radius = min(radius, max(uTravelFactor * travel, getCellSize(0u)));
+        radius = min(radius, max(params.scales.z * travel, getCellSize(0u)));
     }
-    radius = clamp(radius, uGrid.z, uGrid.w);
+    radius = clamp(radius, params.grid.z, params.grid.w);
     if (isOutsideView(p, radius)) {
         photons[index].power.w = 0.0;
         return;

@@ -79,6 +79,21 @@ ISPM_CONST uint kDensityProbes = 32u; // open addressing gives up after this man
 // photon_density.comp).
 ISPM_CONST uint kDensitySlotUints = 8u;
 
+// photon_density.comp's stages: count photons into the grid, radii and the clip list, clip rays.
+ISPM_CONST uint kDensityStageCount = 0u;
+ISPM_CONST uint kDensityStageRadius = 1u;
+ISPM_CONST uint kDensityStageClip = 2u;
+
+// Parameters of photon_density.comp (std140, at kBindingPassParams).
+struct DensityParams {
+    vec4 grid;     // x = finest cell (m), y = neighbours k, z = radius min (m), w = radius max (m)
+    vec4 scales;   // x = radius scale, y = ray offset off a surface (m), z = radius at most this
+                   // times the travel (0: off), w unused
+    uvec4 control; // x = stage (kDensityStage*), y = table slots - 1 (a power of two),
+                   // z = 1: measure a photon against its neighbours only, w unused
+};
+ISPM_STATIC_ASSERT_SIZE(DensityParams, 48);
+
 ISPM_NAMESPACE_END
 
 #endif

@@ -74,6 +74,10 @@ ISPM_CONST int kBindingPreviousTransforms = 21;
 
 // Binding points (uniform buffers).
 ISPM_CONST int kBindingFrameConstants = 0;
+// 1: the importance passes' parameters (shared/importance_data.h).
+// The running pass's own parameters: each pass uploads its block (a struct in shared/, std140)
+// and binds it here before it draws or dispatches.
+ISPM_CONST int kBindingPassParams = 2;
 
 // Texture units.
 ISPM_CONST int kUnitGBufferFirst = 0;      // viewer G-buffer channels, in table order
