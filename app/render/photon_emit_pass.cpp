@@ -10,7 +10,10 @@
 #include <shared/importance_data.h>
 #include <shared/scene_data.h>
 
+#include <algorithm>
 #include <cstddef>
+#include <cstring>
+#include <vector>
 
 namespace ispm {
 namespace {
@@ -18,11 +21,9 @@ namespace {
 constexpr uint64_t kMaxResultPhotons = uint64_t(1) << 23; // 64 bytes each
 
 // Uniform locations of shaders/photon/photon_emit.geom.
-constexpr GLint kLocationView = 0;
-constexpr GLint kLocationGridSize = 1;
-constexpr GLint kLocationFirstPhoton = 2;
-constexpr GLint kLocationSeedMode = 3;
-constexpr GLint kLocationResolution = 4;
+// Each grid's EmitParams sits at its own multiple of this in one buffer, bound by range per draw
+// (the largest UNIFORM_BUFFER_OFFSET_ALIGNMENT the GL allows an implementation to require).
+constexpr size_t kParamsStride = 256;
 
 } // namespace
 
@@ -71,16 +72,25 @@ void PhotonEmitPass::execute(const FrameInputs& inputs) {
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
     mLightGBuffer.bindTextures(gpu::kUnitLightGBufferFirst);
     mImportanceCdf.bindBase(gl::BufferTarget::Storage, gpu::kBindingImportanceCdf);
-    glUniform2ui(kLocationSeedMode, inputs.seed, inputs.settings.rngGenerator);
-    glUniform1i(kLocationResolution, scene.getLightResolution());
+    std::vector<uint8_t> params(std::max<size_t>(mGrids.size(), 1) * kParamsStride, 0);
+    for (size_t i = 0; i < mGrids.size(); ++i) {
+        const EmissionGrid& g = mGrids[i];
+        gpu::EmitParams p{};
+        p.grid = glm::uvec4(g.viewIndex, g.firstPhoton, g.width, g.height);
+        p.random = glm::uvec4(inputs.seed, inputs.settings.rngGenerator,
+                              uint32_t(scene.getLightResolution()), 0u);
+        std::memcpy(params.data() + i * kParamsStride, &p, sizeof p);
+    }
+    if (mParams.getSize() < params.size())
+        mParams = gl::Buffer("photon emit parameters", params.size());
+    mParams.upload(0, params.size(), params.data());
     mFeedback.attachBuffer(0, mBuffers.getBounce(), 0, mBuffers.getBounce().getSize());
     mWritten.begin();
     mFeedback.begin(gl::Primitive::Points);
-    for (const EmissionGrid& g : mGrids) {
-        glUniform1ui(kLocationView, g.viewIndex);
-        glUniform2ui(kLocationGridSize, g.width, g.height);
-        glUniform1ui(kLocationFirstPhoton, g.firstPhoton);
-        gl::drawArrays(gl::Primitive::Points, 0, static_cast<int>(g.getCount()));
+    for (size_t i = 0; i < mGrids.size(); ++i) {
+        mParams.bindRange(gl::BufferTarget::Uniform, gpu::kBindingPassParams, i * kParamsStride,
+                          sizeof(gpu::EmitParams));
+        gl::drawArrays(gl::Primitive::Points, 0, static_cast<int>(mGrids[i].getCount()));
     }
     mFeedback.end();
     mWritten.end();

@@ -29,6 +29,7 @@ class PhotonEmitPass final : public Pass {
     const gl::Buffer& mImportanceCdf;
     PhotonBuffers& mBuffers;
     ReloadableProgram mProgram;
+    gl::Buffer mParams; // gpu::EmitParams per grid, kParamsStride apart
     gl::VertexArray mVertexArray;
     gl::Framebuffer mFramebuffer;
     gl::TransformFeedback mFeedback;

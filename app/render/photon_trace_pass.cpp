@@ -7,19 +7,10 @@
 #include "render/shader_root.h"
 #include "scene/settings.h"
 
+#include <shared/photon_data.h>
+#include <shared/scene_data.h>
+
 namespace ispm {
-namespace {
-
-// Uniform locations of photon_prepare.comp and photon_trace.comp.
-constexpr GLint kLocationCapacity = 0;
-constexpr GLint kLocationStage = 1;
-constexpr GLint kLocationSplatPasses = 2;
-constexpr GLint kLocationParams = 0;
-constexpr GLint kLocationEpsilon = 1;
-constexpr GLuint kStageBeforeTrace = 0;
-constexpr GLuint kStageBeforeSplat = 1;
-
-} // namespace
 
 PhotonTracePass::PhotonTracePass(PhotonBuffers& buffers)
     : mBuffers(buffers),
@@ -28,30 +19,42 @@ PhotonTracePass::PhotonTracePass(PhotonBuffers& buffers)
            .stages = {{gl::ShaderStage::Compute, "photon/photon_prepare.comp"}}})),
       mTrace(
           ReloadableProgram({.label = "photon trace",
-                             .stages = {{gl::ShaderStage::Compute, "photon/photon_trace.comp"}}})) {
-}
+                             .stages = {{gl::ShaderStage::Compute, "photon/photon_trace.comp"}}})),
+      mPrepareParams("photon prepare parameters", sizeof(gpu::PrepareParams)),
+      mTraceParams("photon trace parameters", sizeof(gpu::TraceParams)) {}
 
 void PhotonTracePass::execute(const FrameInputs& inputs) {
+    gpu::PrepareParams prepare{};
+    prepare.control = glm::uvec4(mBuffers.getResultCapacity(), mBuffers.getBounceCapacity(),
+                                 gpu::kPrepareStageBeforeTrace,
+                                 static_cast<uint32_t>(inputs.settings.splatPasses));
+    mPrepareParams.upload(0, sizeof(prepare), &prepare);
+    gpu::TraceParams trace{};
+    trace.control = glm::uvec4(static_cast<uint32_t>(inputs.settings.bounces), inputs.seed,
+                               inputs.settings.rngGenerator, inputs.settings.rngMode);
+    trace.ray = glm::vec4(inputs.scene.getRayEpsilon(), 0.0f, 0.0f, 0.0f);
+    mTraceParams.upload(0, sizeof(trace), &trace);
+
     mBuffers.bind();
     inputs.scene.bind();
     mPrepare.use();
-    glUniform2ui(kLocationCapacity, mBuffers.getResultCapacity(), mBuffers.getBounceCapacity());
-    glUniform1ui(kLocationStage, kStageBeforeTrace);
+    mPrepareParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
     gl::dispatchCompute(1);
     // The dispatch arguments and counters were written by a shader.
     gl::memoryBarrier(gl::Barrier::Command | gl::Barrier::Storage);
 
     mTrace.use();
-    glUniform4ui(kLocationParams, static_cast<GLuint>(inputs.settings.bounces), inputs.seed,
-                 inputs.settings.rngGenerator, inputs.settings.rngMode);
-    glUniform1f(kLocationEpsilon, inputs.scene.getRayEpsilon());
+    mTraceParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
     gl::dispatchComputeIndirect(mBuffers.getCounters(),
                                 offsetof(gpu::PhotonCounters, traceDispatch));
     gl::memoryBarrier(gl::Barrier::Storage);
 
+    // The same block again, at its second stage (the GL orders the update after the dispatch
+    // that read the first).
+    prepare.control.z = gpu::kPrepareStageBeforeSplat;
+    mPrepareParams.upload(0, sizeof(prepare), &prepare);
     mPrepare.use();
-    glUniform1ui(kLocationStage, kStageBeforeSplat);
-    glUniform1ui(kLocationSplatPasses, static_cast<GLuint>(inputs.settings.splatPasses));
+    mPrepareParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
     gl::dispatchCompute(1);
     // Result photons feed the splat vertex stage; draw commands feed glDrawArraysIndirect.
     gl::memoryBarrier(gl::Barrier::Command | gl::Barrier::Storage);

@@ -22,6 +22,8 @@ class PhotonTracePass final : public Pass {
     PhotonBuffers& mBuffers;
     ReloadableProgram mPrepare;
     ReloadableProgram mTrace;
+    gl::Buffer mPrepareParams; // gpu::PrepareParams
+    gl::Buffer mTraceParams;   // gpu::TraceParams
 };
 
 } // namespace ispm

@@ -15,11 +15,7 @@
 layout(points) in;
 layout(points, max_vertices = 1) out;
 
-layout(location = 0) uniform uint uView;        // light view (G-buffer layer)
-layout(location = 1) uniform uvec2 uGridSize;   // photons across and down the view
-layout(location = 2) uniform uint uFirstPhoton; // global index of this view's first photon
-layout(location = 3) uniform uvec2 uSeedMode;   // x = frame seed, y = kRng* mode
-layout(location = 4) uniform int uResolution;   // light G-buffer size (texels)
+layout(std140, binding = kBindingPassParams) uniform EmitParamsBlock { EmitParams params; };
 
 flat in uint vGridIndex[];
 
@@ -29,20 +25,21 @@ out vec4 outPower;
 
 void main() {
     uint index = vGridIndex[0];
-    uvec2 cell = uvec2(index % uGridSize.x, index / uGridSize.x);
+    int resolution = int(params.random.z); // light G-buffer size (texels)
+    uvec2 cell = uvec2(index % params.grid.z, index / params.grid.z);
     // The grid point, warped to where the importance map sends it; the photon stands for
     // 1 / (count x pdf) of the view's unit square.
     float pdf;
-    vec2 jitter = computeGridJitter(uView, uSeedMode.x);
-    vec2 uv = warpByImportance(uView, frame.counts.y, (vec2(cell) + jitter) / vec2(uGridSize), pdf);
+    vec2 jitter = computeGridJitter(params.grid.x, params.random.x);
+    vec2 uv = warpByImportance(params.grid.x, frame.counts.y, (vec2(cell) + jitter) / vec2(params.grid.zw), pdf);
     if (!(pdf > 0.0)) return;
-    float share = 1.0 / (float(uGridSize.x * uGridSize.y) * pdf);
-    ivec2 texel = min(ivec2(uv * float(uResolution)), ivec2(uResolution - 1));
-    ivec3 at = ivec3(texel, int(uView));
+    float share = 1.0 / (float(params.grid.z * params.grid.w) * pdf);
+    ivec2 texel = min(ivec2(uv * float(resolution)), ivec2(resolution - 1));
+    ivec3 at = ivec3(texel, int(params.grid.x));
     vec4 position = texelFetch(uLightPosition, at, 0);
     if (position.w < 0.5) return; // the light sees nothing there
 
-    GpuLightView view = lightViews[uView];
+    GpuLightView view = lightViews[params.grid.x];
     GpuLight light = lights[view.info.x];
     vec3 axis = view.axisTexel.xyz;
     vec3 power;
@@ -51,14 +48,14 @@ void main() {
     if (view.info.y == 1u) {
         // Orthographic (sun): the view spans texelSize * resolution metres. Travel counts from
         // the first hit (the thesis, 5.2.1.a), not from a plane that depends on the scene.
-        float widthM = view.axisTexel.w * float(uResolution);
+        float widthM = view.axisTexel.w * float(resolution);
         power = light.power.rgb * (widthM * widthM * share);
         dir = axis;
         travelled = 0.0;
     } else {
         // Perspective: the image plane at unit distance spans [-t, t]^2, t = tan(fov / 2); the
         // solid angle per unit of the view's square is (2t)^2 / (1 + x^2 + y^2)^(3/2).
-        float t = 0.5 * view.axisTexel.w * float(uResolution);
+        float t = 0.5 * view.axisTexel.w * float(resolution);
         float solidAngle = 4.0 * t * t * computePlaneSolidAngleDensity((uv * 2.0 - 1.0) * t) * share;
         vec3 toSurface = position.xyz - view.originAxis.xyz;
         travelled = length(toSurface);
@@ -76,18 +73,18 @@ void main() {
     vec3 diffuse = texelFetch(uLightDiffuse, at, 0).rgb;
     vec4 specular = texelFetch(uLightSpecular, at, 0);
     vec4 transmissive = texelFetch(uLightTransmissive, at, 0);
-    uint photon = uFirstPhoton + index;
+    uint photon = params.grid.y + index;
     vec3 numbers;
-    if (uSeedMode.y == kRngSobol) {
+    if (params.random.y == kRngSobol) {
         // The cell's place on the Z-order curve indexes the sequence; the view and frame seed
         // the scrambling.
-        uint scramble = seedRandom(uView, kSobolScrambleSlot, uSeedMode.x);
+        uint scramble = seedRandom(params.grid.x, kSobolScrambleSlot, params.random.x);
         numbers = computeSobolNumbers(computeZOrder(cell), scramble);
     } else {
-        uint rng = seedRandom(photon, 0u, uSeedMode.x);
-        numbers.x = nextRandom(rng, uSeedMode.y);
-        numbers.y = nextRandom(rng, uSeedMode.y);
-        numbers.z = nextRandom(rng, uSeedMode.y);
+        uint rng = seedRandom(photon, 0u, params.random.x);
+        numbers.x = nextRandom(rng, params.random.y);
+        numbers.y = nextRandom(rng, params.random.y);
+        numbers.z = nextRandom(rng, params.random.y);
     }
     uint event = scatterSurfaceWith(dir, power, normal.xyz, diffuse, specular, transmissive,
                                     normal.w > 0.0, numbers, 1.0);

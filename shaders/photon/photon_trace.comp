@@ -14,9 +14,7 @@ layout(std430, binding = kBindingBouncePhotons) readonly buffer BounceBuffer { B
 layout(std430, binding = kBindingResultPhotons) writeonly buffer ResultBuffer { ResultPhoton resultPhotons[]; };
 layout(std430, binding = kBindingPhotonCounters) buffer CounterBuffer { PhotonCounters counters; };
 
-layout(location = 0) uniform uvec4 uParams;   // x = bounces, y = frame seed, z = generator,
-                                              // w = kRngFixed, kRngPerFrame or kRngObjectSpace
-layout(location = 1) uniform float uEpsilonM; // ray offset off the surface it leaves
+layout(std140, binding = kBindingPassParams) uniform TraceParamsBlock { TraceParams params; };
 
 // Photons are stored where a splat can show them: diffuse or glossy surfaces; a near-mirror lobe
 // is left to further bounces (its reflection would need an image of the mirror, not a splat).
@@ -57,14 +55,14 @@ void main() {
     float density = photon.directionDensity.w;
     vec3 power = photon.power.rgb;
     uint id = floatBitsToUint(photon.power.w);
-    uint bounces = uParams.x;
+    uint bounces = params.control.x;
     uint light = findPhotonLight(id);
     for (uint reflections = 1u; reflections <= bounces; ++reflections) {
-        vec3 origin = position + dir * uEpsilonM;
+        vec3 origin = position + dir * params.ray.x;
         RayHit hit;
         if (!traceRay(origin, dir, kNoHitDistance, hit)) break;
         position = origin + dir * hit.t;
-        travelled += hit.t + uEpsilonM;
+        travelled += hit.t + params.ray.x;
         vec3 geometric = computeHitNormal(hit);
         bool frontFace = dot(geometric, dir) < 0.0;
         vec3 n = frontFace ? geometric : -geometric;
@@ -74,10 +72,10 @@ void main() {
         // object_space: the numbers of where the photon hit, in the hit triangle's own terms
         // (instance, triangle, barycentrics on a 2^-16 grid), so they stay while that surface
         // and the path to it stay, however the object moved; else the photon's emission cell.
-        uint key = uParams.w == kRngObjectSpace ? hashObjectPoint(hit) : id;
-        uint rng = seedRandom(key, reflections, uParams.y);
+        uint key = params.control.w == kRngObjectSpace ? hashObjectPoint(hit) : id;
+        uint rng = seedRandom(key, reflections, params.control.y);
         uint event = scatterPhoton(dir, power, n, m.diffuse.rgb, m.specular, m.transmissive,
-                                   frontFace, rng, uParams.z);
+                                   frontFace, rng, params.control.z);
         if (event == kScatterAbsorbed) break;
         density = updatePathDensity(density, event, m.specular.w);
     }

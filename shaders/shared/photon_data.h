@@ -79,6 +79,34 @@ ISPM_CONST uint kDensityProbes = 32u; // open addressing gives up after this man
 // photon_density.comp).
 ISPM_CONST uint kDensitySlotUints = 8u;
 
+// photon_prepare.comp's stages: before tracing (bounce count -> trace dispatch, result counters
+// reset), before splatting (result count -> splat draws and the density dispatch).
+ISPM_CONST uint kPrepareStageBeforeTrace = 0u;
+ISPM_CONST uint kPrepareStageBeforeSplat = 1u;
+
+// Parameters of photon_prepare.comp (std140, at kBindingPassParams).
+struct PrepareParams {
+    uvec4 control; // x = result capacity, y = bounce capacity, z = stage (kPrepareStage*),
+                   // w = splat passes
+};
+ISPM_STATIC_ASSERT_SIZE(PrepareParams, 16);
+
+// Parameters of photon_trace.comp (std140, at kBindingPassParams).
+struct TraceParams {
+    uvec4 control; // x = bounces, y = frame seed, z = generator (kRngPcg ...), w = kRngFixed ...
+    vec4 ray;      // x = ray offset off the surface a photon leaves (m), yzw unused
+};
+ISPM_STATIC_ASSERT_SIZE(TraceParams, 32);
+
+// Parameters of photon_emit.geom for one light view's grid (std140, at kBindingPassParams).
+struct EmitParams {
+    uvec4 grid;   // x = light view (G-buffer layer), y = global index of its first photon,
+                  // z, w = photons across and down the view
+    uvec4 random; // x = frame seed, y = generator (kRngPcg ...), z = light G-buffer size
+                  // (texels), w unused
+};
+ISPM_STATIC_ASSERT_SIZE(EmitParams, 32);
+
 // photon_density.comp's stages: count photons into the grid, radii and the clip list, clip rays.
 ISPM_CONST uint kDensityStageCount = 0u;
 ISPM_CONST uint kDensityStageRadius = 1u;
