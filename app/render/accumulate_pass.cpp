@@ -15,12 +15,6 @@
 namespace ispm {
 namespace {
 
-// Uniform locations of shaders/denoise/accumulate.frag.
-constexpr GLint kLocationDirectWeight = 0;
-constexpr GLint kLocationHistoryCap = 1;
-constexpr GLint kLocationReproject = 2;
-constexpr GLint kLocationPreviousClipFromWorld = 3;
-
 // Frames that light averaged while moving counts for when the view comes to rest
 // (computeHistoryCap): enough that the first still frames add their noise to a smooth image, few
 // enough that after `accumulate` still frames it weighs 4 / (accumulate + 4) (11% at 32).
@@ -125,11 +119,14 @@ void AccumulatePass::execute(const FrameInputs& inputs) {
     mHistory[kLength].bindUnit(gpu::kUnitHistoryLength);
     mHistoryPosition.bindUnit(gpu::kUnitHistoryPosition);
     mHistoryNormal.bindUnit(gpu::kUnitHistoryNormal);
-    glUniform1f(kLocationDirectWeight, computeAccumulateWeight(accumulate, inputs.historyFrames));
-    glUniform1f(kLocationHistoryCap, computeHistoryCap(inputs));
-    glUniform1i(kLocationReproject, inputs.moved ? 1 : 0); // after a reset the cap is 0
-    glUniformMatrix4fv(kLocationPreviousClipFromWorld, 1, GL_FALSE,
-                       &inputs.previousClipFromWorld[0][0]);
+    gpu::AccumulateParams params{};
+    params.previousClipFromWorld = inputs.previousClipFromWorld;
+    params.weights = glm::vec4(computeAccumulateWeight(accumulate, inputs.historyFrames),
+                               computeHistoryCap(inputs), 0.0f, 0.0f);
+    params.control = glm::uvec4(inputs.moved ? 1u : 0u, 0u, 0u, 0u); // after a reset the cap is 0
+    if (mParams.getSize() == 0) mParams = gl::Buffer("accumulate parameters", sizeof(params));
+    mParams.upload(0, sizeof(params), &params);
+    mParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
     drawFullscreenTriangle();
     for (size_t i = 0; i < mOutputs.size(); ++i)
         mHistory[i].copyFrom(mOutputs[i]);

@@ -68,6 +68,7 @@ class AccumulatePass final : public Pass {
     const gl::Texture& mDirect;
     const gl::Texture& mIndirect;
     ReloadableProgram mProgram;
+    gl::Buffer mParams; // gpu::AccumulateParams
     gl::VertexArray mVertexArray;
     std::array<gl::Texture, 3> mOutputs; // this frame's averages and lengths
     std::array<gl::Texture, 3> mHistory; // the last frame's

@@ -6,10 +6,15 @@
 
 #include <shared/scene_data.h>
 
+#include <cstring>
+#include <vector>
+
 namespace ispm {
 namespace {
 
-constexpr GLint kLocationIteration = 0; // shaders/denoise/atrous.frag
+// Each iteration's FilterParams sits at its own multiple of this in one buffer, bound by range
+// (the largest UNIFORM_BUFFER_OFFSET_ALIGNMENT the GL allows an implementation to require).
+constexpr size_t kParamsStride = 256;
 
 } // namespace
 
@@ -39,13 +44,21 @@ void DenoisePass::execute(const FrameInputs& inputs) {
     mVertexArray.bind();
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
     mViewer.bindTextures(gpu::kUnitGBufferFirst);
-    const gl::Texture* source = &mIndirect;
+    std::vector<uint8_t> params(size_t(iterations) * kParamsStride, 0);
     for (int i = 0; i < iterations; ++i) {
         const bool last = i + 1 >= iterations;
+        const gpu::FilterParams block{glm::ivec4(1 << i, i == 0 ? 1 : 0, last ? 1 : 0, divisor)};
+        std::memcpy(params.data() + size_t(i) * kParamsStride, &block, sizeof block);
+    }
+    if (mParams.getSize() < params.size()) mParams = gl::Buffer("filter parameters", params.size());
+    mParams.upload(0, params.size(), params.data());
+    const gl::Texture* source = &mIndirect;
+    for (int i = 0; i < iterations; ++i) {
         const size_t target = (iterations - 1 - i) % 2 == 0 ? kOutput : 1 - kOutput;
         mTargets[target].bind();
         source->bindUnit(gpu::kUnitFilterSource);
-        glUniform4i(kLocationIteration, 1 << i, i == 0 ? 1 : 0, last ? 1 : 0, divisor);
+        mParams.bindRange(gl::BufferTarget::Uniform, gpu::kBindingPassParams,
+                          size_t(i) * kParamsStride, sizeof(gpu::FilterParams));
         drawFullscreenTriangle();
         source = &mTargets[target].getTexture();
     }

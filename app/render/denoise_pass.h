@@ -27,6 +27,7 @@ class DenoisePass final : public Pass {
     const GBuffer& mViewer;
     const gl::Texture& mIndirect;
     ReloadableProgram mProgram;
+    gl::Buffer mParams; // gpu::FilterParams per iteration, kParamsStride apart
     gl::VertexArray mVertexArray;
     std::array<ColorTarget, 2> mTargets;
 };

@@ -16,16 +16,16 @@
 
 #include <array>
 #include <cmath>
+#include <cstring>
+#include <vector>
 
 namespace ispm {
 namespace {
 
 // Uniform locations of shaders/splat/*.
-constexpr GLint kLocationPass = 0;
-constexpr GLint kLocationRadius = 1;
-constexpr GLint kLocationSquash = 2;
-constexpr GLint kLocationDivisor = 3;
-constexpr GLint kLocationModes = 4;
+// Each draw's SplatParams sits at its own multiple of this in one buffer, bound by range (the
+// largest UNIFORM_BUFFER_OFFSET_ALIGNMENT the GL allows an implementation to require).
+constexpr size_t kParamsStride = 256;
 
 // The unit cube's 12 triangles over its 8 corners (splat.vert: corner i has x from bit 0, y from
 // bit 1, z from bit 2, each -1 or +1), counter-clockwise seen from outside.
@@ -112,13 +112,21 @@ void SplatPass::execute(const FrameInputs& inputs) {
     const SplatRadii r = computeSplatRadii(inputs.scene.getSurfaceArea(),
                                            glm::length(inputs.scene.getBounds().getExtent()),
                                            inputs.settings, inputs.getRadiusScale());
-    glUniform4f(kLocationRadius, r.radiusMinM, r.radiusMaxM, r.distMinM, r.distMaxM);
-    glUniform1f(kLocationSquash, inputs.settings.squash);
-    glUniform2ui(kLocationModes, inputs.settings.radiusMode, cullInRasteriser ? 0u : 1u);
-    glUniform1i(kLocationDivisor, inputs.settings.splatDivisor);
-    const auto passes = static_cast<GLuint>(inputs.settings.splatPasses);
-    for (GLuint p = 0; p < passes; ++p) {
-        glUniform2ui(kLocationPass, p, passes);
+    const auto passes = static_cast<uint32_t>(inputs.settings.splatPasses);
+    std::vector<uint8_t> params(size_t(passes) * kParamsStride, 0);
+    for (uint32_t p = 0; p < passes; ++p) {
+        gpu::SplatParams block{};
+        block.radius = glm::vec4(r.radiusMinM, r.radiusMaxM, r.distMinM, r.distMaxM);
+        block.control =
+            glm::uvec4(inputs.settings.radiusMode, cullInRasteriser ? 0u : 1u, p, passes);
+        block.shape = glm::vec4(inputs.settings.squash, float(inputs.settings.splatDivisor), 0, 0);
+        std::memcpy(params.data() + p * kParamsStride, &block, sizeof block);
+    }
+    if (mParams.getSize() < params.size()) mParams = gl::Buffer("splat parameters", params.size());
+    mParams.upload(0, params.size(), params.data());
+    for (uint32_t p = 0; p < passes; ++p) {
+        mParams.bindRange(gl::BufferTarget::Uniform, gpu::kBindingPassParams, p * kParamsStride,
+                          sizeof(gpu::SplatParams));
         gl::drawElementsIndirect(gl::Primitive::Triangles, mBuffers.getSplatDraws(),
                                  p * gpu::kSplatDrawUvec4s * sizeof(glm::uvec4));
     }

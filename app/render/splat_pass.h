@@ -56,6 +56,7 @@ class SplatPass final : public Pass {
     ReloadableProgram mProgram;
     gl::VertexArray mVertexArray;
     gl::Buffer mCubeIndices;
+    gl::Buffer mParams; // gpu::SplatParams per draw, kParamsStride apart
     gl::Texture mIndirect;
     gl::Framebuffer mFramebuffer;
 };

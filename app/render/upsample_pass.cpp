@@ -8,12 +8,6 @@
 #include <shared/scene_data.h>
 
 namespace ispm {
-namespace {
-
-constexpr GLint kLocationDivisor = 0; // shaders/denoise/upsample.frag
-
-} // namespace
-
 UpsamplePass::UpsamplePass(const GBuffer& viewer, const gl::Texture& filtered)
     : mViewer(viewer), mFiltered(filtered),
       mProgram(ReloadableProgram({.label = "upsample",
@@ -35,7 +29,10 @@ void UpsamplePass::execute(const FrameInputs& inputs) {
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
     mViewer.bindTextures(gpu::kUnitGBufferFirst);
     mFiltered.bindUnit(gpu::kUnitFilterSource);
-    glUniform1i(kLocationDivisor, divisor);
+    const gpu::FilterParams params{glm::ivec4(0, 0, 0, divisor)};
+    if (mParams.getSize() == 0) mParams = gl::Buffer("upsample parameters", sizeof(params));
+    mParams.upload(0, sizeof(params), &params);
+    mParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
     drawFullscreenTriangle();
 }
 

@@ -25,6 +25,7 @@ class UpsamplePass final : public Pass {
     const GBuffer& mViewer;
     const gl::Texture& mFiltered;
     ReloadableProgram mProgram;
+    gl::Buffer mParams; // gpu::FilterParams
     gl::VertexArray mVertexArray;
     ColorTarget mTarget;
 };

@@ -1,11 +1,11 @@
 // Temporal accumulation (AccumulatePass): this frame's direct and indirect light mixed into their
 // histories.
-// - Direct light: a running mean of the frames of a still view (uDirectWeight = 1 / frames);
+// - Direct light: a running mean of the frames of a still view (params.weights.x = 1 / frames);
 //   1 after any motion, where shadows and highlights move with what moved.
 // - Indirect light: each pixel keeps how many frames its history holds (its length). A still
 //   view mixes the history at the same pixel with weight 1 / (length + 1), the length at most
-//   uHistoryCap (a running mean from a reset; after motion the moving frames count as a few). When
-//   the view or objects moved (uReproject), the history is fetched where this pixel's surface was
+//   params.weights.y (a running mean from a reset; after motion the moving frames count as a
+//   few). When the view or objects moved (params.control.x), the history is fetched where this pixel's surface was
 //   in the last frame: the point moved back with its instance's motion, projected by the last
 //   frame's camera, the four history pixels around it kept where they show the same surface (the
 //   same plane, a normal alike) and weighed bilinearly; none kept: the history starts anew.
@@ -26,10 +26,7 @@ layout(std430, binding = kBindingPreviousTransforms) readonly buffer PreviousTra
     mat4 previousWorldFromObject[];
 };
 
-layout(location = 0) uniform float uDirectWeight;
-layout(location = 1) uniform float uHistoryCap;
-layout(location = 2) uniform bool uReproject;
-layout(location = 3) uniform mat4 uPreviousClipFromWorld;
+layout(std140, binding = kBindingPassParams) uniform AccumulateParamsBlock { AccumulateParams params; };
 
 layout(location = 0) out vec4 outDirect;
 layout(location = 1) out vec4 outIndirect;
@@ -53,7 +50,7 @@ History fetchReprojected(vec4 position, vec3 normal) {
         previousWorldFromObject[instance] * instances[instance].objectFromWorld;
     vec3 p = (previousFromCurrent * vec4(position.xyz, 1.0)).xyz;
     vec3 n = normalize(transpose(inverse(mat3(previousFromCurrent))) * normal);
-    vec4 clip = uPreviousClipFromWorld * vec4(p, 1.0);
+    vec4 clip = params.previousClipFromWorld * vec4(p, 1.0);
     if (clip.w <= 0.0) return none;
     vec2 size = frame.imageSize.xy;
     vec2 f = (clip.xy / clip.w * 0.5 + 0.5) * size - 0.5;
@@ -87,18 +84,18 @@ void main() {
     // Alpha too: the direct light's is the pixel's surface coverage (compose.frag).
     // A weight of 1 takes this frame's light as it is (mix would round it).
     vec4 direct = texelFetch(uDirect, pixel, 0);
-    outDirect = uDirectWeight >= 1.0 ? direct
-                                     : mix(texelFetch(uHistoryDirect, pixel, 0), direct, uDirectWeight);
+    outDirect = params.weights.x >= 1.0 ? direct
+                                     : mix(texelFetch(uHistoryDirect, pixel, 0), direct, params.weights.x);
     // A cap of 0 (a reset) reads no history at all: the textures may hold anything then.
     History history = History(vec3(0.0), 0.0);
-    if (uHistoryCap > 0.0 && !uReproject) {
+    if (params.weights.y > 0.0 && params.control.x == 0u) {
         history = History(texelFetch(uHistoryIndirect, pixel, 0).rgb,
                           texelFetch(uHistoryLength, pixel, 0).r);
-    } else if (uHistoryCap > 0.0) {
+    } else if (params.weights.y > 0.0) {
         vec4 position = texelFetch(uPosition, pixel, 0);
         if (position.w >= 0.5) history = fetchReprojected(position, texelFetch(uNormal, pixel, 0).xyz);
     }
-    float length = min(history.length, uHistoryCap);
+    float length = min(history.length, params.weights.y);
     vec4 current = texelFetch(uIndirect, pixel, 0);
     vec3 indirect = length > 0.0 ? mix(history.indirect, current.rgb, 1.0 / (length + 1.0))
                                  : current.rgb;

@@ -10,7 +10,7 @@
 
 layout(binding = kUnitFilterSource) uniform sampler2D uSource;
 
-layout(location = 0) uniform int uDivisor; // image pixels per buffer pixel along an axis
+layout(std140, binding = kBindingPassParams) uniform FilterParamsBlock { FilterParams params; };
 
 layout(location = 0) out vec4 outRadiance;
 
@@ -26,8 +26,8 @@ void main() {
     ivec2 size = textureSize(uSource, 0);
     vec3 n = texelFetch(uNormal, pixel, 0).xyz;
     // Footprints of a buffer pixel on this surface.
-    float planeScale = computePlaneScale(pixel, position.xyz, uDivisor);
-    vec2 at = (vec2(pixel) - float(uDivisor / 2)) / float(uDivisor); // in buffer pixels
+    float planeScale = computePlaneScale(pixel, position.xyz, params.iteration.w);
+    vec2 at = (vec2(pixel) - float(params.iteration.w / 2)) / float(params.iteration.w); // in buffer pixels
     ivec2 first = ivec2(floor(at)) - 1;
     vec3 sum = vec3(0.0);
     float weights = 0.0;
@@ -39,7 +39,7 @@ void main() {
             if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
             vec2 offset = abs(vec2(q) - at);
             float tent = max(1.0 - 0.5 * offset.x, 0.0) * max(1.0 - 0.5 * offset.y, 0.0);
-            ivec2 qg = getBlockGBufferPixel(q, uDivisor);
+            ivec2 qg = getBlockGBufferPixel(q, params.iteration.w);
             if (tent <= 0.0 || texelFetch(uPosition, qg, 0).w < 0.5) continue;
             vec3 irradiance = texelFetch(uSource, q, 0).rgb / getReflectance(qg);
             float w = tent * weighTap(qg, n, position.xyz, planeScale);

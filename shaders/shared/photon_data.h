@@ -107,6 +107,18 @@ struct EmitParams {
 };
 ISPM_STATIC_ASSERT_SIZE(EmitParams, 32);
 
+// Parameters of the splat pass, splat.vert and splat.frag (std140, at kBindingPassParams); one
+// block per splat_passes draw, bound by range.
+struct SplatParams {
+    vec4 radius;   // travel modes: x = radius_min, y = radius_max (m, times radius_scale),
+                   // z = dist_min, w = dist_max (m)
+    uvec4 control; // x = radius mode (kRadius*), y = 1: drop front faces in the fragment stage,
+                   // z = this draw, w = draw count
+    vec4 shape;    // x = squash (thickness along the normal / radius), y = image pixels per
+                   // splat-buffer pixel along an axis, zw unused
+};
+ISPM_STATIC_ASSERT_SIZE(SplatParams, 48);
+
 // photon_density.comp's stages: count photons into the grid, radii and the clip list, clip rays.
 ISPM_CONST uint kDensityStageCount = 0u;
 ISPM_CONST uint kDensityStageRadius = 1u;

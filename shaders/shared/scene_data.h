@@ -108,6 +108,23 @@ struct FrameConstants {
 };
 ISPM_STATIC_ASSERT_SIZE(FrameConstants, 224);
 
+// Parameters of accumulate.frag (std140, at kBindingPassParams).
+struct AccumulateParams {
+    mat4 previousClipFromWorld; // the last frame's camera, for reprojection
+    vec4 weights;               // x = direct light's weight (1 / frames), y = cap on a pixel's
+                                // history length (0: no history), zw unused
+    uvec4 control;              // x = 1: the view or objects moved (reproject), yzw unused
+};
+ISPM_STATIC_ASSERT_SIZE(AccumulateParams, 96);
+
+// Parameters of one iteration of atrous.frag, and of upsample.frag (std140, at
+// kBindingPassParams; the filter's iterations are bound by range).
+struct FilterParams {
+    ivec4 iteration; // x = step (px), y = 1: demodulate the input by reflectance, z = 1:
+                     // modulate the output, w = image pixels per buffer pixel along an axis
+};
+ISPM_STATIC_ASSERT_SIZE(FilterParams, 16);
+
 ISPM_CONST uint kTonemapThesis = 0u;
 ISPM_CONST uint kTonemapFilmic = 1u;
 ISPM_CONST uint kTonemapLinear = 2u;

@@ -9,9 +9,7 @@
 #include "shared/splat_clip.h"
 
 layout(std430, binding = kBindingResultPhotons) readonly buffer ResultBuffer { ResultPhoton photons[]; };
-layout(location = 2) uniform float uSquash; // thickness along the normal / radius
-layout(location = 4) uniform uvec2 uSplatModes; // y = 1: drop front faces here
-layout(location = 3) uniform int uDivisor;     // image pixels per buffer pixel along an axis
+layout(std140, binding = kBindingPassParams) uniform SplatParamsBlock { SplatParams params; };
 
 layout(binding = kUnitGBufferFirst + GBUFFER_POSITION) uniform sampler2D uPosition;
 layout(binding = kUnitGBufferFirst + GBUFFER_NORMAL) uniform sampler2D uNormal;
@@ -28,9 +26,9 @@ layout(std430, binding = kBindingSplatClip) readonly buffer SplatClip { vec4 spl
 layout(location = 0) out vec4 outRadiance;
 
 void main() {
-    if (uSplatModes.y == 1u && gl_FrontFacing) discard; // splat_faces = all
+    if (params.control.y == 1u && gl_FrontFacing) discard; // splat_faces = all
     // A buffer smaller than the image shades the G-buffer pixel at the middle of its block.
-    ivec2 pixel = getBlockGBufferPixel(ivec2(gl_FragCoord.xy), uDivisor);
+    ivec2 pixel = getBlockGBufferPixel(ivec2(gl_FragCoord.xy), int(params.shape.y));
     vec4 position = texelFetch(uPosition, pixel, 0);
     if (position.w < 0.5) discard;
     ResultPhoton photon = photons[vPhoton];
@@ -41,7 +39,7 @@ void main() {
     float along = dot(d, pn);
     vec3 inPlane = d - along * pn;
     float s2 = dot(inPlane, inPlane) / (vRadius * vRadius);
-    float z = along / (vRadius * uSquash);
+    float z = along / (vRadius * params.shape.x);
     if (s2 + z * z > 1.0) discard;
     // Beyond a clip line lies another surface (a wall the disc would climb or pass through).
     vec3 t;

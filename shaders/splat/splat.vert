@@ -11,8 +11,6 @@ layout(std430, binding = kBindingResultPhotons) readonly buffer ResultBuffer { R
 layout(std430, binding = kBindingPhotonCounters) readonly buffer CounterBuffer { PhotonCounters counters; };
 layout(std430, binding = kBindingSplatClip) readonly buffer SplatClip { vec4 splatClip[]; };
 
-layout(location = 0) uniform uvec2 uPass; // x = this pass, y = pass count
-layout(location = 3) uniform int uDivisor; // image pixels per buffer pixel along an axis
 
 flat out uint vPhoton;
 flat out float vRadius;
@@ -23,7 +21,7 @@ flat out uint vClipped; // 1: the fragment stage reads the photon's clip lines
 
 void main() {
     uint stored = counters.splatDraw.y;
-    uint id = stored * uPass.x / uPass.y + uint(gl_InstanceID);
+    uint id = stored * params.control.z / params.control.w + uint(gl_InstanceID);
     ResultPhoton photon = photons[id];
     vec3 n = photon.normalDensity.xyz;
     vec3 t;
@@ -42,8 +40,8 @@ void main() {
     float alongT = c.x > 0.0 ? extent.x : extent.y;
     float alongB = c.y > 0.0 ? extent.z : extent.w;
     vec3 world = photon.positionDistance.xyz +
-                 (t * (c.x * alongT) + b * (c.y * alongB) + n * (c.z * radius * uSquash));
+                 (t * (c.x * alongT) + b * (c.y * alongB) + n * (c.z * radius * params.shape.x));
     vPhoton = id;
     vRadius = radius;
-    gl_Position = toBlockClip(frame.clipFromWorld * vec4(world, 1.0), uDivisor);
+    gl_Position = toBlockClip(frame.clipFromWorld * vec4(world, 1.0), int(params.shape.y));
 }
