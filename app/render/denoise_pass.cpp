@@ -10,13 +10,7 @@
 #include <vector>
 
 namespace ispm {
-namespace {
-
-// Each iteration's FilterParams sits at its own multiple of this in one buffer, bound by range
-// (the largest UNIFORM_BUFFER_OFFSET_ALIGNMENT the GL allows an implementation to require).
-constexpr size_t kParamsStride = 256;
-
-} // namespace
+namespace {} // namespace
 
 DenoisePass::DenoisePass(const GBuffer& viewer, const gl::Texture& indirect)
     : mViewer(viewer), mIndirect(indirect),
@@ -44,21 +38,18 @@ void DenoisePass::execute(const FrameInputs& inputs) {
     mVertexArray.bind();
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
     mViewer.bindTextures(gpu::kUnitGBufferFirst);
-    std::vector<uint8_t> params(size_t(iterations) * kParamsStride, 0);
+    std::vector<gpu::FilterParams> params(static_cast<size_t>(iterations));
     for (int i = 0; i < iterations; ++i) {
         const bool last = i + 1 >= iterations;
-        const gpu::FilterParams block{glm::ivec4(1 << i, i == 0 ? 1 : 0, last ? 1 : 0, divisor)};
-        std::memcpy(params.data() + size_t(i) * kParamsStride, &block, sizeof block);
+        params[size_t(i)].iteration = glm::ivec4(1 << i, i == 0 ? 1 : 0, last ? 1 : 0, divisor);
     }
-    if (mParams.getSize() < params.size()) mParams = gl::Buffer("filter parameters", params.size());
-    mParams.upload(0, params.size(), params.data());
+    mParams.upload(params);
     const gl::Texture* source = &mIndirect;
     for (int i = 0; i < iterations; ++i) {
         const size_t target = (iterations - 1 - i) % 2 == 0 ? kOutput : 1 - kOutput;
         mTargets[target].bind();
         source->bindUnit(gpu::kUnitFilterSource);
-        mParams.bindRange(gl::BufferTarget::Uniform, gpu::kBindingPassParams,
-                          size_t(i) * kParamsStride, sizeof(gpu::FilterParams));
+        mParams.bind(size_t(i));
         drawFullscreenTriangle();
         source = &mTargets[target].getTexture();
     }

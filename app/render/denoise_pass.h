@@ -5,6 +5,7 @@
 
 #include "render/fullscreen.h"
 #include "render/gbuffer.h"
+#include "render/param_blocks.h"
 #include "render/pass.h"
 
 #include <array>
@@ -27,7 +28,7 @@ class DenoisePass final : public Pass {
     const GBuffer& mViewer;
     const gl::Texture& mIndirect;
     ReloadableProgram mProgram;
-    gl::Buffer mParams; // gpu::FilterParams per iteration, kParamsStride apart
+    ParamBlocks<gpu::FilterParams> mParams{"filter parameters"}; // one per iteration
     gl::VertexArray mVertexArray;
     std::array<ColorTarget, 2> mTargets;
 };

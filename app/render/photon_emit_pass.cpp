@@ -21,9 +21,6 @@ namespace {
 constexpr uint64_t kMaxResultPhotons = uint64_t(1) << 23; // 64 bytes each
 
 // Uniform locations of shaders/photon/photon_emit.geom.
-// Each grid's EmitParams sits at its own multiple of this in one buffer, bound by range per draw
-// (the largest UNIFORM_BUFFER_OFFSET_ALIGNMENT the GL allows an implementation to require).
-constexpr size_t kParamsStride = 256;
 
 } // namespace
 
@@ -72,24 +69,19 @@ void PhotonEmitPass::execute(const FrameInputs& inputs) {
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
     mLightGBuffer.bindTextures(gpu::kUnitLightGBufferFirst);
     mImportanceCdf.bindBase(gl::BufferTarget::Storage, gpu::kBindingImportanceCdf);
-    std::vector<uint8_t> params(std::max<size_t>(mGrids.size(), 1) * kParamsStride, 0);
+    std::vector<gpu::EmitParams> params(mGrids.size());
     for (size_t i = 0; i < mGrids.size(); ++i) {
         const EmissionGrid& g = mGrids[i];
-        gpu::EmitParams p{};
-        p.grid = glm::uvec4(g.viewIndex, g.firstPhoton, g.width, g.height);
-        p.random = glm::uvec4(inputs.seed, inputs.settings.rngGenerator,
-                              uint32_t(scene.getLightResolution()), 0u);
-        std::memcpy(params.data() + i * kParamsStride, &p, sizeof p);
+        params[i].grid = glm::uvec4(g.viewIndex, g.firstPhoton, g.width, g.height);
+        params[i].random = glm::uvec4(inputs.seed, inputs.settings.rngGenerator,
+                                      uint32_t(scene.getLightResolution()), 0u);
     }
-    if (mParams.getSize() < params.size())
-        mParams = gl::Buffer("photon emit parameters", params.size());
-    mParams.upload(0, params.size(), params.data());
+    mParams.upload(params);
     mFeedback.attachBuffer(0, mBuffers.getBounce(), 0, mBuffers.getBounce().getSize());
     mWritten.begin();
     mFeedback.begin(gl::Primitive::Points);
     for (size_t i = 0; i < mGrids.size(); ++i) {
-        mParams.bindRange(gl::BufferTarget::Uniform, gpu::kBindingPassParams, i * kParamsStride,
-                          sizeof(gpu::EmitParams));
+        mParams.bind(i);
         gl::drawArrays(gl::Primitive::Points, 0, static_cast<int>(mGrids[i].getCount()));
     }
     mFeedback.end();

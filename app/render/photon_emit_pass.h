@@ -4,9 +4,12 @@
 #pragma once
 
 #include "render/gbuffer.h"
+#include "render/param_blocks.h"
 #include "render/pass.h"
 #include "render/photon_budget.h"
 #include "render/photon_buffers.h"
+
+#include <shared/photon_data.h>
 
 namespace ispm {
 
@@ -29,7 +32,7 @@ class PhotonEmitPass final : public Pass {
     const gl::Buffer& mImportanceCdf;
     PhotonBuffers& mBuffers;
     ReloadableProgram mProgram;
-    gl::Buffer mParams; // gpu::EmitParams per grid, kParamsStride apart
+    ParamBlocks<gpu::EmitParams> mParams{"photon emit parameters"}; // one per grid
     gl::VertexArray mVertexArray;
     gl::Framebuffer mFramebuffer;
     gl::TransformFeedback mFeedback;

@@ -23,9 +23,6 @@ namespace ispm {
 namespace {
 
 // Uniform locations of shaders/splat/*.
-// Each draw's SplatParams sits at its own multiple of this in one buffer, bound by range (the
-// largest UNIFORM_BUFFER_OFFSET_ALIGNMENT the GL allows an implementation to require).
-constexpr size_t kParamsStride = 256;
 
 // The unit cube's 12 triangles over its 8 corners (splat.vert: corner i has x from bit 0, y from
 // bit 1, z from bit 2, each -1 or +1), counter-clockwise seen from outside.
@@ -113,20 +110,17 @@ void SplatPass::execute(const FrameInputs& inputs) {
                                            glm::length(inputs.scene.getBounds().getExtent()),
                                            inputs.settings, inputs.getRadiusScale());
     const auto passes = static_cast<uint32_t>(inputs.settings.splatPasses);
-    std::vector<uint8_t> params(size_t(passes) * kParamsStride, 0);
+    std::vector<gpu::SplatParams> params(passes);
     for (uint32_t p = 0; p < passes; ++p) {
-        gpu::SplatParams block{};
-        block.radius = glm::vec4(r.radiusMinM, r.radiusMaxM, r.distMinM, r.distMaxM);
-        block.control =
+        params[p].radius = glm::vec4(r.radiusMinM, r.radiusMaxM, r.distMinM, r.distMaxM);
+        params[p].control =
             glm::uvec4(inputs.settings.radiusMode, cullInRasteriser ? 0u : 1u, p, passes);
-        block.shape = glm::vec4(inputs.settings.squash, float(inputs.settings.splatDivisor), 0, 0);
-        std::memcpy(params.data() + p * kParamsStride, &block, sizeof block);
+        params[p].shape =
+            glm::vec4(inputs.settings.squash, float(inputs.settings.splatDivisor), 0.0f, 0.0f);
     }
-    if (mParams.getSize() < params.size()) mParams = gl::Buffer("splat parameters", params.size());
-    mParams.upload(0, params.size(), params.data());
+    mParams.upload(params);
     for (uint32_t p = 0; p < passes; ++p) {
-        mParams.bindRange(gl::BufferTarget::Uniform, gpu::kBindingPassParams, p * kParamsStride,
-                          sizeof(gpu::SplatParams));
+        mParams.bind(p);
         gl::drawElementsIndirect(gl::Primitive::Triangles, mBuffers.getSplatDraws(),
                                  p * gpu::kSplatDrawUvec4s * sizeof(glm::uvec4));
     }

@@ -6,9 +6,12 @@
 #pragma once
 
 #include "render/gbuffer.h"
+#include "render/param_blocks.h"
 #include "render/pass.h"
 #include "render/photon_buffers.h"
 #include "scene/scene.h"
+
+#include <shared/photon_data.h>
 
 namespace ispm {
 
@@ -56,7 +59,7 @@ class SplatPass final : public Pass {
     ReloadableProgram mProgram;
     gl::VertexArray mVertexArray;
     gl::Buffer mCubeIndices;
-    gl::Buffer mParams; // gpu::SplatParams per draw, kParamsStride apart
+    ParamBlocks<gpu::SplatParams> mParams{"splat parameters"}; // one per draw
     gl::Texture mIndirect;
     gl::Framebuffer mFramebuffer;
 };
