@@ -13,8 +13,6 @@
 namespace ispm {
 namespace {
 
-constexpr GLint kLocationParams = 0;
-constexpr GLint kLocationEpsilon = 1;
 constexpr GLuint kImageUnitAccumulation = 0;
 constexpr unsigned kGroupSize = 8; // local_size_x/y of reference.comp
 // The light G-buffer of the photon mapper is not used here; the GPU scene still derives light
@@ -38,7 +36,8 @@ ReferencePass::ReferencePass(const Scene& scene, std::unique_ptr<GpuScene> owned
                             .stages = {{gl::ShaderStage::Compute, "reference/reference.comp"}},
                             .defines = getGBufferDefines()})),
       mFrameConstants("reference frame constants", sizeof(gpu::FrameConstants)),
-      mWidth(settings.width), mHeight(settings.height),
+      mParams("reference parameters", sizeof(gpu::ReferenceParams)), mWidth(settings.width),
+      mHeight(settings.height),
       mBounces(settings.bouncesSet ? settings.bounces : kReferenceDefaultBounces),
       mSeed(settings.seed) {
     mAccumulation =
@@ -54,9 +53,12 @@ void ReferencePass::addSample() {
     mFrameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
     mAccumulation.bindImage(kImageUnitAccumulation, true, true);
     mProgram.use();
-    glUniform4ui(kLocationParams, static_cast<GLuint>(mSamples), static_cast<GLuint>(mBounces),
-                 mSeed, 0u);
-    glUniform1f(kLocationEpsilon, mGpuScene.getRayEpsilon());
+    gpu::ReferenceParams params{};
+    params.control =
+        glm::uvec4(static_cast<uint32_t>(mSamples), static_cast<uint32_t>(mBounces), mSeed, 0u);
+    params.ray = glm::vec4(mGpuScene.getRayEpsilon(), 0.0f, 0.0f, 0.0f);
+    mParams.upload(0, sizeof(params), &params);
+    mParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
     gl::dispatchCompute((static_cast<unsigned>(mWidth) + kGroupSize - 1) / kGroupSize,
                         (static_cast<unsigned>(mHeight) + kGroupSize - 1) / kGroupSize);
     // The next sample reads what this one wrote; read-back follows the same rule.

@@ -42,6 +42,7 @@ class ReferencePass {
     const GpuScene& mGpuScene;
     gl::Program mProgram;
     gl::Buffer mFrameConstants;
+    gl::Buffer mParams; // gpu::ReferenceParams of the sample being added
     gl::Texture mAccumulation;
     int mWidth;
     int mHeight;

@@ -14,8 +14,7 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 0, rgba32f) uniform image2D uAccumulation;
 
-layout(location = 0) uniform uvec4 uParams;   // x = sample index, y = bounces, z = seed
-layout(location = 1) uniform float uEpsilonM; // ray offset off the surface a ray leaves
+layout(std140, binding = kBindingPassParams) uniform ReferenceParamsBlock { ReferenceParams params; };
 
 const uint kRouletteDepth = 3u;      // vertices traced with certainty before roulette starts
 const float kMaxSurvival = 0.95;     // even bright paths end eventually
@@ -33,7 +32,7 @@ vec3 traceCameraPath(vec2 pixel, inout uint rng) {
     vec3 dir = normalize(farW.xyz / farW.w - nearW.xyz / nearW.w);
     vec3 radiance = vec3(0.0);
     vec3 throughput = vec3(1.0);
-    uint bounces = uParams.y;
+    uint bounces = params.control.y;
     for (uint vertex = 1u; ; ++vertex) {
         RayHit hit;
         if (!traceRay(origin, dir, kNoHitDistance, hit)) {
@@ -47,12 +46,12 @@ vec3 traceCameraPath(vec2 pixel, inout uint rng) {
         GpuMaterial m = materials[triangles[hit.triangle].w];
         if (vertex == 1u) radiance += m.emission.rgb; // emission is seen, it lights nothing
         vec3 wo = -dir;
-        vec3 offsetOrigin = position + n * uEpsilonM;
+        vec3 offsetOrigin = position + n * params.ray.x;
         for (uint i = 0u; i < frame.counts.x; ++i) {
             LightSample s = sampleLight(lights[i], position);
             float cosTheta = dot(n, s.wi);
             if (cosTheta <= 0.0 || all(equal(s.irradiance, vec3(0.0)))) continue;
-            if (isOccluded(offsetOrigin, s.wi, s.distanceM - 2.0 * uEpsilonM)) continue;
+            if (isOccluded(offsetOrigin, s.wi, s.distanceM - 2.0 * params.ray.x)) continue;
             radiance += throughput * evaluateBrdf(m.diffuse.rgb, m.specular, n, s.wi, wo) *
                         s.irradiance * cosTheta;
         }
@@ -69,7 +68,7 @@ vec3 traceCameraPath(vec2 pixel, inout uint rng) {
             throughput /= survive;
         }
         // Leave on the side the new direction points to (refraction crosses the surface).
-        origin = position + (dot(dir, n) >= 0.0 ? n : -n) * uEpsilonM;
+        origin = position + (dot(dir, n) >= 0.0 ? n : -n) * params.ray.x;
     }
     return radiance;
 }
@@ -79,7 +78,7 @@ void main() {
     ivec2 size = imageSize(uAccumulation);
     if (any(greaterThanEqual(pixel, size))) return;
     uint pixelIndex = uint(pixel.y * size.x + pixel.x);
-    uint rng = seedRandom(pixelIndex, uParams.x, uParams.z);
+    uint rng = seedRandom(pixelIndex, params.control.x, params.control.z);
     // Box filter: a uniformly jittered position inside the pixel.
     vec2 jitter = vec2(nextRandom(rng, kRngPcg), nextRandom(rng, kRngPcg));
     vec3 radiance = traceCameraPath(vec2(pixel) + jitter, rng);

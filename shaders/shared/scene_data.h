@@ -125,6 +125,13 @@ struct FilterParams {
 };
 ISPM_STATIC_ASSERT_SIZE(FilterParams, 16);
 
+// Parameters of one sample of reference.comp, the path tracer (std140, at kBindingPassParams).
+struct ReferenceParams {
+    uvec4 control; // x = sample index, y = bounces, z = seed, w unused
+    vec4 ray;      // x = ray offset off the surface a ray leaves (m), yzw unused
+};
+ISPM_STATIC_ASSERT_SIZE(ReferenceParams, 32);
+
 ISPM_CONST uint kTonemapThesis = 0u;
 ISPM_CONST uint kTonemapFilmic = 1u;
 ISPM_CONST uint kTonemapLinear = 2u;
