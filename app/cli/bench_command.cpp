@@ -359,7 +359,7 @@ int runBench(const BenchOptions& options) {
     const gl::TimingMethod timing =
         info.isSoftware ? gl::TimingMethod::CpuFinish : gl::TimingMethod::TimerQuery;
     FrameRunner runner(scene, settings, timing);
-    warnIfLightFades(runner, settings);
+    warnIfLightFades(runner);
     int frameIndex = 0;
     // Frame i shows time i/60 s: warm-up frames animate too, so the timed ones are not the first
     // to rebuild anything.

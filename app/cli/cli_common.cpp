@@ -61,11 +61,11 @@ Settings makeCommandLineSettings(const std::vector<std::string>& sets, std::opti
     return settings;
 }
 
-void warnIfLightFades(const FrameRunner& runner, const Settings& settings) {
+void warnIfLightFades(const FrameRunner& runner) {
     const GpuScene& scene = runner.getGpuScene();
     const std::string warning =
         describeOversizedSplats(scene.getSurfaceArea(), glm::length(scene.getBounds().getExtent()),
-                                resolveFrameSettings(settings));
+                                runner.getFrameSettings());
     if (!warning.empty()) std::fprintf(stderr, "ispm: warning: %s\n", warning.c_str());
 }
 

@@ -34,7 +34,7 @@ Settings makeCommandLineSettings(const std::vector<std::string>& sets, std::opti
 void printTimings(const FrameRunner& runner, const gl::ContextInfo& info);
 
 // "ispm: warning: ..." on stderr when the settings make light vanish (describeOversizedSplats).
-void warnIfLightFades(const FrameRunner& runner, const Settings& settings);
+void warnIfLightFades(const FrameRunner& runner);
 
 // The exit code of a command that rendered: 1 (with a line naming `while`) when KHR_debug
 // reported OpenGL errors during the run, else 0.

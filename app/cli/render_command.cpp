@@ -132,7 +132,7 @@ int runRender(const RenderOptions& options) {
     const gl::TimingMethod timing =
         context->getInfo().isSoftware ? gl::TimingMethod::CpuFinish : gl::TimingMethod::TimerQuery;
     FrameRunner runner(scene, settings, timing);
-    warnIfLightFades(runner, settings);
+    warnIfLightFades(runner);
     // The first frame compiles shaders in the driver and touches every resource once; time the
     // second, which is what every later frame costs. Accumulating, every frame counts: the image
     // is the average of `accumulate` frames.

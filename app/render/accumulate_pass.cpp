@@ -124,7 +124,6 @@ void AccumulatePass::execute(const FrameInputs& inputs) {
     params.weights = glm::vec4(computeAccumulateWeight(accumulate, inputs.historyFrames),
                                computeHistoryCap(inputs), 0.0f, 0.0f);
     params.control = glm::uvec4(inputs.moved ? 1u : 0u, 0u, 0u, 0u); // after a reset the cap is 0
-    if (mParams.getSize() == 0) mParams = gl::Buffer("accumulate parameters", sizeof(params));
     mParams.upload(0, sizeof(params), &params);
     mParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
     drawFullscreenTriangle();

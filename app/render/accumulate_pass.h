@@ -17,6 +17,8 @@
 #include "render/gbuffer.h"
 #include "render/pass.h"
 
+#include <shared/scene_data.h>
+
 #include <array>
 
 namespace ispm {
@@ -68,7 +70,7 @@ class AccumulatePass final : public Pass {
     const gl::Texture& mDirect;
     const gl::Texture& mIndirect;
     ReloadableProgram mProgram;
-    gl::Buffer mParams; // gpu::AccumulateParams
+    gl::Buffer mParams{"accumulate parameters", sizeof(gpu::AccumulateParams)};
     gl::VertexArray mVertexArray;
     std::array<gl::Texture, 3> mOutputs; // this frame's averages and lengths
     std::array<gl::Texture, 3> mHistory; // the last frame's

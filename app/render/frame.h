@@ -60,6 +60,7 @@ class FrameRunner {
     void updateScene();
     void rebuildScene();
     const Settings& getSettings() const { return mSettings; }
+    const FrameSettings& getFrameSettings() const { return mFrameSettings; }
     const Scene& getScene() const { return mScene; }
     // F5: rebuilds the passes' programs whose source files changed; failures keep the old ones.
     ShaderReloadReport reloadShaders();

@@ -30,7 +30,6 @@ void UpsamplePass::execute(const FrameInputs& inputs) {
     mViewer.bindTextures(gpu::kUnitGBufferFirst);
     mFiltered.bindUnit(gpu::kUnitFilterSource);
     const gpu::FilterParams params{glm::ivec4(0, 0, 0, divisor)};
-    if (mParams.getSize() == 0) mParams = gl::Buffer("upsample parameters", sizeof(params));
     mParams.upload(0, sizeof(params), &params);
     mParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
     drawFullscreenTriangle();

@@ -10,6 +10,8 @@
 #include "render/gbuffer.h"
 #include "render/pass.h"
 
+#include <shared/scene_data.h>
+
 namespace ispm {
 
 class UpsamplePass final : public Pass {
@@ -25,7 +27,7 @@ class UpsamplePass final : public Pass {
     const GBuffer& mViewer;
     const gl::Texture& mFiltered;
     ReloadableProgram mProgram;
-    gl::Buffer mParams; // gpu::FilterParams
+    gl::Buffer mParams{"upsample parameters", sizeof(gpu::FilterParams)};
     gl::VertexArray mVertexArray;
     ColorTarget mTarget;
 };
