@@ -25,6 +25,7 @@ constexpr float kMaxRadiusFactor = 4.0f;
 // Hashed slots per stored photon: each photon lands in one cell per level, distinct at the
 // finest few levels; 8 slots keep the table under 70% full at capacity.
 constexpr uint32_t kSlotsPerPhoton = 8;
+static_assert(gpu::kClipRays == 8, "photon_density.comp holds the clip rays in two vec4s");
 
 } // namespace
 
@@ -44,11 +45,8 @@ PhotonDensityPass::PhotonDensityPass(PhotonBuffers& buffers)
 void PhotonDensityPass::execute(const FrameInputs& inputs) {
     const uint32_t slots =
         std::bit_ceil(std::max(mBuffers.getResultCapacity(), 1u) * kSlotsPerPhoton);
-    // The table, then the clip list (a uint per result photon).
-    const size_t cellBytes =
-        (size_t(slots) * gpu::kDensitySlotUints + mBuffers.getResultCapacity()) * sizeof(uint32_t);
-    if (cellBytes != mCells.getSize())
-        mCells = gl::Buffer("photon density cells and clip list", cellBytes);
+    const size_t cellBytes = size_t(slots) * gpu::kDensitySlotUints * sizeof(uint32_t);
+    if (cellBytes != mCells.getSize()) mCells = gl::Buffer("photon density cells", cellBytes);
     const size_t clipBytes =
         size_t(std::max(mBuffers.getResultCapacity(), 1u)) * gpu::kClipVec4s * sizeof(glm::vec4);
     if (mClip.getSize() != clipBytes) mClip = gl::Buffer("splat clip distances", clipBytes);
@@ -78,23 +76,14 @@ void PhotonDensityPass::execute(const FrameInputs& inputs) {
     mCells.bindBase(gl::BufferTarget::Storage, gpu::kBindingDensityCells);
     mClip.bindBase(gl::BufferTarget::Storage, gpu::kBindingSplatClip);
     mProgram.use();
-    // Each stage reads its number from the block: written again between the dispatches (the
-    // GL orders the update after the dispatch before it).
-    const auto setStage = [&](uint32_t stage) {
-        params.control.x = stage;
-        mParams.upload(offsetof(gpu::DensityParams, control), sizeof(params.control),
-                       &params.control);
-    };
     const size_t dispatchOffset = offsetof(gpu::PhotonCounters, densityDispatch);
     gl::dispatchComputeIndirect(mBuffers.getCounters(), dispatchOffset);
     gl::memoryBarrier(gl::Barrier::Storage);
-    setStage(gpu::kDensityStageRadius);
+    // Stage 1 reads its number from the block: written again between the dispatches (the GL
+    // orders the update after the dispatch before it).
+    params.control.x = gpu::kDensityStageRadius;
+    mParams.upload(offsetof(gpu::DensityParams, control), sizeof(params.control), &params.control);
     gl::dispatchComputeIndirect(mBuffers.getCounters(), dispatchOffset);
-    // Stage 1 wrote the clip list and its dispatch arguments.
-    gl::memoryBarrier(gl::Barrier::Storage | gl::Barrier::Command);
-    setStage(gpu::kDensityStageClip);
-    gl::dispatchComputeIndirect(mBuffers.getCounters(),
-                                offsetof(gpu::PhotonCounters, clipDispatch));
     // The splat's vertex stage reads the radii.
     gl::memoryBarrier(gl::Barrier::Storage);
 }

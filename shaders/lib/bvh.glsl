@@ -134,7 +134,13 @@ bool overlapsBox(vec3 aLo, vec3 aHi, vec3 bLo, vec3 bHi) {
     return all(lessThanEqual(aLo, bHi)) && all(lessThanEqual(bLo, aHi));
 }
 
-bool overlapsInstanceTriangles(uint instanceIndex, vec3 loW, vec3 hiW) {
+// Box queries (define ISPM_BVH_BOX_VISITOR before including, and define the visitor after):
+// visitBoxTriangle gets, in world space, every triangle whose bounds and plane both overlap the
+// world box (conservative: a triangle's bounds and plane, not the triangle).
+#ifdef ISPM_BVH_BOX_VISITOR
+void visitBoxTriangle(vec3 p0, vec3 p1, vec3 p2);
+
+void queryInstanceBox(uint instanceIndex, vec3 loW, vec3 hiW) {
     GpuInstance inst = instances[instanceIndex];
     // The world box in object space, boxed again (Arvo: the half extent through |M|).
     vec3 centre = (inst.objectFromWorld * vec4(0.5 * (loW + hiW), 1.0)).xyz;
@@ -161,20 +167,20 @@ bool overlapsInstanceTriangles(uint instanceIndex, vec3 loW, vec3 hiW) {
                 // The triangle's plane must cross the box too (a slanted triangle's bounds
                 // reach far from it).
                 vec3 normal = cross(p1 - p0, p2 - p0);
-                if (abs(dot(normal, centre - p0)) <= dot(abs(normal), half_)) return true;
+                if (abs(dot(normal, centre - p0)) > dot(abs(normal), half_)) continue;
+                visitBoxTriangle((inst.worldFromObject * vec4(p0, 1.0)).xyz,
+                                 (inst.worldFromObject * vec4(p1, 1.0)).xyz,
+                                 (inst.worldFromObject * vec4(p2, 1.0)).xyz);
             }
         } else if (top + 2 <= kBvhStackSize) {
             stack[top++] = a;
             stack[top++] = b;
         }
     }
-    return false;
 }
 
-// Whether any triangle's bounds and plane both overlap the world-space box [loW, hiW]
-// (conservative: a triangle's bounds and plane, not the triangle). Stops at the first one.
-bool overlapsTriangles(vec3 loW, vec3 hiW) {
-    if (tlasNodes.length() == 0) return false;
+void queryBox(vec3 loW, vec3 hiW) {
+    if (tlasNodes.length() == 0) return;
     uint stack[kBvhStackSize];
     int top = 0;
     stack[top++] = 0u;
@@ -185,13 +191,11 @@ bool overlapsTriangles(vec3 loW, vec3 hiW) {
         uint b = floatBitsToUint(node.hi.w);
         if ((b & kBvhLeafFlag) != 0u) {
             uint count = b & kBvhCountMask;
-            for (uint i = a; i < a + count; ++i) {
-                if (overlapsInstanceTriangles(tlasInstanceOrder[i], loW, hiW)) return true;
-            }
+            for (uint i = a; i < a + count; ++i) queryInstanceBox(tlasInstanceOrder[i], loW, hiW);
         } else if (top + 2 <= kBvhStackSize) {
             stack[top++] = a;
             stack[top++] = b;
         }
     }
-    return false;
 }
+#endif

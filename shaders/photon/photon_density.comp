@@ -11,11 +11,10 @@
 // radius_scale, clamped.
 //
 // Stage 1 also culls photons whose disc lies outside the view frustum (radius 0: the splat skips
-// them) and lists those whose disc may meet a surface; stage 2 casts, for the listed photons
-// only, the in-plane rays that clip each disc (shared/splat_clip.h). Listing first keeps the
-// rays' lanes busy: photons near walls are scattered through the buffer, and a group whose one
-// photon casts rays would otherwise wait for it.
+// them) and finds the lines where surfaces cut each disc (shared/splat_clip.h): the in-plane
+// rays of the clip, met against the triangles of one BVH box query around the disc.
 #include "lib/constants.glsl"
+#define ISPM_BVH_BOX_VISITOR
 #include "lib/scene_buffers.glsl"
 #include "lib/bvh.glsl"
 #include "lib/frame_constants.glsl"
@@ -32,9 +31,7 @@ layout(std430, binding = kBindingSplatClip) writeonly buffer SplatClip { vec4 sp
 // Slot s at S = kDensitySlotUints s: key at S (0 = empty), photon count at S + 1, power (float
 // bits) at S + 2; at S + 4 .. S + 7 the extent of its photons along the two axes of the plane
 // their facing is closest to, as fixed-point fractions of the cell (kExtentOne = the whole
-// cell): M - min u, max u, M - min v, max v, all kept by atomicMax from a cleared table. After
-// the slots, the clip list: per entry a photon index, bit 30 set when triangles above the
-// surface are near, bit 31 when triangles beneath it are.
+// cell): M - min u, max u, M - min v, max v, all kept by atomicMax from a cleared table.
 layout(std430, binding = kBindingDensityCells) buffer DensityCells { uint cells[]; };
 
 layout(std140, binding = kBindingPassParams) uniform DensityParamsBlock { DensityParams params; };
@@ -52,17 +49,6 @@ bool isOutsideView(vec3 centre, float radius) {
         if (dot(plane.xyz, centre) + plane.w < -radius * length(plane.xyz)) return true;
     }
     return false;
-}
-
-// The clip line of the surface that ray i meets within `radius` (its pole) and the distance to
-// it along the ray, or ((0, 0), radius) when it meets none.
-vec3 traceClip(vec3 origin, vec3 t, vec3 b, uint i, float radius) {
-    vec2 ray2 = getClipDirection(i);
-    vec3 dir = t * ray2.x + b * ray2.y;
-    RayHit hit;
-    if (!traceRay(origin, dir, radius, hit)) return vec3(0.0, 0.0, radius);
-    vec3 normal = computeHitNormal(hit);
-    return vec3(computeClipPole(ray2 * hit.t, vec2(dot(normal, t), dot(normal, b)), ray2), hit.t);
 }
 
 // Photons are counted apart by the side they face (the major axis of the normal and its sign):
@@ -184,21 +170,90 @@ float computeBlockArea(Block block, float side) {
 // The photon's power as one number: the mean over RGB, so saturated colours count.
 float getPhotonPower(uint index) { return max(computeMean(photons[index].power.rgb), 1e-30); }
 
-uint getClipListStart() { return kDensitySlotUints * (params.control.y + 1u); }
-
-const uint kNearAbove = 1u << 30;
-const uint kNearBeneath = 1u << 31;
-
 // Ray origins: above the surface by kClipLift of the radius (at least a few ray epsilons), and
 // just beneath it.
 vec3 getAboveOrigin(vec3 p, vec3 n, float radius) { return p + n * max(4.0 * params.scales.y, kClipLift * radius); }
 vec3 getBeneathOrigin(vec3 p, vec3 n) { return p - n * (4.0 * params.scales.y); }
-// Half the box the rays around an origin sweep.
-vec3 getSweep(vec3 n, float radius) {
-    vec3 t;
-    vec3 b;
-    buildSplatBasis(n, t, b);
-    return (abs(t) + abs(b)) * radius;
+
+// The disc being clipped (one per invocation): its plane's basis and the two ray origins (0
+// above, 1 beneath). Per origin and ray the nearest surface met so far: its distance along the
+// ray, and its unit normal in the plane's coordinates. Rays 0-3 and 4-7 sit in the lanes of
+// vec4s, so that a triangle meets four rays at once (kClipRays is 8: splat_clip.h).
+vec3 gDiscT;
+vec3 gDiscB;
+vec3 gDiscN;
+vec3 gAbove;
+vec3 gBeneath;
+struct RayQuad {
+    vec4 nearest;
+    vec4 normalT;
+    vec4 normalB;
+};
+RayQuad gAboveLo;
+RayQuad gAboveHi;
+RayQuad gBeneathLo;
+RayQuad gBeneathHi;
+vec4 gRayT[2];
+vec4 gRayB[2];
+
+// Where the plane through `origin` (normal gDiscN) cuts the triangle, as a segment a-b in the
+// plane's coordinates around origin; false when it does not (a triangle in the plane does not).
+bool cutTriangle(vec3 origin, vec3 p0, vec3 p1, vec3 p2, out vec2 a, out vec2 b) {
+    float d0 = dot(p0 - origin, gDiscN);
+    float d1 = dot(p1 - origin, gDiscN);
+    float d2 = dot(p2 - origin, gDiscN);
+    bool s0 = d0 >= 0.0;
+    bool s1 = d1 >= 0.0;
+    bool s2 = d2 >= 0.0;
+    a = vec2(0.0);
+    b = vec2(0.0);
+    if (s0 == s1 && s1 == s2) return false;
+    // The vertex alone on its side, and the two across.
+    bool lone0 = s1 == s2;
+    bool lone1 = !lone0 && s0 == s2;
+    vec3 lone = lone0 ? p0 : (lone1 ? p1 : p2);
+    float dLone = lone0 ? d0 : (lone1 ? d1 : d2);
+    vec3 x = lone0 ? p1 : p0;
+    float dx = lone0 ? d1 : d0;
+    vec3 y = lone0 || lone1 ? p2 : p1;
+    float dy = lone0 || lone1 ? d2 : d1;
+    vec3 qa = lone + (x - lone) * (dLone / (dLone - dx)) - origin;
+    vec3 qb = lone + (y - lone) * (dLone / (dLone - dy)) - origin;
+    a = vec2(dot(qa, gDiscT), dot(qa, gDiscB));
+    b = vec2(dot(qb, gDiscT), dot(qb, gDiscB));
+    return true;
+}
+
+// Four rays (directions in the lanes of rayT, rayB) against the segment a-b.
+void hitRays(vec2 a, vec2 e, vec4 rayT, vec4 rayB, vec2 normal2, inout RayQuad quad) {
+    vec4 det = rayT * e.y - rayB * e.x;
+    vec4 inverse = 1.0 / mix(det, vec4(1.0), equal(det, vec4(0.0)));
+    vec4 s = vec4(a.x * e.y - a.y * e.x) * inverse;
+    vec4 u = (a.x * rayB - a.y * rayT) * inverse;
+    bvec4 hit = bvec4(uvec4(notEqual(det, vec4(0.0))) * uvec4(greaterThan(s, vec4(0.0))) *
+                      uvec4(lessThan(s, quad.nearest)) * uvec4(greaterThanEqual(u, vec4(0.0))) *
+                      uvec4(lessThanEqual(u, vec4(1.0))));
+    quad.nearest = mix(quad.nearest, s, hit);
+    quad.normalT = mix(quad.normalT, vec4(normal2.x), hit);
+    quad.normalB = mix(quad.normalB, vec4(normal2.y), hit);
+}
+
+// The clip rays run in the photon's plane, so a triangle meets a ray where the segment its
+// plane cuts does: one plane section per origin and a 2D test per ray, for every triangle near
+// the disc (the BVH walked once per photon, not once per ray).
+void visitBoxTriangle(vec3 p0, vec3 p1, vec3 p2) {
+    vec3 normal = normalize(cross(p1 - p0, p2 - p0));
+    vec2 normal2 = vec2(dot(normal, gDiscT), dot(normal, gDiscB));
+    vec2 a;
+    vec2 b;
+    if (cutTriangle(gAbove, p0, p1, p2, a, b)) {
+        hitRays(a, b - a, gRayT[0], gRayB[0], normal2, gAboveLo);
+        hitRays(a, b - a, gRayT[1], gRayB[1], normal2, gAboveHi);
+    }
+    if (cutTriangle(gBeneath, p0, p1, p2, a, b)) {
+        hitRays(a, b - a, gRayT[0], gRayB[0], normal2, gBeneathLo);
+        hitRays(a, b - a, gRayT[1], gRayB[1], normal2, gBeneathHi);
+    }
 }
 
 void writeClip(uint index, vec2 poles[kClipRays], float radius) {
@@ -211,21 +266,38 @@ void writeClip(uint index, vec2 poles[kClipRays], float radius) {
 // Rays above the surface find the walls it meets (concave edges); rays just beneath it, inside
 // the solid it bounds, find where it ends (convex edges: a wall's end, a door jamb, a roof's
 // rim), beyond which the disc would fall into the air. Per direction the nearer line counts.
-void castClipRays(uint entry) {
-    uint index = entry & ~(kNearAbove | kNearBeneath);
-    vec3 p = photons[index].positionDistance.xyz;
-    vec3 n = photons[index].normalDensity.xyz;
-    float radius = photons[index].power.w;
-    vec3 t;
-    vec3 b;
-    buildSplatBasis(n, t, b);
-    vec3 above = getAboveOrigin(p, n, radius);
-    vec3 beneath = getBeneathOrigin(p, n);
+void clipDisc(uint index, vec3 p, vec3 n, float radius) {
+    gDiscN = n;
+    buildSplatBasis(n, gDiscT, gDiscB);
+    gAbove = getAboveOrigin(p, n, radius);
+    gBeneath = getBeneathOrigin(p, n);
+    for (uint i = 0u; i < 4u; ++i) {
+        for (uint half_ = 0u; half_ < 2u; ++half_) {
+            vec2 ray2 = getClipDirection(4u * half_ + i);
+            gRayT[half_][i] = ray2.x;
+            gRayB[half_][i] = ray2.y;
+        }
+    }
+    RayQuad none = RayQuad(vec4(radius), vec4(0.0), vec4(0.0));
+    gAboveLo = none;
+    gAboveHi = none;
+    gBeneathLo = none;
+    gBeneathHi = none;
+    // The box both origins' rays sweep.
+    vec3 sweep = (abs(gDiscT) + abs(gDiscB)) * radius;
+    queryBox(min(gAbove, gBeneath) - sweep, max(gAbove, gBeneath) + sweep);
     vec2 poles[kClipRays];
     for (uint i = 0u; i < kClipRays; ++i) {
-        vec3 wall = (entry & kNearAbove) != 0u ? traceClip(above, t, b, i, radius) : vec3(0.0, 0.0, radius);
-        vec3 end = (entry & kNearBeneath) != 0u ? traceClip(beneath, t, b, i, wall.z) : vec3(0.0, 0.0, radius);
-        poles[i] = end.z < wall.z ? end.xy : wall.xy;
+        RayQuad above = i < 4u ? gAboveLo : gAboveHi;
+        RayQuad beneath = i < 4u ? gBeneathLo : gBeneathHi;
+        uint lane = i % 4u;
+        // Per direction the nearer surface: a wall above, or the surface's own end beneath.
+        bool useBeneath = beneath.nearest[lane] < above.nearest[lane];
+        float t = useBeneath ? beneath.nearest[lane] : above.nearest[lane];
+        vec2 normal2 = useBeneath ? vec2(beneath.normalT[lane], beneath.normalB[lane])
+                                  : vec2(above.normalT[lane], above.normalB[lane]);
+        vec2 ray2 = getClipDirection(i);
+        poles[i] = t < radius ? computeClipPole(ray2 * t, normal2, ray2) : vec2(0.0);
     }
     removeRepeatedLines(poles, radius);
     writeClip(index, poles, radius);
@@ -233,10 +305,6 @@ void castClipRays(uint entry) {
 
 void main() {
     uint index = gl_GlobalInvocationID.x;
-    if (params.control.x == kDensityStageClip) {
-        if (index < counters.clipDispatch.w) castClipRays(cells[getClipListStart() + index]);
-        return;
-    }
     if (index >= counters.splatDraw.y) return;
     vec3 p = photons[index].positionDistance.xyz;
     float power = getPhotonPower(index);
@@ -288,21 +356,5 @@ void main() {
     }
     countPhoton(unpackLight(photons[index].incoming.w), 2);
     photons[index].power.w = radius;
-    // The rays can only meet triangles whose bounds reach the square they sweep: one box query
-    // per side (most photons lie in the open: none), and the photon goes on the list for stage 2.
-    vec3 n = photons[index].normalDensity.xyz;
-    vec3 sweep = getSweep(n, radius);
-    vec3 above = getAboveOrigin(p, n, radius);
-    vec3 beneath = getBeneathOrigin(p, n);
-    uint near = (overlapsTriangles(above - sweep, above + sweep) ? kNearAbove : 0u) |
-                (overlapsTriangles(beneath - sweep, beneath + sweep) ? kNearBeneath : 0u);
-    if (near != 0u) {
-        uint slot = atomicAdd(counters.clipDispatch.w, 1u);
-        if (slot % kTraceGroupSize == 0u) atomicAdd(counters.clipDispatch.x, 1u);
-        cells[getClipListStart() + slot] = index | near;
-        return;
-    }
-    vec2 none[kClipRays];
-    for (uint i = 0u; i < kClipRays; ++i) none[i] = vec2(0.0);
-    writeClip(index, none, radius);
+    clipDisc(index, p, photons[index].normalDensity.xyz, radius);
 }

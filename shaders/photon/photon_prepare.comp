@@ -21,7 +21,6 @@ void main() {
     uint stored = min(counters.result.x, counters.result.y);
     counters.splatDraw = uvec4(kSplatCubeVertices, stored, 0u, 0u);
     counters.densityDispatch = uvec4((stored + kTraceGroupSize - 1u) / kTraceGroupSize, 1u, 1u, 0u);
-    counters.clipDispatch = uvec4(0u, 1u, 1u, 0u); // the density pass's stage 1 grows it
     for (uint p = 0u; p < params.control.w; ++p) {
         uint begin = stored * p / params.control.w;
         uint end = stored * (p + 1u) / params.control.w;

@@ -42,10 +42,8 @@ struct PhotonCounters {
     uvec4 traceDispatch;   // glDispatchComputeIndirect arguments (x, y, z)
     uvec4 splatDraw;       // glDrawArraysIndirect: count, instanceCount, first, baseInstance
     uvec4 densityDispatch; // glDispatchComputeIndirect over the stored result photons (xyz)
-    uvec4 clipDispatch;    // glDispatchComputeIndirect over the photons whose discs may meet a
-                           // surface (xyz), w = their count (photon_density.comp)
 };
-ISPM_STATIC_ASSERT_SIZE(PhotonCounters, 96);
+ISPM_STATIC_ASSERT_SIZE(PhotonCounters, 80);
 
 ISPM_CONST uint kTraceGroupSize = 64u;
 ISPM_CONST uint kMaxSplatPasses = 64u;
@@ -64,7 +62,7 @@ ISPM_CONST int kBindingLightCounts = 19;   // uvec4 per light (LightPhotonCounte
 ISPM_CONST int kBindingEmissionGrids = 20; // uvec4 per grid: first photon, view, 0, 0
 ISPM_CONST uint kReflectionBits = 8u;      // ResultPhoton.incoming.w: reflections, then light
 ISPM_CONST int kBindingDensityCells = 17;  // photon_density.comp's hashed grid (kDensitySlotUints
-                                           // a slot), then its clip list (a uint per result photon)
+                                           // a slot)
 
 // Splat radius modes (setting radius_mode, checked against the table in splat_pass.cpp).
 ISPM_CONST uint kRadiusTravel = 0u;
@@ -119,10 +117,9 @@ struct SplatParams {
 };
 ISPM_STATIC_ASSERT_SIZE(SplatParams, 48);
 
-// photon_density.comp's stages: count photons into the grid, radii and the clip list, clip rays.
+// photon_density.comp's stages: count photons into the grid, then radii and clip lines.
 ISPM_CONST uint kDensityStageCount = 0u;
 ISPM_CONST uint kDensityStageRadius = 1u;
-ISPM_CONST uint kDensityStageClip = 2u;
 
 // Parameters of photon_density.comp (std140, at kBindingPassParams).
 struct DensityParams {

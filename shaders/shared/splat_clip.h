@@ -18,7 +18,7 @@ ISPM_NAMESPACE_BEGIN
 // plane's (t, b) coordinates (m); the photon's side is { x : dot(x, pole) < dot(pole, pole) }.
 // (0, 0): no line (the ray hit nothing, or a wall another ray had found).
 ISPM_CONST int kBindingSplatClip = 18;
-ISPM_CONST uint kClipRays = 8u;
+ISPM_CONST uint kClipRays = 8u; // photon_density.comp holds them in the lanes of two vec4s
 ISPM_CONST uint kClipVec4s = kClipRays / 2u + 1u;
 
 // A kept mass below this is taken as this: a pixel in a slot narrower than the disc keeps a

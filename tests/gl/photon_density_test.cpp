@@ -71,7 +71,6 @@ DensityRun runDensity(const Scene& scene, std::vector<gpu::ResultPhoton> photons
     counters.splatDraw = glm::uvec4(gpu::kSplatCubeVertices, count, 0, 0);
     counters.densityDispatch =
         glm::uvec4((count + gpu::kTraceGroupSize - 1) / gpu::kTraceGroupSize, 1, 1, 0);
-    counters.clipDispatch = glm::uvec4(0, 1, 1, 0); // empty, as photon_prepare.comp leaves it
     buffers.getCounters().upload(0, sizeof(counters), &counters);
     PhotonDensityPass density(buffers);
     FrameInputs inputs = runner.getFrameInputs();
