@@ -101,17 +101,21 @@ ISPM_INLINE vec4 computeClipExtent(const vec2 poles[kClipRays], float radiusM) {
     return extent;
 }
 
+// Kernel mass that the disc of radius r around in-plane offset x loses beyond the line of a
+// nonzero pole.
+ISPM_INLINE float computeMassBeyondLine(vec2 x, vec2 pole, float radiusM) {
+    float p2 = dot(pole, pole);
+    float toLine = (p2 - dot(x, pole)) / sqrt(p2);
+    return computeKernelMassBeyond(toLine / radiusM);
+}
+
 // Kernel mass that the disc of radius r around in-plane offset x keeps on the photon's side of
 // distinct lines (removeRepeatedLines; the corners two walls cut off together are counted twice,
 // and the floor keeps the result positive).
 ISPM_INLINE float computeKeptMass(vec2 x, const vec2 poles[kClipRays], float radiusM) {
     float lost = 0.0f;
     for (uint i = 0u; i < kClipRays; ++i) {
-        vec2 p = poles[i];
-        float p2 = dot(p, p);
-        if (p2 <= 0.0f) continue;
-        float toLine = (p2 - dot(x, p)) / sqrt(p2);
-        lost += computeKernelMassBeyond(toLine / radiusM);
+        if (dot(poles[i], poles[i]) > 0.0f) lost += computeMassBeyondLine(x, poles[i], radiusM);
     }
     return max(1.0f - lost, kMinKeptMass);
 }

@@ -8,7 +8,6 @@
 #include "shared/photon_scatter.h"
 #include "shared/splat_clip.h"
 
-layout(std430, binding = kBindingResultPhotons) readonly buffer ResultBuffer { ResultPhoton photons[]; };
 layout(std140, binding = kBindingPassParams) uniform SplatParamsBlock { SplatParams params; };
 
 layout(binding = kUnitGBufferFirst + GBUFFER_POSITION) uniform sampler2D uPosition;
@@ -16,12 +15,14 @@ layout(binding = kUnitGBufferFirst + GBUFFER_NORMAL) uniform sampler2D uNormal;
 layout(binding = kUnitGBufferFirst + GBUFFER_DIFFUSE) uniform sampler2D uDiffuse;
 layout(binding = kUnitGBufferFirst + GBUFFER_SPECULAR) uniform sampler2D uSpecular;
 
-flat in uint vPhoton;
-flat in float vRadius;
-flat in uint vClipped;
-
-// Per photon: kClipRays / 2 vec4s of two poles each, then the box extents (shared/splat_clip.h).
-layout(std430, binding = kBindingSplatClip) readonly buffer SplatClip { vec4 splatClip[]; };
+flat in vec4 vCentre;
+flat in vec3 vNormal;
+flat in vec3 vTangent;
+flat in vec3 vBitangent;
+flat in vec3 vPower;
+flat in vec3 vIncoming;
+flat in uint vLines;
+flat in vec2 vPoles[kClipRays];
 
 layout(location = 0) out vec4 outRadiance;
 
@@ -31,37 +32,28 @@ void main() {
     ivec2 pixel = getBlockGBufferPixel(ivec2(gl_FragCoord.xy), int(params.shape.y));
     vec4 position = texelFetch(uPosition, pixel, 0);
     if (position.w < 0.5) discard;
-    ResultPhoton photon = photons[vPhoton];
-    vec3 pn = photon.normalDensity.xyz;
+    vec3 pn = vNormal;
     vec3 n = texelFetch(uNormal, pixel, 0).xyz;
     if (dot(n, pn) <= 0.0) discard; // the surface faces away from where the photon arrived
-    vec3 d = position.xyz - photon.positionDistance.xyz;
+    float radius = vCentre.w;
+    vec3 d = position.xyz - vCentre.xyz;
     float along = dot(d, pn);
     vec3 inPlane = d - along * pn;
-    float s2 = dot(inPlane, inPlane) / (vRadius * vRadius);
-    float z = along / (vRadius * params.shape.x);
+    float s2 = dot(inPlane, inPlane) / (radius * radius);
+    float z = along / (radius * params.shape.x);
     if (s2 + z * z > 1.0) discard;
     // Beyond a clip line lies another surface (a wall the disc would climb or pass through).
-    vec3 t;
-    vec3 b;
-    buildSplatBasis(pn, t, b);
-    vec2 x = vec2(dot(inPlane, t), dot(inPlane, b));
-    vec2 poles[kClipRays];
-    for (uint i = 0u; i < kClipRays / 2u; ++i) {
-        vec4 two = vClipped == 1u ? splatClip[vPhoton * kClipVec4s + i] : vec4(0.0);
-        poles[2u * i] = two.xy;
-        poles[2u * i + 1u] = two.zw;
-    }
-    for (uint i = 0u; i < kClipRays; ++i) {
-        if (isBeyondLine(x, poles[i])) discard;
-    }
+    vec2 x = vec2(dot(inPlane, vTangent), dot(inPlane, vBitangent));
     // Gather-style renormalisation: the pixel's own disc (radius r, centred on it) is cut by the
     // same lines; dividing by the part of it that lies on the surface keeps a uniform irradiance
     // uniform up to the wall, and the photon's power on the surfaces it reached.
-    float keptMass = computeKeptMass(x, poles, vRadius);
-    float kernel = 2.0 * kInvPi / (vRadius * vRadius) * (1.0 - s2);
-    vec3 wi = -photon.incoming.xyz;
+    for (uint i = 0u; i < vLines; ++i) {
+        if (isBeyondLine(x, vPoles[i])) discard;
+    }
+    float keptMass = computeKeptMass(x, vPoles, radius);
+    float kernel = 2.0 * kInvPi / (radius * radius) * (1.0 - s2);
+    vec3 wi = -vIncoming;
     vec3 wo = normalize(frame.cameraPosition.xyz - position.xyz);
     vec3 f = evaluateBrdf(texelFetch(uDiffuse, pixel, 0).rgb, texelFetch(uSpecular, pixel, 0), n, wi, wo);
-    outRadiance = vec4(f * photon.power.rgb * (kernel / keptMass), 1.0);
+    outRadiance = vec4(f * vPower * (kernel / keptMass), 1.0);
 }

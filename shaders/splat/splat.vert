@@ -11,10 +11,16 @@ layout(std430, binding = kBindingResultPhotons) readonly buffer ResultBuffer { R
 layout(std430, binding = kBindingPhotonCounters) readonly buffer CounterBuffer { PhotonCounters counters; };
 layout(std430, binding = kBindingSplatClip) readonly buffer SplatClip { vec4 splatClip[]; };
 
-
-flat out uint vPhoton;
-flat out float vRadius;
-flat out uint vClipped; // 1: the fragment stage reads the photon's clip lines
+// Everything the fragment stage needs of the photon, constant over its box: read and derived once
+// per corner here rather than once per covered pixel.
+flat out vec4 vCentre;   // xyz = position (m), w = radius (m)
+flat out vec3 vNormal;   // the photon's surface normal
+flat out vec3 vTangent;  // the splat basis (buildSplatBasis)
+flat out vec3 vBitangent;
+flat out vec3 vPower;    // W
+flat out vec3 vIncoming; // the direction the photon arrived along
+flat out uint vLines;    // clip lines in vPoles (the nonzero poles first)
+flat out vec2 vPoles[kClipRays];
 
 // The draw is indexed (splat_pass.cpp holds the 12 triangles): gl_VertexID is the cube corner, its
 // x from bit 0, y from bit 1, z from bit 2 of the index, each -1 or +1.
@@ -33,15 +39,27 @@ void main() {
     // data not written) collapses to a point and draws nothing.
     vec4 extent = vec4(radius); // along +t, -t, +b, -b
     // Density radii come with clip lines (the density pass); travel radii without.
-    vClipped = getRadiusMode() == kRadiusDensity && radius > 0.0 ? 1u : 0u;
-    if (vClipped == 1u) extent = splatClip[id * kClipVec4s + kClipRays / 2u];
+    vLines = 0u;
+    for (uint i = 0u; i < kClipRays; ++i) vPoles[i] = vec2(0.0);
+    if (getRadiusMode() == kRadiusDensity && radius > 0.0) {
+        extent = splatClip[id * kClipVec4s + kClipRays / 2u];
+        for (uint i = 0u; i < kClipRays / 2u; ++i) {
+            vec4 two = splatClip[id * kClipVec4s + i];
+            if (dot(two.xy, two.xy) > 0.0) vPoles[vLines++] = two.xy;
+            if (dot(two.zw, two.zw) > 0.0) vPoles[vLines++] = two.zw;
+        }
+    }
     vec3 c = vec3((gl_VertexID & 1) != 0 ? 1.0 : -1.0, (gl_VertexID & 2) != 0 ? 1.0 : -1.0,
                   (gl_VertexID & 4) != 0 ? 1.0 : -1.0);
     float alongT = c.x > 0.0 ? extent.x : extent.y;
     float alongB = c.y > 0.0 ? extent.z : extent.w;
     vec3 world = photon.positionDistance.xyz +
                  (t * (c.x * alongT) + b * (c.y * alongB) + n * (c.z * radius * params.shape.x));
-    vPhoton = id;
-    vRadius = radius;
+    vCentre = vec4(photon.positionDistance.xyz, radius);
+    vNormal = n;
+    vTangent = t;
+    vBitangent = b;
+    vPower = photon.power.rgb;
+    vIncoming = photon.incoming.xyz;
     gl_Position = toBlockClip(frame.clipFromWorld * vec4(world, 1.0), int(params.shape.y));
 }
