@@ -184,6 +184,7 @@ vec3 gDiscB;
 vec3 gDiscN;
 vec3 gAbove;
 vec3 gBeneath;
+float gLift; // the above origin's height over the beneath origin's
 struct RayQuad {
     vec4 nearest;
     vec4 normalT;
@@ -196,32 +197,27 @@ RayQuad gBeneathHi;
 vec4 gRayT[2];
 vec4 gRayB[2];
 
-// Where the plane through `origin` (normal gDiscN) cuts the triangle, as a segment a-b in the
-// plane's coordinates around origin; false when it does not (a triangle in the plane does not).
-bool cutTriangle(vec3 origin, vec3 p0, vec3 p1, vec3 p2, out vec2 a, out vec2 b) {
-    float d0 = dot(p0 - origin, gDiscN);
-    float d1 = dot(p1 - origin, gDiscN);
-    float d2 = dot(p2 - origin, gDiscN);
-    bool s0 = d0 >= 0.0;
-    bool s1 = d1 >= 0.0;
-    bool s2 = d2 >= 0.0;
-    a = vec2(0.0);
-    b = vec2(0.0);
-    if (s0 == s1 && s1 == s2) return false;
-    // The vertex alone on its side, and the two across.
-    bool lone0 = s1 == s2;
-    bool lone1 = !lone0 && s0 == s2;
+// Whether a triangle with corner heights d (above a plane along gDiscN) crosses the plane: a
+// corner at height 0 counts as above, so a triangle in the plane does not.
+bool crossesPlane(vec3 d) { return min(d.x, min(d.y, d.z)) < 0.0 && max(d.x, max(d.y, d.z)) >= 0.0; }
+
+// The segment where a plane through `origin` cuts a triangle that crosses it (corner heights d),
+// a-b in the plane's coordinates around origin.
+void cutTriangle(vec3 origin, vec3 p0, vec3 p1, vec3 p2, vec3 d, out vec2 a, out vec2 b) {
+    bvec3 above = greaterThanEqual(d, vec3(0.0));
+    // The corner alone on its side, and the two across.
+    bool lone0 = above.y == above.z;
+    bool lone1 = !lone0 && above.x == above.z;
     vec3 lone = lone0 ? p0 : (lone1 ? p1 : p2);
-    float dLone = lone0 ? d0 : (lone1 ? d1 : d2);
+    float dLone = lone0 ? d.x : (lone1 ? d.y : d.z);
     vec3 x = lone0 ? p1 : p0;
-    float dx = lone0 ? d1 : d0;
+    float dx = lone0 ? d.y : d.x;
     vec3 y = lone0 || lone1 ? p2 : p1;
-    float dy = lone0 || lone1 ? d2 : d1;
+    float dy = lone0 || lone1 ? d.z : d.y;
     vec3 qa = lone + (x - lone) * (dLone / (dLone - dx)) - origin;
     vec3 qb = lone + (y - lone) * (dLone / (dLone - dy)) - origin;
     a = vec2(dot(qa, gDiscT), dot(qa, gDiscB));
     b = vec2(dot(qb, gDiscT), dot(qb, gDiscB));
-    return true;
 }
 
 // Four rays (directions in the lanes of rayT, rayB) against the segment a-b.
@@ -242,15 +238,23 @@ void hitRays(vec2 a, vec2 e, vec4 rayT, vec4 rayB, vec2 normal2, inout RayQuad q
 // plane cuts does: one plane section per origin and a 2D test per ray, for every triangle near
 // the disc (the BVH walked once per photon, not once per ray).
 void visitBoxTriangle(vec3 p0, vec3 p1, vec3 p2) {
+    // Corner heights above the beneath origin's plane; the above origin's plane lies gLift higher.
+    vec3 beneath = vec3(dot(p0 - gBeneath, gDiscN), dot(p1 - gBeneath, gDiscN), dot(p2 - gBeneath, gDiscN));
+    vec3 above = beneath - vec3(gLift);
+    bool cutsAbove = crossesPlane(above);
+    bool cutsBeneath = crossesPlane(beneath);
+    if (!cutsAbove && !cutsBeneath) return; // most often the photon's own surface
     vec3 normal = normalize(cross(p1 - p0, p2 - p0));
     vec2 normal2 = vec2(dot(normal, gDiscT), dot(normal, gDiscB));
     vec2 a;
     vec2 b;
-    if (cutTriangle(gAbove, p0, p1, p2, a, b)) {
+    if (cutsAbove) {
+        cutTriangle(gAbove, p0, p1, p2, above, a, b);
         hitRays(a, b - a, gRayT[0], gRayB[0], normal2, gAboveLo);
         hitRays(a, b - a, gRayT[1], gRayB[1], normal2, gAboveHi);
     }
-    if (cutTriangle(gBeneath, p0, p1, p2, a, b)) {
+    if (cutsBeneath) {
+        cutTriangle(gBeneath, p0, p1, p2, beneath, a, b);
         hitRays(a, b - a, gRayT[0], gRayB[0], normal2, gBeneathLo);
         hitRays(a, b - a, gRayT[1], gRayB[1], normal2, gBeneathHi);
     }
@@ -271,6 +275,7 @@ void clipDisc(uint index, vec3 p, vec3 n, float radius) {
     buildSplatBasis(n, gDiscT, gDiscB);
     gAbove = getAboveOrigin(p, n, radius);
     gBeneath = getBeneathOrigin(p, n);
+    gLift = dot(gAbove - gBeneath, n);
     for (uint i = 0u; i < 4u; ++i) {
         for (uint half_ = 0u; half_ < 2u; ++half_) {
             vec2 ray2 = getClipDirection(4u * half_ + i);
@@ -313,23 +318,25 @@ void main() {
         for (uint level = 0u; level < kDensityLevels; ++level) insertCell(p, level, facing, power);
         return;
     }
-    // Counts grow with the level: binary search for the finest one that holds k.
+    // Counts grow with the level: binary search for the finest one that holds k, the coarsest
+    // when none does (summed only then: most photons find theirs below it).
     float k = params.grid.y;
     uint lo = 0u;
     uint hi = kDensityLevels - 1u;
-    Block block = sumBlock(p, hi, facing);
-    if (block.count >= k) {
-        while (lo < hi) {
-            uint mid = (lo + hi) / 2u;
-            Block b = sumBlock(p, mid, facing);
-            if (b.count >= k) {
-                hi = mid;
-                block = b;
-            } else {
-                lo = mid + 1u;
-            }
+    Block block;
+    bool found = false;
+    while (lo < hi) {
+        uint mid = (lo + hi) / 2u;
+        Block b = sumBlock(p, mid, facing);
+        if (b.count >= k) {
+            hi = mid;
+            block = b;
+            found = true;
+        } else {
+            lo = mid + 1u;
         }
     }
+    if (!found) block = sumBlock(p, hi, facing);
     float side = 2.0 * getCellSize(hi);
     float area = computeBlockArea(block, side);
     // One frame: the others' mean power stands for every photon of the block, since a photon
