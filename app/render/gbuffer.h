@@ -33,9 +33,11 @@ class GBuffer {
 
     void clear(int layer) const;
     void bindTarget(int layer); // framebuffer of one layer (every channel), with viewport
-    // A layer that only the shadow test reads (a shadow-only light view): position and depth
-    // cleared and drawn, the other channels left as they are (a third of the cost on llvmpipe).
+    // Position and depth cleared, the other channels left as they are: for layers whose readers
+    // look at those only where position.w marks a surface (light views).
     void clearPositions(int layer) const;
+    // A layer that only the shadow test reads (a shadow-only light view): position and depth
+    // drawn, the other channels left as they are (a third of the cost on llvmpipe).
     void bindPositionTarget(int layer);
     void bindTextures(int firstUnit) const;
     const gl::Texture& getChannel(size_t index) const { return mChannels[index]; }

@@ -16,7 +16,9 @@ namespace {
 // Uniform locations of shaders/viewer/blit.frag.
 constexpr GLint kLocationRegion = 0;
 constexpr GLint kLocationTransform = 1;
+constexpr GLint kLocationMasked = 2; // array program only
 constexpr GLuint kUnitSource = 0;
+constexpr GLuint kUnitMask = 1;
 constexpr float kDisplayGamma = 2.2f;     // linear views are encoded like the default tone map
 constexpr float kImportanceWhite = 20.0f; // light importance: this pdf (x uniform) shows white
 
@@ -141,10 +143,18 @@ void DebugViewDrawer::draw(const FrameRunner& runner, const DebugView& view,
     glUniform4f(kLocationTransform, scale, bias, inverseGamma, layer);
     texture.bindUnit(kUnitSource);
     mSampler.bindUnit(kUnitSource);
+    if (texture.isArray()) {
+        // Light views hold their channels only where a surface is (LightViewPass).
+        const bool masked = view.source == DebugView::Source::LightGBuffer;
+        glUniform1i(kLocationMasked, masked ? 1 : 0);
+        runner.getLightGBuffer().getChannel("position").bindUnit(kUnitMask);
+        mSampler.bindUnit(kUnitMask);
+    }
     mVertexArray.bind();
     drawFullscreenTriangle();
-    // Passes bind their own samplers or none: leave unit 0 as they expect it.
+    // Passes bind their own samplers or none: leave units 0 and 1 as they expect them.
     glBindSampler(kUnitSource, 0);
+    glBindSampler(kUnitMask, 0);
 }
 
 } // namespace ispm

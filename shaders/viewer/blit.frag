@@ -2,6 +2,10 @@
 // values pass through; linear values and G-buffer channels are scaled, biased and gamma-encoded.
 #ifdef TEXTURE_ARRAY
 layout(binding = 0) uniform sampler2DArray uSource;
+// A light view's channels other than position hold values only where position.w marks a surface
+// (the light views clear position and depth alone): uMasked shows black elsewhere.
+layout(binding = 1) uniform sampler2DArray uPosition;
+layout(location = 2) uniform int uMasked;
 #else
 layout(binding = 0) uniform sampler2D uSource;
 #endif
@@ -15,6 +19,7 @@ void main() {
     vec2 uv = (gl_FragCoord.xy - uRegion.xy) / uRegion.zw;
 #ifdef TEXTURE_ARRAY
     vec3 c = textureLod(uSource, vec3(uv, uTransform.w), 0.0).rgb;
+    if (uMasked != 0 && textureLod(uPosition, vec3(uv, uTransform.w), 0.0).w < 0.5) c = vec3(0.0);
 #else
     vec3 c = textureLod(uSource, uv, 0.0).rgb;
 #endif
