@@ -1,7 +1,6 @@
 // G-buffer resources and the scene rasteriser shared by the viewer and light-view passes.
 #include "render/gbuffer.h"
 
-#include "gl/gl.h"
 #include "gl/state.h"
 #include "render/gpu_scene.h"
 #include "render/shader_root.h"
@@ -10,11 +9,6 @@
 
 namespace ispm {
 namespace {
-
-// Uniform locations of shaders/gbuffer/gbuffer.vert (explicit, no name look-ups).
-constexpr GLint kLocationInstance = 0;
-constexpr GLint kLocationClipFromWorld = 1;
-constexpr GLint kLocationEye = 2;
 
 constexpr int kPositionChannel = 0; // the first of kChannels: a draw buffer count of 1 holds it
 constexpr GBufferChannel kChannels[] = {
@@ -120,14 +114,18 @@ size_t GBuffer::getGpuBytes() const {
            static_cast<size_t>(mLayers);
 }
 
+void appendGBufferParams(std::vector<gpu::GBufferParams>& blocks, const GpuScene& scene,
+                         const glm::mat4& clipFromWorld, const glm::vec4& eye) {
+    for (uint32_t i = 0; i < scene.getInstanceCount(); ++i)
+        blocks.push_back({.clipFromWorld = clipFromWorld, .eye = eye, .control = {i, 0, 0, 0}});
+}
+
 void drawSceneGBuffer(const gl::Program& program, const GpuScene& scene,
-                      const glm::mat4& clipFromWorld, const glm::vec4& eye) {
+                      const ParamBlocks<gpu::GBufferParams>& blocks, size_t first) {
     gl::applyState({.depthTest = gl::DepthTest::Less, .depthWrite = true});
     program.use();
-    glUniformMatrix4fv(kLocationClipFromWorld, 1, GL_FALSE, &clipFromWorld[0][0]);
-    glUniform4fv(kLocationEye, 1, &eye.x);
     for (uint32_t i = 0; i < scene.getInstanceCount(); ++i) {
-        glUniform1ui(kLocationInstance, i);
+        blocks.bind(first + i);
         const auto vertexCount = static_cast<int>(scene.getInstance(i).range.y * 3u);
         gl::drawArrays(gl::Primitive::Triangles, 0, vertexCount);
     }

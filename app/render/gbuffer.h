@@ -4,7 +4,10 @@
 #pragma once
 
 #include "gl/objects.h"
+#include "render/param_blocks.h"
 #include "render/reloadable_program.h"
+
+#include <shared/scene_data.h>
 
 #include <span>
 #include <string>
@@ -56,11 +59,16 @@ class GBuffer {
     int mLayers = 0;
 };
 
-// Rasterises every instance of the scene into the bound G-buffer target. `eye` is the camera
-// position (w = 1) or the direction toward an orthographic camera (w = 0): normals are turned to
-// face it, since surfaces are two-sided.
+// Appends the parameter blocks of one view: one per instance of the scene, seen through
+// clipFromWorld. `eye` is the camera position (w = 1) or the direction toward an orthographic
+// camera (w = 0): normals are turned to face it, since surfaces are two-sided.
+void appendGBufferParams(std::vector<gpu::GBufferParams>& blocks, const GpuScene& scene,
+                         const glm::mat4& clipFromWorld, const glm::vec4& eye);
+
+// Rasterises every instance of the scene into the bound G-buffer target, instance i with
+// blocks[first + i] (appendGBufferParams).
 void drawSceneGBuffer(const gl::Program& program, const GpuScene& scene,
-                      const glm::mat4& clipFromWorld, const glm::vec4& eye);
+                      const ParamBlocks<gpu::GBufferParams>& blocks, size_t first);
 
 ReloadableProgram buildGBufferProgram();
 

@@ -5,7 +5,8 @@
 
 namespace ispm {
 
-GBufferPass::GBufferPass() : mProgram(buildGBufferProgram()), mVertexArray("gbuffer vao") {}
+GBufferPass::GBufferPass()
+    : mProgram(buildGBufferProgram()), mParams("gbuffer parameters"), mVertexArray("gbuffer vao") {}
 
 void GBufferPass::resize(int width, int height) {
     if (mGBuffer.getWidth() != width || mGBuffer.getHeight() != height) {
@@ -18,11 +19,16 @@ void GBufferPass::execute(const FrameInputs& inputs) {
     mGBuffer.bindTarget(0);
     mVertexArray.bind();
     inputs.scene.bind();
-    drawSceneGBuffer(mProgram.get(), inputs.scene, inputs.clipFromWorld,
-                     glm::vec4(inputs.cameraPosition, 1.0f));
+    std::vector<gpu::GBufferParams> blocks;
+    appendGBufferParams(blocks, inputs.scene, inputs.clipFromWorld,
+                        glm::vec4(inputs.cameraPosition, 1.0f));
+    mParams.upload(blocks);
+    drawSceneGBuffer(mProgram.get(), inputs.scene, mParams, 0);
 }
 
-LightViewPass::LightViewPass() : mProgram(buildGBufferProgram()), mVertexArray("light view vao") {}
+LightViewPass::LightViewPass()
+    : mProgram(buildGBufferProgram()), mParams("light view parameters"),
+      mVertexArray("light view vao") {}
 
 void LightViewPass::execute(const FrameInputs& inputs) {
     const std::vector<LightCamera>& cameras = inputs.scene.getLightCameras();
@@ -32,6 +38,15 @@ void LightViewPass::execute(const FrameInputs& inputs) {
     if (mGBuffer.getWidth() != resolution || mGBuffer.getLayers() != layers) {
         mGBuffer = GBuffer("light gbuffer", resolution, resolution, layers, true);
     }
+    // Every view's blocks in one upload: view i's instances from i * instances on.
+    std::vector<gpu::GBufferParams> blocks;
+    for (size_t i = 0; i < cameras.size(); ++i) {
+        const LightCamera& cam = cameras[i];
+        const glm::vec4 eye =
+            cam.isOrthographic ? glm::vec4(-cam.axis, 0.0f) : glm::vec4(cam.origin, 1.0f);
+        appendGBufferParams(blocks, inputs.scene, inputs.scene.getLightClipFromWorld(i), eye);
+    }
+    mParams.upload(blocks);
     mVertexArray.bind();
     inputs.scene.bind();
     for (size_t i = 0; i < cameras.size(); ++i) {
@@ -46,9 +61,8 @@ void LightViewPass::execute(const FrameInputs& inputs) {
         } else {
             mGBuffer.bindTarget(layer);
         }
-        const glm::vec4 eye =
-            cam.isOrthographic ? glm::vec4(-cam.axis, 0.0f) : glm::vec4(cam.origin, 1.0f);
-        drawSceneGBuffer(mProgram.get(), inputs.scene, inputs.scene.getLightClipFromWorld(i), eye);
+        drawSceneGBuffer(mProgram.get(), inputs.scene, mParams,
+                         i * inputs.scene.getInstanceCount());
     }
 }
 

@@ -18,6 +18,7 @@ class GBufferPass final : public Pass {
 
   private:
     ReloadableProgram mProgram;
+    ParamBlocks<gpu::GBufferParams> mParams;
     gl::VertexArray mVertexArray;
     GBuffer mGBuffer;
 };
@@ -32,6 +33,7 @@ class LightViewPass final : public Pass {
 
   private:
     ReloadableProgram mProgram;
+    ParamBlocks<gpu::GBufferParams> mParams;
     gl::VertexArray mVertexArray;
     GBuffer mGBuffer;
 };

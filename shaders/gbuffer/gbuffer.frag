@@ -1,7 +1,7 @@
 // G-buffer fragment stage: writes the channels of the table in app/render/gbuffer.cpp.
 #include "lib/scene_buffers.glsl"
 
-layout(location = 2) uniform vec4 uEye; // w = 1: eye position; w = 0: direction toward the eye
+layout(std140, binding = kBindingPassParams) uniform GBufferParamsBlock { GBufferParams params; };
 
 in vec3 vPositionW;
 flat in vec3 vNormalW;
@@ -16,7 +16,8 @@ layout(location = GBUFFER_TRANSMISSIVE) out vec4 outTransmissive;
 layout(location = GBUFFER_EMISSION) out vec4 outEmission;
 
 void main() {
-    vec3 toEye = uEye.w > 0.5 ? uEye.xyz - vPositionW : uEye.xyz;
+    vec4 eye = params.eye;
+    vec3 toEye = eye.w > 0.5 ? eye.xyz - vPositionW : eye.xyz;
     // Surfaces are two-sided: the normal faces whoever looks at it.
     bool frontFace = dot(vNormalW, toEye) >= 0.0;
     vec3 n = frontFace ? vNormalW : -vNormalW;

@@ -2,8 +2,7 @@
 // face normal needs no extra vertex data. One draw per instance.
 #include "lib/scene_buffers.glsl"
 
-layout(location = 0) uniform uint uInstance;
-layout(location = 1) uniform mat4 uClipFromWorld;
+layout(std140, binding = kBindingPassParams) uniform GBufferParamsBlock { GBufferParams params; };
 
 out vec3 vPositionW;
 flat out vec3 vNormalW;
@@ -11,7 +10,8 @@ flat out uint vMaterial;
 flat out uint vInstance;
 
 void main() {
-    GpuInstance inst = instances[uInstance];
+    uint instance = params.control.x;
+    GpuInstance inst = instances[instance];
     uvec4 tri = triangles[inst.range.x + uint(gl_VertexID) / 3u];
     vec3 p0 = positions[tri.x].xyz;
     vec3 p1 = positions[tri.y].xyz;
@@ -22,6 +22,6 @@ void main() {
     vPositionW = positionW.xyz;
     vNormalW = normalize(transpose(mat3(inst.objectFromWorld)) * cross(p1 - p0, p2 - p0));
     vMaterial = tri.w;
-    vInstance = uInstance;
-    gl_Position = uClipFromWorld * positionW;
+    vInstance = instance;
+    gl_Position = params.clipFromWorld * positionW;
 }

@@ -125,6 +125,15 @@ struct FilterParams {
 };
 ISPM_STATIC_ASSERT_SIZE(FilterParams, 16);
 
+// Parameters of one draw of gbuffer.vert and gbuffer.frag: one instance seen from one camera
+// (std140, at kBindingPassParams; a view's draws are bound by range).
+struct GBufferParams {
+    mat4 clipFromWorld;
+    vec4 eye;      // w = 1: the eye's position; w = 0: the direction toward an orthographic eye
+    uvec4 control; // x = the instance drawn, yzw unused
+};
+ISPM_STATIC_ASSERT_SIZE(GBufferParams, 96);
+
 // Parameters of one sample of reference.comp, the path tracer (std140, at kBindingPassParams).
 struct ReferenceParams {
     uvec4 control; // x = sample index, y = bounces, z = seed, w unused
