@@ -261,4 +261,31 @@ std::unique_ptr<Context> createHeadlessContext() {
     throw Error("no OpenGL 4.5 core context: " + failures);
 }
 
+std::vector<ContextLimit> queryContextLimits() {
+    struct Query {
+        const char* name;
+        GLenum pname;
+    };
+    const Query queries[] = {
+        {"max texture size", GL_MAX_TEXTURE_SIZE},
+        {"max array texture layers", GL_MAX_ARRAY_TEXTURE_LAYERS},
+        {"max colour attachments", GL_MAX_COLOR_ATTACHMENTS},
+        {"max SSBO bindings", GL_MAX_SHADER_STORAGE_BUFFER_BINDINGS},
+        {"max SSBO size (bytes)", GL_MAX_SHADER_STORAGE_BLOCK_SIZE},
+        {"max compute invocations", GL_MAX_COMPUTE_WORK_GROUP_INVOCATIONS},
+        {"max compute shared bytes", GL_MAX_COMPUTE_SHARED_MEMORY_SIZE},
+        {"max TF buffers", GL_MAX_TRANSFORM_FEEDBACK_BUFFERS},
+        {"max TF interleaved comps", GL_MAX_TRANSFORM_FEEDBACK_INTERLEAVED_COMPONENTS},
+        {"max geometry out vertices", GL_MAX_GEOMETRY_OUTPUT_VERTICES},
+        {"extensions", GL_NUM_EXTENSIONS},
+    };
+    std::vector<ContextLimit> limits;
+    for (const Query& q : queries) {
+        GLint64 value = 0;
+        glGetInteger64v(q.pname, &value);
+        limits.push_back({q.name, static_cast<int64_t>(value)});
+    }
+    return limits;
+}
+
 } // namespace gl

@@ -3,8 +3,10 @@
 // installs the KHR_debug logger.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 struct GLFWwindow;
 
@@ -47,6 +49,14 @@ class Context {
 // (a hardware device first), then surfaceless Mesa, then OSMesa. Throws gl::Error listing
 // why each path failed.
 std::unique_ptr<Context> createHeadlessContext();
+
+// The current context's limits that ispm's passes run into, by name (for `ispm info`), and the
+// count of its extensions last.
+struct ContextLimit {
+    const char* name;
+    int64_t value;
+};
+std::vector<ContextLimit> queryContextLimits();
 
 struct WindowOptions {
     int width = 1280;

@@ -100,6 +100,11 @@ void setDebugVerbose(bool verbose) {
     gVerbose = verbose;
 }
 
+void muteShaderCompilerMessages() {
+    glDebugMessageControl(GL_DEBUG_SOURCE_SHADER_COMPILER, GL_DONT_CARE, GL_DONT_CARE, 0, nullptr,
+                          GL_FALSE);
+}
+
 DebugGroup::DebugGroup(std::string_view name) {
     glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, static_cast<GLsizei>(name.size()),
                      name.data());

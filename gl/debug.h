@@ -24,6 +24,10 @@ std::vector<std::string> getRecentDebugErrors();
 // Logs notifications too (off by default: llvmpipe is chatty about shader compiles).
 void setDebugVerbose(bool verbose);
 
+// Drops the shader compiler's messages until the enclosing DebugGroup ends (which restores the
+// message filter it started with).
+void muteShaderCompilerMessages();
+
 // RAII debug group: glPush/PopDebugGroup around a scope.
 class DebugGroup {
   public:

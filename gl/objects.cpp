@@ -200,6 +200,10 @@ void Sampler::bindUnit(GLuint unit) const {
     glBindSampler(unit, getId());
 }
 
+void Sampler::unbindUnit(GLuint unit) {
+    glBindSampler(unit, 0);
+}
+
 // ---- Framebuffer ----
 
 Framebuffer::Framebuffer(std::string_view label) : mLabel(label) {

@@ -114,6 +114,7 @@ class Sampler {
     Sampler() = default;
     Sampler(std::string_view label, Filter filter, Wrap wrap);
     void bindUnit(GLuint unit) const;
+    static void unbindUnit(GLuint unit); // the texture's own sampling state again
     GLuint getId() const { return mHandle.get(); }
 
   private:

@@ -81,4 +81,23 @@ void bindDefaultFramebuffer(int width, int height) {
     glViewport(0, 0, width, height);
 }
 
+void setViewport(int x, int y, int width, int height) {
+    glViewport(x, y, width, height);
+}
+
+void clearDefaultFramebuffer(const glm::vec4& colour) {
+    glClearColor(colour.r, colour.g, colour.b, colour.a);
+    glClear(GL_COLOR_BUFFER_BIT);
+}
+
+std::vector<uint8_t> readDefaultFramebuffer(int width, int height) {
+    constexpr size_t kChannels = 4; // RGBA8: rows stay 4-byte aligned at any width
+    std::vector<uint8_t> bytes(static_cast<size_t>(width) * static_cast<size_t>(height) *
+                               kChannels);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    glReadBuffer(GL_BACK);
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
+    return bytes;
+}
+
 } // namespace gl

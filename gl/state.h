@@ -54,5 +54,11 @@ void dispatchComputeIndirect(const Buffer& arguments, size_t offsetBytes);
 void finish();
 // Binds the default framebuffer (a window's back buffer) with the given viewport.
 void bindDefaultFramebuffer(int width, int height);
+// The viewport alone, within whatever framebuffer is bound.
+void setViewport(int x, int y, int width, int height);
+// Clears the bound default framebuffer's colour.
+void clearDefaultFramebuffer(const glm::vec4& colour);
+// The default framebuffer's back buffer as RGBA8, bottom row first (GL's order).
+std::vector<uint8_t> readDefaultFramebuffer(int width, int height);
 
 } // namespace gl

@@ -8,7 +8,6 @@
 #include "core/input_error.h"
 #include "core/strings.h"
 #include "gl/context.h"
-#include "gl/gl.h"
 #include "gl/timer.h"
 #include "image/image_io.h"
 #include "image/metrics.h"
@@ -41,30 +40,8 @@ int runInfo() {
     std::printf("pass timing:   %s\n",
                 gl::getTimingMethodName(info.isSoftware ? gl::TimingMethod::CpuFinish
                                                         : gl::TimingMethod::TimerQuery));
-    struct Limit {
-        const char* name;
-        GLenum pname;
-    };
-    const Limit limits[] = {
-        {"max texture size", GL_MAX_TEXTURE_SIZE},
-        {"max array texture layers", GL_MAX_ARRAY_TEXTURE_LAYERS},
-        {"max colour attachments", GL_MAX_COLOR_ATTACHMENTS},
-        {"max SSBO bindings", GL_MAX_SHADER_STORAGE_BUFFER_BINDINGS},
-        {"max SSBO size (bytes)", GL_MAX_SHADER_STORAGE_BLOCK_SIZE},
-        {"max compute invocations", GL_MAX_COMPUTE_WORK_GROUP_INVOCATIONS},
-        {"max compute shared bytes", GL_MAX_COMPUTE_SHARED_MEMORY_SIZE},
-        {"max TF buffers", GL_MAX_TRANSFORM_FEEDBACK_BUFFERS},
-        {"max TF interleaved comps", GL_MAX_TRANSFORM_FEEDBACK_INTERLEAVED_COMPONENTS},
-        {"max geometry out vertices", GL_MAX_GEOMETRY_OUTPUT_VERTICES},
-    };
-    for (const Limit& l : limits) {
-        GLint64 value = 0;
-        glGetInteger64v(l.pname, &value);
-        std::printf("%-26s %lld\n", l.name, static_cast<long long>(value));
-    }
-    GLint extensionCount = 0;
-    glGetIntegerv(GL_NUM_EXTENSIONS, &extensionCount);
-    std::printf("%-26s %d\n", "extensions", extensionCount);
+    for (const gl::ContextLimit& l : gl::queryContextLimits())
+        std::printf("%-26s %lld\n", l.name, static_cast<long long>(l.value));
     return 0;
 }
 

@@ -2,7 +2,7 @@
 #include "render/reloadable_program.h"
 
 #include "gl/debug.h"
-#include "gl/gl.h"
+#include "gl/gl.h" // gl::Error
 #include "render/shader_root.h"
 
 namespace ispm {
@@ -29,8 +29,7 @@ void ReloadableProgram::reloadIfChanged(ShaderReloadReport& report) {
     // errors they would fail the run over a shader the user is still editing. A debug group
     // restores the message filter it started with when it ends, so the silence stays in here.
     const gl::DebugGroup group("shader reload");
-    glDebugMessageControl(GL_DEBUG_SOURCE_SHADER_COMPILER, GL_DONT_CARE, GL_DONT_CARE, 0, nullptr,
-                          GL_FALSE);
+    gl::muteShaderCompilerMessages();
     try {
         gl::Program rebuilt = gl::Program::build(getShaderRoot(), mDesc);
         mStamps = readStamps(rebuilt.getSourceFiles());

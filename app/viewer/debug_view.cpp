@@ -7,18 +7,18 @@
 #include "render/gbuffer.h"
 #include "render/shader_root.h"
 
+#include <shared/scene_data.h>
+#include <shared/viewer_data.h>
+
 #include <algorithm>
 #include <cmath>
 
 namespace ispm {
 namespace {
 
-// Uniform locations of shaders/viewer/blit.frag.
-constexpr GLint kLocationRegion = 0;
-constexpr GLint kLocationTransform = 1;
-constexpr GLint kLocationMasked = 2; // array program only
+// Texture units of shaders/viewer/blit.frag.
 constexpr GLuint kUnitSource = 0;
-constexpr GLuint kUnitMask = 1;
+constexpr GLuint kUnitMask = 1;           // the array program's light positions
 constexpr float kDisplayGamma = 2.2f;     // linear views are encoded like the default tone map
 constexpr float kImportanceWhite = 20.0f; // light importance: this pdf (x uniform) shows white
 
@@ -92,7 +92,7 @@ int findDebugView(const std::vector<DebugView>& views, const std::string& name) 
 
 DebugViewDrawer::DebugViewDrawer()
     : mProgram2D(buildBlitProgram(false)), mProgramArray(buildBlitProgram(true)),
-      mVertexArray("viewer blit vao"),
+      mParams("viewer blit parameters", sizeof(gpu::BlitParams)), mVertexArray("viewer blit vao"),
       mSampler("viewer blit sampler", gl::Filter::Nearest, gl::Wrap::ClampToEdge) {}
 
 void DebugViewDrawer::draw(const FrameRunner& runner, const DebugView& view,
@@ -132,29 +132,31 @@ void DebugViewDrawer::draw(const FrameRunner& runner, const DebugView& view,
         layer = static_cast<float>(std::clamp(transform.lightLayer, 0, texture.getLayers() - 1));
         // Light cameras are square: keep their aspect in the region's lower-left square.
         regionWidth = regionHeight = std::min(width, height);
-        glViewport(0, 0, regionWidth, regionHeight);
+        gl::setViewport(0, 0, regionWidth, regionHeight);
         break;
     }
     }
     const ReloadableProgram& program = texture.isArray() ? mProgramArray : mProgram2D;
     program.use();
-    glUniform4f(kLocationRegion, 0.0f, 0.0f, static_cast<float>(regionWidth),
-                static_cast<float>(regionHeight));
-    glUniform4f(kLocationTransform, scale, bias, inverseGamma, layer);
+    // Light views hold their channels only where a surface is (LightViewPass).
+    const bool masked = view.source == DebugView::Source::LightGBuffer;
+    const gpu::BlitParams params{.region = glm::vec4(0.0f, 0.0f, static_cast<float>(regionWidth),
+                                                     static_cast<float>(regionHeight)),
+                                 .transform = glm::vec4(scale, bias, inverseGamma, layer),
+                                 .control = glm::uvec4(masked ? 1u : 0u, 0, 0, 0)};
+    mParams.upload(0, sizeof(params), &params);
+    mParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
     texture.bindUnit(kUnitSource);
     mSampler.bindUnit(kUnitSource);
     if (texture.isArray()) {
-        // Light views hold their channels only where a surface is (LightViewPass).
-        const bool masked = view.source == DebugView::Source::LightGBuffer;
-        glUniform1i(kLocationMasked, masked ? 1 : 0);
         runner.getLightGBuffer().getChannel("position").bindUnit(kUnitMask);
         mSampler.bindUnit(kUnitMask);
     }
     mVertexArray.bind();
     drawFullscreenTriangle();
     // Passes bind their own samplers or none: leave units 0 and 1 as they expect them.
-    glBindSampler(kUnitSource, 0);
-    glBindSampler(kUnitMask, 0);
+    gl::Sampler::unbindUnit(kUnitSource);
+    gl::Sampler::unbindUnit(kUnitMask);
 }
 
 } // namespace ispm

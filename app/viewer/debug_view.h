@@ -51,6 +51,7 @@ class DebugViewDrawer {
   private:
     ReloadableProgram mProgram2D;
     ReloadableProgram mProgramArray;
+    gl::Buffer mParams; // gpu::BlitParams
     gl::VertexArray mVertexArray;
     gl::Sampler mSampler;
 };

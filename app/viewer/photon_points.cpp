@@ -7,13 +7,13 @@
 #include "render/shader_root.h"
 
 #include <shared/scene_data.h>
+#include <shared/viewer_data.h>
 
 #include <algorithm>
 
 namespace ispm {
 namespace {
 
-constexpr GLint kLocationTint = 0;  // shaders/viewer/photon_points.vert
 constexpr GLuint kUnitPosition = 0; // shaders/viewer/photon_points.frag
 constexpr float kPointSizePx = 2.0f;
 constexpr glm::vec4 kBounceTint{1.0f, 0.85f, 0.2f, kPointSizePx}; // yellow: first bounce
@@ -29,9 +29,12 @@ ReloadableProgram buildPointsProgram(bool isResult) {
 }
 
 // Draws `capacity` points; the vertex stage drops those past this frame's count.
-void drawPoints(const ReloadableProgram& program, const glm::vec4& tint, uint32_t capacity) {
+void drawPoints(const ReloadableProgram& program, const gl::Buffer& params, const glm::vec4& tint,
+                uint32_t capacity) {
     program.use();
-    glUniform4f(kLocationTint, tint.r, tint.g, tint.b, tint.a);
+    const gpu::PhotonPointsParams block{.tint = tint};
+    params.upload(0, sizeof(block), &block);
+    params.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
     gl::drawArrays(gl::Primitive::Points, 0, static_cast<int>(capacity));
 }
 
@@ -39,6 +42,8 @@ void drawPoints(const ReloadableProgram& program, const glm::vec4& tint, uint32_
 
 PhotonPointsDrawer::PhotonPointsDrawer()
     : mBounceProgram(buildPointsProgram(false)), mResultProgram(buildPointsProgram(true)),
+      mBounceParams("viewer bounce points parameters", sizeof(gpu::PhotonPointsParams)),
+      mResultParams("viewer result points parameters", sizeof(gpu::PhotonPointsParams)),
       mVertexArray("viewer photon points vao") {}
 
 void PhotonPointsDrawer::draw(const FrameRunner& runner, PhotonPoints which, int width,
@@ -54,10 +59,10 @@ void PhotonPointsDrawer::draw(const FrameRunner& runner, PhotonPoints which, int
     runner.getViewerGBuffer().getChannel("position").bindUnit(kUnitPosition);
     mVertexArray.bind();
     if (which == PhotonPoints::Bounce || which == PhotonPoints::Both) {
-        drawPoints(mBounceProgram, kBounceTint, buffers.getBounceCapacity());
+        drawPoints(mBounceProgram, mBounceParams, kBounceTint, buffers.getBounceCapacity());
     }
     if (which == PhotonPoints::Result || which == PhotonPoints::Both) {
-        drawPoints(mResultProgram, kResultTint, buffers.getResultCapacity());
+        drawPoints(mResultProgram, mResultParams, kResultTint, buffers.getResultCapacity());
     }
 }
 

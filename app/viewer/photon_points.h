@@ -25,6 +25,8 @@ class PhotonPointsDrawer {
   private:
     ReloadableProgram mBounceProgram;
     ReloadableProgram mResultProgram;
+    gl::Buffer mBounceParams; // gpu::PhotonPointsParams
+    gl::Buffer mResultParams;
     gl::VertexArray mVertexArray;
 };
 

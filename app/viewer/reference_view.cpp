@@ -11,6 +11,9 @@
 #include "render/fullscreen.h"
 #include "render/readback.h"
 
+#include <shared/scene_data.h>
+#include <shared/viewer_data.h>
+
 #include <imgui.h>
 
 #include <algorithm>
@@ -21,9 +24,7 @@
 namespace ispm {
 namespace {
 
-// Uniform locations and units of shaders/viewer/reference_view.frag.
-constexpr GLint kLocationRegion = 0;
-constexpr GLint kLocationParams = 1;
+// Texture units of shaders/viewer/reference_view.frag.
 constexpr GLuint kUnitTotal = 0;
 constexpr GLuint kUnitReference = 1;
 constexpr float kDisplayGamma = 2.2f;    // as the other linear views (debug_view.cpp)
@@ -38,12 +39,25 @@ constexpr int kAutoMetricsFrames = 30;
 constexpr float kMinHeatMax = 0.01f;
 constexpr float kMaxHeatMax = 10.0f;
 
+uint32_t toGpuMode(ReferenceMode mode) {
+    switch (mode) {
+    case ReferenceMode::Reference:
+        return gpu::kReferenceModeReference;
+    case ReferenceMode::SideBySide:
+        return gpu::kReferenceModeSideBySide;
+    case ReferenceMode::HeatMap:
+        return gpu::kReferenceModeHeatMap;
+    }
+    return gpu::kReferenceModeReference;
+}
+
 } // namespace
 
 ReferenceView::ReferenceView()
     : mProgram({.label = "viewer reference",
                 .stages = {{gl::ShaderStage::Vertex, "lib/fullscreen.vert"},
                            {gl::ShaderStage::Fragment, "viewer/reference_view.frag"}}}),
+      mParams("viewer reference parameters", sizeof(gpu::ReferenceViewParams)),
       mVertexArray("viewer reference vao"),
       mSampler("viewer reference sampler", gl::Filter::Nearest, gl::Wrap::ClampToEdge) {}
 
@@ -127,9 +141,12 @@ void ReferenceView::draw(const FrameRunner& runner, ReferenceMode mode, float ex
     gl::applyState({});
     gl::bindDefaultFramebuffer(width, height);
     mProgram.use();
-    glUniform4f(kLocationRegion, 0.0f, 0.0f, static_cast<float>(width), static_cast<float>(height));
-    glUniform4f(kLocationParams, std::exp2(exposureStops), 1.0f / kDisplayGamma,
-                static_cast<float>(mode), mHeatMax);
+    const gpu::ReferenceViewParams params{
+        .region = glm::vec4(0.0f, 0.0f, static_cast<float>(width), static_cast<float>(height)),
+        .display = glm::vec4(std::exp2(exposureStops), 1.0f / kDisplayGamma, mHeatMax, 0.0f),
+        .control = glm::uvec4(toGpuMode(mode), 0, 0, 0)};
+    mParams.upload(0, sizeof(params), &params);
+    mParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
     runner.getAov(Aov::Total).bindUnit(kUnitTotal);
     source->bindUnit(kUnitReference);
     mSampler.bindUnit(kUnitTotal);
@@ -137,8 +154,8 @@ void ReferenceView::draw(const FrameRunner& runner, ReferenceMode mode, float ex
     mVertexArray.bind();
     drawFullscreenTriangle();
     // Passes bind their own samplers or none: leave the units as they expect them.
-    glBindSampler(kUnitTotal, 0);
-    glBindSampler(kUnitReference, 0);
+    gl::Sampler::unbindUnit(kUnitTotal);
+    gl::Sampler::unbindUnit(kUnitReference);
 }
 
 void ReferenceView::drawLegendLabels(int height) const {

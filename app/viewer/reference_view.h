@@ -48,6 +48,7 @@ class ReferenceView {
     const gl::Texture* getSource() const;
 
     ReloadableProgram mProgram;
+    gl::Buffer mParams; // gpu::ReferenceViewParams
     gl::VertexArray mVertexArray;
     gl::Sampler mSampler;
     gl::Texture mLoaded; // rgb = radiance, a = 1 (one "sample")

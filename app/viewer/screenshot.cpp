@@ -1,7 +1,7 @@
 // Window read-back with glReadPixels on framebuffer 0.
 #include "viewer/screenshot.h"
 
-#include "gl/gl.h"
+#include "gl/state.h"
 #include "image/image_io.h"
 
 #include <cstdint>
@@ -10,17 +10,13 @@
 namespace ispm {
 namespace {
 
-constexpr int kChannels = 4; // RGBA8 read-back: rows stay 4-byte aligned at any width
+constexpr int kChannels = 4; // gl::readDefaultFramebuffer reads RGBA8
 constexpr float kByteMax = 255.0f;
 
 } // namespace
 
 Image readWindowImage(int width, int height) {
-    std::vector<uint8_t> bytes(static_cast<size_t>(width) * static_cast<size_t>(height) *
-                               kChannels);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-    glReadBuffer(GL_BACK);
-    glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
+    const std::vector<uint8_t> bytes = gl::readDefaultFramebuffer(width, height);
     Image image(width, height);
     for (int y = 0; y < height; ++y) {
         // GL row 0 is the bottom of the window, Image row 0 the top.

@@ -186,8 +186,7 @@ void Viewer::switchScene(const std::string& path) {
 void Viewer::drawFrame() {
     gl::applyState({});
     gl::bindDefaultFramebuffer(mWindowWidth, mWindowHeight);
-    glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
+    gl::clearDefaultFramebuffer(glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
     const DebugView& view = mViews[static_cast<size_t>(mViewIndex)];
     if (view.source == DebugView::Source::Reference) {
         mReference.draw(*mRunner, view.referenceMode, mTransform.exposureStops, mRunner->getWidth(),

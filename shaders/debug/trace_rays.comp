@@ -3,33 +3,20 @@
 // picking. One invocation per ray; results come back in ray order.
 #include "lib/scene_buffers.glsl"
 #include "lib/bvh.glsl"
-
-// Debug and test bindings, above the product's storage bindings (0..14 in shared/*.h), so a
-// query can run with every product buffer still bound.
-const int kBindingDebugRays = 15;    // DebugRay per ray
-const int kBindingDebugResults = 16; // uvec4 per ray
-// One ray per invocation; 64 is a whole number of SIMD groups on current GPUs (32 or 64 wide).
-const uint kTraceRaysGroupSize = 64u;
+#include "shared/debug_data.h"
 
 layout(local_size_x = kTraceRaysGroupSize) in;
 
-struct DebugRay {
-    vec4 originTMax; // xyz world-space origin, w = tMax (world-space distance)
-    vec4 direction;  // xyz world-space unit direction, w unused
-};
-
 layout(std430, binding = kBindingDebugRays) readonly buffer DebugRays { DebugRay debugRays[]; };
-// x = 1 on a hit else 0, y = global triangle, z = instance, w = floatBitsToUint(t); on a miss
-// y, z are 0 and t is the ray's tMax.
 layout(std430, binding = kBindingDebugResults) writeonly buffer DebugResults {
     uvec4 debugResults[];
 };
 
-layout(location = 0) uniform uint uRayCount; // the last group runs past the end of the rays
+layout(std140, binding = kBindingPassParams) uniform TraceRaysParamsBlock { TraceRaysParams params; };
 
 void main() {
     uint index = gl_GlobalInvocationID.x;
-    if (index >= uRayCount) return;
+    if (index >= params.control.x) return;
     DebugRay ray = debugRays[index];
     RayHit hit;
     bool found = traceRay(ray.originTMax.xyz, ray.direction.xyz, ray.originTMax.w, hit);

@@ -2,6 +2,8 @@
 // them) or result photons (where they landed), tinted by the hue of their power.
 #include "lib/frame_constants.glsl"
 #include "shared/photon_data.h"
+#include "shared/scene_data.h"
+#include "shared/viewer_data.h"
 
 layout(std430, binding = kBindingPhotonCounters) readonly buffer Counters { PhotonCounters counters; };
 
@@ -13,7 +15,7 @@ uint getPhotonCount() { return counters.bounce.x; }
 layout(std430, binding = kBindingBouncePhotons) readonly buffer Photons { BouncePhoton photons[]; };
 #endif
 
-layout(location = 0) uniform vec4 uTint; // rgb tint of this kind of photon; a = point size (px)
+layout(std140, binding = kBindingPassParams) uniform PhotonPointsParamsBlock { PhotonPointsParams params; };
 
 out vec3 vColor;
 out vec3 vPositionW;
@@ -34,7 +36,7 @@ void main() {
     vec3 power = photons[gl_VertexID].power.rgb;
     vPositionW = positionW;
     gl_Position = frame.clipFromWorld * vec4(positionW, 1.0);
-    gl_PointSize = uTint.a;
+    gl_PointSize = params.tint.a;
     float peak = max(max(power.r, power.g), max(power.b, kTinyPower));
-    vColor = mix(power / peak, uTint.rgb, kTintWeight);
+    vColor = mix(power / peak, params.tint.rgb, kTintWeight);
 }

@@ -1,17 +1,16 @@
 // The viewer's reference views: the reference alone, a split with the ispm total on the left and
 // the reference on the right (same exposure and encoding as the linear views), or the relative
 // error |ispm - ref| / (ref + eps) in false colour with its legend bar along the bottom.
+#include "shared/scene_data.h"
+#include "shared/viewer_data.h"
+
 layout(binding = 0) uniform sampler2D uTotal;
 layout(binding = 1) uniform sampler2D uReference; // sum of samples (rgb) and their count (a)
 
-layout(location = 0) uniform vec4 uRegion; // origin x, y and size in window pixels
-layout(location = 1) uniform vec4 uParams; // scale 2^stops, 1/gamma, mode, heat map maximum
+layout(std140, binding = kBindingPassParams) uniform ReferenceViewParamsBlock { ReferenceViewParams params; };
 
 layout(location = 0) out vec4 outColor;
 
-const uint kModeReference = 0u;
-const uint kModeSideBySide = 1u;
-const uint kModeHeatMap = 2u;
 // Radiance added to the reference in the error's denominator so that black reference pixels
 // do not saturate the map (the same role as relMSE's epsilon).
 const float kErrorEpsilon = 1e-2;
@@ -33,18 +32,18 @@ vec3 readReference(vec2 uv) {
 }
 
 vec3 encode(vec3 linear) {
-    return pow(max(linear * uParams.x, vec3(0.0)), vec3(uParams.y));
+    return pow(max(linear * params.display.x, vec3(0.0)), vec3(params.display.y));
 }
 
 void main() {
-    vec2 local = gl_FragCoord.xy - uRegion.xy;
-    vec2 uv = local / uRegion.zw;
-    uint mode = uint(uParams.z + 0.5);
+    vec2 local = gl_FragCoord.xy - params.region.xy;
+    vec2 uv = local / params.region.zw;
+    uint mode = params.control.x;
     vec3 c;
-    if (mode == kModeReference) {
+    if (mode == kReferenceModeReference) {
         c = encode(readReference(uv));
-    } else if (mode == kModeSideBySide) {
-        float middle = 0.5 * uRegion.z;
+    } else if (mode == kReferenceModeSideBySide) {
+        float middle = 0.5 * params.region.z;
         if (abs(local.x - middle) < kDividerPx) {
             c = vec3(1.0);
         } else {
@@ -56,7 +55,7 @@ void main() {
         vec3 x = textureLod(uTotal, uv, 0.0).rgb;
         vec3 r = readReference(uv);
         float error = dot(abs(x - r), vec3(1.0)) / (dot(r, vec3(1.0)) + kErrorEpsilon);
-        c = computeFalseColour(error / uParams.w);
+        c = computeFalseColour(error / params.display.z);
     }
     outColor = vec4(c, 1.0);
 }

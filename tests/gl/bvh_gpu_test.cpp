@@ -13,6 +13,9 @@
 #include "render/shader_root.h"
 #include "scene/box_city.h"
 
+#include <shared/debug_data.h>
+#include <shared/scene_data.h>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -30,24 +33,10 @@
 namespace ispm::test {
 namespace {
 
-// The interface of shaders/debug/trace_rays.comp; TraceRaysBindingsMatchTheShader checks that
-// the bindings here and there agree.
-constexpr GLuint kBindingDebugRays = 15;
-constexpr GLuint kBindingDebugResults = 16;
-constexpr GLint kLocationRayCount = 0;
-constexpr unsigned kTraceRaysGroupSize = 64; // local_size_x
-
 // GpuScene's light G-buffer size; these scenes have no lights, so any valid size does.
 constexpr int kLightResolution = 64;
 // Far enough for any ray of these scenes, and finite as the product's tracer passes it.
 constexpr float kLongRayM = 1e30f;
-
-// The shader's DebugRay (std430: two vec4).
-struct DebugRay {
-    glm::vec4 originTMax;
-    glm::vec4 direction;
-};
-static_assert(sizeof(DebugRay) == 32, "DebugRay layout");
 
 struct GpuHit {
     bool found = false;
@@ -63,21 +52,24 @@ gl::Program buildTraceRaysProgram() {
 }
 
 std::vector<GpuHit> traceOnGpu(const GpuScene& scene, std::span<const Ray> rays) {
-    std::vector<DebugRay> debugRays;
+    std::vector<gpu::DebugRay> debugRays;
     debugRays.reserve(rays.size());
     for (const Ray& r : rays) {
         debugRays.push_back({glm::vec4(r.origin, r.tMax), glm::vec4(r.direction, 0.0f)});
     }
-    const auto rayBuffer = gl::Buffer::fromSpan<DebugRay>("debug rays", debugRays);
+    const auto rayBuffer = gl::Buffer::fromSpan<gpu::DebugRay>("debug rays", debugRays);
     const gl::Buffer resultBuffer("debug ray results", rays.size() * sizeof(glm::uvec4));
     const gl::Program program = buildTraceRaysProgram();
     scene.bind();
-    rayBuffer.bindBase(gl::BufferTarget::Storage, kBindingDebugRays);
-    resultBuffer.bindBase(gl::BufferTarget::Storage, kBindingDebugResults);
+    rayBuffer.bindBase(gl::BufferTarget::Storage, gpu::kBindingDebugRays);
+    resultBuffer.bindBase(gl::BufferTarget::Storage, gpu::kBindingDebugResults);
     program.use();
     const auto rayCount = static_cast<GLuint>(rays.size());
-    glUniform1ui(kLocationRayCount, rayCount);
-    gl::dispatchCompute((rayCount + kTraceRaysGroupSize - 1) / kTraceRaysGroupSize);
+    const gpu::TraceRaysParams params{.control = {rayCount, 0, 0, 0}};
+    const gl::Buffer paramBuffer("debug trace rays parameters", sizeof(params));
+    paramBuffer.upload(0, sizeof(params), &params);
+    paramBuffer.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
+    gl::dispatchCompute((rayCount + gpu::kTraceRaysGroupSize - 1) / gpu::kTraceRaysGroupSize);
     gl::memoryBarrier(gl::Barrier::BufferUpdate); // the read-back follows a shader write
     std::vector<GpuHit> hits;
     hits.reserve(rays.size());
@@ -153,8 +145,8 @@ Scene makeTwoCityScene() {
 
 TEST_F(BvhGpuTest, TraceRaysBindingsMatchTheShader) {
     const gl::Program program = buildTraceRaysProgram();
-    for (const auto& [block, binding] : {std::pair{"DebugRays", kBindingDebugRays},
-                                         std::pair{"DebugResults", kBindingDebugResults}}) {
+    for (const auto& [block, binding] : {std::pair{"DebugRays", gpu::kBindingDebugRays},
+                                         std::pair{"DebugResults", gpu::kBindingDebugResults}}) {
         const GLuint index =
             glGetProgramResourceIndex(program.getId(), GL_SHADER_STORAGE_BLOCK, block);
         ASSERT_NE(index, GL_INVALID_INDEX) << block;
