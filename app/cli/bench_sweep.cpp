@@ -14,6 +14,7 @@
 #include "image/metrics.h"
 #include "render/readback.h"
 #include "render/reference_pass.h"
+#include "scene/frame_settings.h"
 
 #include <unistd.h>
 
@@ -159,12 +160,12 @@ void checkRenderSizes(const std::vector<Configuration>& configs, const std::vect
             }
         }
     }
-    const Settings& s = configs.front().settings;
-    if (s.getInt("width") != reference.width || s.getInt("height") != reference.height) {
+    const FrameSettings s = resolveFrameSettings(configs.front().settings);
+    if (s.width != reference.width || s.height != reference.height) {
         throw InputError(strCat("--reference ", referencePath, ": the reference is ",
                                 reference.width, "x", reference.height, " but the render is ",
-                                s.getInt("width"), "x", s.getInt("height"), " (pass --width ",
-                                reference.width, " --height ", reference.height, ")"));
+                                s.width, "x", s.height, " (pass --width ", reference.width,
+                                " --height ", reference.height, ")"));
     }
 }
 
@@ -322,7 +323,7 @@ SweepPlan planSweep(const BenchOptions& options, const Settings& settings) {
     // bounces is swept, since the reference image can hold only one).
     int bounces = 0;
     for (const Configuration& c : plan.configs)
-        bounces = std::max(bounces, c.settings.getInt("bounces"));
+        bounces = std::max(bounces, resolveFrameSettings(c.settings).bounces);
     plan.tracerSettings = settings;
     plan.tracerSettings.set("bounces", bounces, "bench sweep");
     return plan;
@@ -486,7 +487,7 @@ int runBenchSweep(const BenchOptions& options, const std::string& scenePath, con
                 "tracer to %d spp, bounces=%d\n",
                 scenePath.c_str(), plan.reference.width, plan.reference.height, configCount,
                 options.warmup, options.frames, options.referenceSppMax,
-                plan.tracerSettings.getInt("bounces"));
+                resolveFrameSettings(plan.tracerSettings).bounces);
     std::printf("renderer: %s (%s); pass times by %s\n", info.renderer.c_str(),
                 gl::getContextPathName(info.path), gl::getTimingMethodName(timing));
     std::printf(

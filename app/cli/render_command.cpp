@@ -10,6 +10,7 @@
 #include "render/frame.h"
 #include "render/readback.h"
 #include "render/reference_pass.h"
+#include "scene/frame_settings.h"
 #include "scene/scene_loader.h"
 
 #include <CLI/CLI.hpp>
@@ -84,7 +85,8 @@ int runReference(const RenderOptions& options, const Scene& scene, const Setting
     writeImage(options.outputPath, reference.readMean());
     if (!options.quiet) {
         std::printf("wrote %s (%dx%d, reference, %d spp, %d bounces)\n", options.outputPath.c_str(),
-                    settings.getInt("width"), settings.getInt("height"), options.spp,
+                    resolveFrameSettings(settings).width, resolveFrameSettings(settings).height,
+                    options.spp,
                     reference.getBounces());
         std::printf("path tracing: %.1f ms; whole command: %.1f ms\n",
                     secondsSince(traceStart) * 1e3, secondsSince(start) * 1e3);
@@ -136,7 +138,7 @@ int runRender(const RenderOptions& options) {
     // The first frame compiles shaders in the driver and touches every resource once; time the
     // second, which is what every later frame costs. Accumulating, every frame counts: the image
     // is the average of `accumulate` frames.
-    const int accumulate = settings.getInt("accumulate");
+    const int accumulate = runner.getFrameSettings().accumulate;
     const int frames = accumulate > 0 ? accumulate : 2;
     for (int i = 0; i < frames; ++i)
         runner.renderFrame();
@@ -152,9 +154,9 @@ int runRender(const RenderOptions& options) {
                     runner.getHeight(),
                     kind == OutputKind::Png ? "tone mapped" : options.aov.c_str());
         if (accumulate > 0) {
-            std::printf("indirect light: %u frames accumulated (seeds %d to %d)\n",
-                        runner.getAccumulatedFrames(), settings.getInt("seed"),
-                        settings.getInt("seed") + frames - 1);
+            std::printf("indirect light: %u frames accumulated (seeds %u to %u)\n",
+                        runner.getAccumulatedFrames(), runner.getFrameSettings().seed,
+                        runner.getFrameSettings().seed + uint32_t(frames) - 1);
         }
         printTimings(runner, context->getInfo());
         std::printf("whole command: %.1f ms (scene load, context, shader builds, frame, write)\n",

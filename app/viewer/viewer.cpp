@@ -1,6 +1,7 @@
 // The viewer's frame loop: input (window and script) -> camera and settings -> FrameRunner ->
 // debug view -> ImGui panels -> screenshots -> present.
 #include "viewer/viewer.h"
+#include "scene/frame_settings.h"
 #include "viewer/viewer_app.h"
 
 #include "core/input_error.h"
@@ -38,8 +39,9 @@ constexpr uint64_t kStatsReadbackFrames = 8;
 
 gl::WindowOptions makeWindowOptions(const Scene& scene, const ViewerOptions& options) {
     gl::WindowOptions w;
-    w.width = scene.settings.getInt("width") + kPanelWidthPx;
-    w.height = scene.settings.getInt("height");
+    const FrameSettings settings = resolveFrameSettings(scene.settings);
+    w.width = settings.width + kPanelWidthPx;
+    w.height = settings.height;
     w.title = strCat("ispm view ", scene.sourcePath);
     w.visible = options.visible;
     return w;
