@@ -4,8 +4,7 @@
 // background come out anti-aliased too.
 #include "lib/frame_constants.glsl"
 
-layout(binding = kUnitGBufferFirst + GBUFFER_POSITION) uniform sampler2D uPosition;
-layout(binding = kUnitGBufferFirst + GBUFFER_EMISSION) uniform sampler2D uEmission;
+#include "lib/viewer_gbuffer.glsl"
 layout(binding = kUnitDirect) uniform sampler2D uDirect;
 layout(binding = kUnitIndirect) uniform sampler2D uIndirect;
 

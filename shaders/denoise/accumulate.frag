@@ -12,8 +12,7 @@
 #include "lib/frame_constants.glsl"
 #include "lib/scene_buffers.glsl"
 
-layout(binding = kUnitGBufferFirst + GBUFFER_POSITION) uniform sampler2D uPosition;
-layout(binding = kUnitGBufferFirst + GBUFFER_NORMAL) uniform sampler2D uNormal;
+#include "lib/viewer_gbuffer.glsl"
 layout(binding = kUnitDirect) uniform sampler2D uDirect;
 layout(binding = kUnitIndirect) uniform sampler2D uIndirect;
 layout(binding = kUnitHistoryDirect) uniform sampler2D uHistoryDirect;

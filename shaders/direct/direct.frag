@@ -5,10 +5,7 @@
 #include "lib/brdf.glsl"
 #include "lib/lights.glsl"
 
-layout(binding = kUnitGBufferFirst + GBUFFER_POSITION) uniform sampler2D uPosition;
-layout(binding = kUnitGBufferFirst + GBUFFER_NORMAL) uniform sampler2D uNormal;
-layout(binding = kUnitGBufferFirst + GBUFFER_DIFFUSE) uniform sampler2D uDiffuse;
-layout(binding = kUnitGBufferFirst + GBUFFER_SPECULAR) uniform sampler2D uSpecular;
+#include "lib/viewer_gbuffer.glsl"
 
 layout(location = 0) out vec4 outRadiance;
 

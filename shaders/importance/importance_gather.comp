@@ -17,8 +17,7 @@ layout(std140, binding = kBindingImportanceParams) uniform ImportanceParamsBlock
 };
 layout(std430, binding = kBindingImportanceHits) buffer ImportanceHits { uint importanceHits[]; };
 
-layout(binding = kUnitGBufferFirst + GBUFFER_POSITION) uniform sampler2D uPosition;
-layout(binding = kUnitGBufferFirst + GBUFFER_NORMAL) uniform sampler2D uNormal;
+#include "lib/viewer_gbuffer.glsl"
 
 // Adds `weight` to the map texels around light-view coordinate `uv` (in [0,1]^2), bilinearly.
 void addImportance(uint view, vec2 uv, float weight) {

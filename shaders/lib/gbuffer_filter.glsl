@@ -3,9 +3,7 @@
 // pixel's plane, and the reflectance the light is divided by, so they smooth irradiance and
 // keep texture and colour edges. Needs frame_constants.glsl included before.
 
-layout(binding = kUnitGBufferFirst + GBUFFER_POSITION) uniform sampler2D uPosition;
-layout(binding = kUnitGBufferFirst + GBUFFER_NORMAL) uniform sampler2D uNormal;
-layout(binding = kUnitGBufferFirst + GBUFFER_DIFFUSE) uniform sampler2D uDiffuse;
+#include "viewer_gbuffer.glsl"
 
 const float kPlaneFootprints = 1.0; // off-plane distance, in tap footprints, of weight e^-1
 const float kMinReflectance = 0.02; // demodulation floor (black surfaces keep their light)

@@ -10,10 +10,7 @@
 
 layout(std140, binding = kBindingPassParams) uniform SplatParamsBlock { SplatParams params; };
 
-layout(binding = kUnitGBufferFirst + GBUFFER_POSITION) uniform sampler2D uPosition;
-layout(binding = kUnitGBufferFirst + GBUFFER_NORMAL) uniform sampler2D uNormal;
-layout(binding = kUnitGBufferFirst + GBUFFER_DIFFUSE) uniform sampler2D uDiffuse;
-layout(binding = kUnitGBufferFirst + GBUFFER_SPECULAR) uniform sampler2D uSpecular;
+#include "lib/viewer_gbuffer.glsl"
 
 flat in vec4 vCentre;
 flat in vec3 vNormal;
