@@ -201,7 +201,7 @@ void FrameRunner::renderFrame() {
     runPass(*mDirect, inputs);
     if (hasIndirect()) {
         runPass(*mTrace, inputs);
-        if (mFrameSettings.radiusMode == gpu::kRadiusDensity) runPass(*mDensity, inputs);
+        runPass(*mDensity, inputs);
         runPass(*mSplat, inputs);
     } else {
         // bounces = 0 or no photons: the image is direct light only.

@@ -17,15 +17,15 @@ struct LightCounts {
     uint32_t emitted = 0; // grid photons drawn (before the first bounce)
     uint32_t bounced = 0; // survivors of the first bounce
     uint32_t stored = 0;  // result photons kept
-    uint32_t inView = 0;  // stored photons whose splat reaches the view (density radii only)
+    uint32_t inView = 0;  // stored photons whose splat reaches the view
 };
 
 struct PhotonCounts {
-    uint32_t emitted = 0;  // grid photons drawn (before the first bounce)
-    uint32_t bounced = 0;  // survivors of the first bounce, in the bounce buffer
-    uint32_t stored = 0;   // result photons kept
-    uint32_t overflow = 0; // result photons dropped for want of capacity
-    uint32_t inView = 0;   // stored photons whose splat reaches the view (density radii only)
+    uint32_t emitted = 0;              // grid photons drawn (before the first bounce)
+    uint32_t bounced = 0;              // survivors of the first bounce, in the bounce buffer
+    uint32_t stored = 0;               // result photons kept
+    uint32_t overflow = 0;             // result photons dropped for want of capacity
+    uint32_t inView = 0;               // stored photons whose splat reaches the view
     std::vector<LightCounts> perLight; // by light index; emitted and inView are their sums
 };
 

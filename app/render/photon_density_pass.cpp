@@ -4,6 +4,7 @@
 #include "gl/gl.h"
 #include "gl/state.h"
 #include "render/gpu_scene.h"
+#include "render/splat_pass.h"
 
 #include <shared/photon_data.h>
 #include <shared/scene_data.h>
@@ -42,7 +43,32 @@ PhotonDensityPass::PhotonDensityPass(PhotonBuffers& buffers)
            .stages = {{gl::ShaderStage::Compute, "photon/photon_density.comp"}}})),
       mParams("photon density parameters", sizeof(gpu::DensityParams)) {}
 
+void PhotonDensityPass::cullTravelPhotons(const FrameInputs& inputs) {
+    const SplatRadii r = computeSplatRadii(inputs.scene.getSurfaceArea(),
+                                           glm::length(inputs.scene.getBounds().getExtent()),
+                                           inputs.settings, inputs.getRadiusScale());
+    gpu::DensityParams params{};
+    params.control = glm::uvec4(gpu::kDensityStageTravelCull, 0, 0, inputs.settings.radiusMode);
+    params.travel = glm::vec4(r.radiusMinM, r.radiusMaxM, r.distMinM, r.distMaxM);
+    mParams.upload(0, sizeof(params), &params);
+    // The shader's table is not read in this stage, but every block it declares gets a buffer.
+    if (mCells.getSize() == 0) mCells = gl::Buffer("photon density cells", sizeof(glm::uvec4));
+    mBuffers.bind();
+    inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
+    mParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
+    mCells.bindBase(gl::BufferTarget::Storage, gpu::kBindingDensityCells);
+    mProgram.use();
+    gl::dispatchComputeIndirect(mBuffers.getCounters(),
+                                offsetof(gpu::PhotonCounters, densityDispatch));
+    // The splat's vertex stage reads the marks.
+    gl::memoryBarrier(gl::Barrier::Storage);
+}
+
 void PhotonDensityPass::execute(const FrameInputs& inputs) {
+    if (inputs.settings.radiusMode != gpu::kRadiusDensity) {
+        cullTravelPhotons(inputs);
+        return;
+    }
     const uint32_t slots =
         std::bit_ceil(std::max(mBuffers.getResultCapacity(), 1u) * kSlotsPerPhoton);
     const size_t cellBytes = size_t(slots) * gpu::kDensitySlotUints * sizeof(uint32_t);

@@ -1,7 +1,8 @@
 // PhotonDensityPass (radius_mode = density): after tracing, every result photon gets the radius of
 // the disc that holds about `splat_neighbours` photons around it, estimated on the GPU from the
 // result photons themselves (hashed grids of cells at several sizes, photon_density.comp). Dense
-// places splat small and sharp, sparse ones large enough that discs still overlap.
+// places splat small and sharp, sparse ones large enough that discs still overlap. In the travel
+// modes it only culls: photons whose splat cannot reach the view are marked and not drawn.
 #pragma once
 
 #include "render/pass.h"
@@ -26,6 +27,10 @@ class PhotonDensityPass final : public Pass {
     size_t getGpuBytes() const { return mCells.getSize() + mClip.getSize(); }
 
   private:
+    // Travel modes: marks the photons whose travel-radius splat cannot reach the view
+    // (gpu::kCulledPhoton) and counts the others in view.
+    void cullTravelPhotons(const FrameInputs& inputs);
+
     PhotonBuffers& mBuffers;
     ReloadableProgram mProgram;
     gl::Buffer mParams; // gpu::DensityParams

@@ -10,6 +10,9 @@
 // floor, another light) spreads sqrt(k) times wider instead of making a bright spot. Times
 // radius_scale, clamped.
 //
+// In the travel modes (radius from travel distance) only stage 2 runs: it culls, by the travel
+// radius, the photons whose splat cannot reach the view, and counts the others.
+//
 // Stage 1 also culls photons whose disc lies outside the view frustum (radius 0: the splat skips
 // them) and finds the lines where surfaces cut each disc (shared/splat_clip.h): the in-plane
 // rays of the clip, met against the triangles of one BVH box query around the disc.
@@ -308,9 +311,26 @@ void clipDisc(uint index, vec3 p, vec3 n, float radius) {
     writeClip(index, poles, radius);
 }
 
+// Travel modes: a photon whose travel radius cannot reach the view is marked for the splat to
+// skip; the others count as in view.
+void cullTravelPhoton(uint index) {
+    float radius = computeTravelRadius(photons[index].positionDistance.w, photons[index].normalDensity.w,
+                                       params.travel, params.control.w);
+    if (isOutsideView(photons[index].positionDistance.xyz, radius)) {
+        photons[index].power.w = kCulledPhoton;
+        return;
+    }
+    countPhoton(unpackLight(photons[index].incoming.w), 2);
+    photons[index].power.w = 0.0;
+}
+
 void main() {
     uint index = gl_GlobalInvocationID.x;
     if (index >= counters.splatDraw.y) return;
+    if (params.control.x == kDensityStageTravelCull) {
+        cullTravelPhoton(index);
+        return;
+    }
     vec3 p = photons[index].positionDistance.xyz;
     float power = getPhotonPower(index);
     uint facing = getFacing(photons[index].normalDensity.xyz);

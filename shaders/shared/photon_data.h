@@ -69,6 +69,20 @@ ISPM_CONST uint kRadiusTravel = 0u;
 ISPM_CONST uint kRadiusPathDensity = 1u;
 ISPM_CONST uint kRadiusDensity = 2u;
 
+// Travel radii (modes travel and path_density): from radius_min at dist_min to radius_max at
+// dist_max, linear in the distance the photon travelled between (the thesis); path_density
+// (McGuire and Luebke 2009) divides it by the square root of the path density, so focused photons
+// splat smaller, never below radius_min. radii = (radius_min, radius_max, dist_min, dist_max).
+ISPM_INLINE float computeTravelRadius(float travelledM, float pathDensity, vec4 radii, uint mode) {
+    float s = clamp((travelledM - radii.z) / max(radii.w - radii.z, 1e-9f), 0.0f, 1.0f);
+    float r = mix(radii.x, radii.y, s);
+    if (mode == kRadiusPathDensity) r = max(radii.x, r / sqrt(max(pathDensity, 1.0f)));
+    return r;
+}
+// ResultPhoton.power.w in the travel modes after the density pass's cull: below 0, the splat
+// cannot reach the view and is not drawn (0 or above: drawn at its travel radius).
+ISPM_CONST float kCulledPhoton = -1.0f;
+
 // Local photon density: result photons are counted in hashed grids of cubic cells, one grid per
 // level, each level's cells twice the size of the one below.
 ISPM_CONST uint kDensityLevels = 8u;
@@ -117,9 +131,11 @@ struct SplatParams {
 };
 ISPM_STATIC_ASSERT_SIZE(SplatParams, 48);
 
-// photon_density.comp's stages: count photons into the grid, then radii and clip lines.
+// photon_density.comp's stages: count photons into the grid, then radii and clip lines; in the
+// travel modes only the cull (travel radii against the view frustum, in-view counts).
 ISPM_CONST uint kDensityStageCount = 0u;
 ISPM_CONST uint kDensityStageRadius = 1u;
+ISPM_CONST uint kDensityStageTravelCull = 2u;
 
 // Parameters of photon_density.comp (std140, at kBindingPassParams).
 struct DensityParams {
@@ -127,9 +143,11 @@ struct DensityParams {
     vec4 scales;   // x = radius scale, y = ray offset off a surface (m), z = radius at most this
                    // times the travel (0: off), w unused
     uvec4 control; // x = stage (kDensityStage*), y = table slots - 1 (a power of two),
-                   // z = 1: measure a photon against its neighbours only, w unused
+                   // z = 1: measure a photon against its neighbours only, w = radius mode
+    vec4 travel;   // travel modes: radius_min, radius_max (m, times radius_scale), dist_min,
+                   // dist_max (m), as SplatParams.radius
 };
-ISPM_STATIC_ASSERT_SIZE(DensityParams, 48);
+ISPM_STATIC_ASSERT_SIZE(DensityParams, 64);
 
 ISPM_NAMESPACE_END
 

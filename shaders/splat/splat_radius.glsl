@@ -1,7 +1,6 @@
-// Splat radius. travel (the thesis): grows linearly with the distance the photon travelled,
-// from radius_min at dist_min to radius_max at dist_max. path_density (McGuire and Luebke 2009):
-// the travel radius divided by the square root of the path density, so focused photons splat
-// smaller, never below radius_min. density: the radius the density pass gave the photon.
+// Splat radius. density: the radius the density pass gave the photon. travel and path_density:
+// computeTravelRadius (shared/photon_data.h), or none for a photon the density pass's travel cull
+// found outside the view.
 layout(std140, binding = kBindingPassParams) uniform SplatParamsBlock { SplatParams params; };
 
 uint getRadiusMode() { return params.control.x; }
@@ -9,9 +8,6 @@ uint getRadiusMode() { return params.control.x; }
 float computeSplatRadius(ResultPhoton photon) {
     uint mode = getRadiusMode();
     if (mode == kRadiusDensity) return photon.power.w;
-    float travelled = photon.positionDistance.w;
-    float s = clamp((travelled - params.radius.z) / max(params.radius.w - params.radius.z, 1e-9), 0.0, 1.0);
-    float r = mix(params.radius.x, params.radius.y, s);
-    if (mode == kRadiusPathDensity) r = max(params.radius.x, r / sqrt(max(photon.normalDensity.w, 1.0)));
-    return r;
+    if (photon.power.w < 0.0) return 0.0; // kCulledPhoton
+    return computeTravelRadius(photon.positionDistance.w, photon.normalDensity.w, params.radius, mode);
 }

@@ -14,6 +14,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include <algorithm>
+#include <optional>
 #include <cmath>
 #include <vector>
 
@@ -51,15 +52,22 @@ struct DensityRun {
     std::vector<glm::vec4> clip;            // kClipVec4s per photon (shared/splat_clip.h)
 };
 
-// Runs the density pass alone on `photons`, with the frame of `scene` (camera, BVH).
+// Runs the density pass alone on `photons`, with the frame of `scene` (camera, BVH); `travelM`
+// set: in radius_mode travel with that radius for every photon.
 DensityRun runDensity(const Scene& scene, std::vector<gpu::ResultPhoton> photons,
-                      ProgressiveStep progressive = {}) {
+                      ProgressiveStep progressive = {},
+                      std::optional<float> travelM = std::nullopt) {
     Settings settings;
     settings.set("width", 32, "test");
     settings.set("height", 32, "test");
     settings.set("photons", 1000, "test");
     settings.set("bounces", 1, "test");
     settings.set("splat_neighbours", kNeighbours, "test");
+    if (travelM) {
+        settings.setEnum("radius_mode", "travel", "test");
+        settings.set("radius_min", *travelM, "test");
+        settings.set("radius_max", *travelM, "test");
+    }
     FrameRunner runner(scene, settings, gl::TimingMethod::CpuFinish);
     runner.renderFrame();
     const auto count = uint32_t(photons.size());
@@ -76,8 +84,9 @@ DensityRun runDensity(const Scene& scene, std::vector<gpu::ResultPhoton> photons
     FrameInputs inputs = runner.getFrameInputs();
     inputs.progressive = progressive;
     density.execute(inputs);
-    return {buffers.getResult().read<gpu::ResultPhoton>(count),
-            density.getClip().read<glm::vec4>(size_t(count) * gpu::kClipVec4s)};
+    std::vector<glm::vec4> clip; // none in the travel modes
+    if (!travelM) clip = density.getClip().read<glm::vec4>(size_t(count) * gpu::kClipVec4s);
+    return {buffers.getResult().read<gpu::ResultPhoton>(count), clip};
 }
 
 // The median radius of the photons inside [lo, hi] on x and z.
@@ -268,6 +277,31 @@ TEST_F(PhotonDensityTest, WallClipsDiscsAndViewCullsPhotons) {
     const DensityRun run = runDensity(scene, photons);
     EXPECT_GT(expectLineAtXPointTwo(run), 20);
     EXPECT_EQ(run.photons.back().power.w, 0.0f) << "a photon outside the view is culled";
+}
+
+TEST_F(PhotonDensityTest, TravelRadiiAreCulledByTheirReachIntoTheView) {
+    // The camera 6 m above the floor sees x + y <= 6 (90 degrees): a floor photon at x = 7 lies
+    // 1 / sqrt(2) = 0.71 m outside that side plane. With travel radii the pass only culls: a
+    // 1 m disc reaches into the view and stays, a 0.5 m one does not, and one behind is culled.
+    const Scene scene = makeFloorScene();
+    std::vector<gpu::ResultPhoton> photons;
+    addSquare(photons, -0.5f, -0.5f, 1.0f, 2, 6u); // in view
+    gpu::ResultPhoton side = photons.front();
+    side.positionDistance = glm::vec4(7.0f, 0.0f, 0.0f, 1.0f);
+    photons.push_back(side);
+    gpu::ResultPhoton behind = photons.front();
+    behind.positionDistance = glm::vec4(0.0f, 0.0f, 40.0f, 1.0f);
+    photons.push_back(behind);
+    const size_t count = photons.size();
+    const DensityRun wide = runDensity(scene, photons, {}, 1.0f);
+    const DensityRun narrow = runDensity(scene, photons, {}, 0.5f);
+    for (size_t i = 0; i + 2 < count; ++i) {
+        EXPECT_EQ(wide.photons[i].power.w, 0.0f) << "photon " << i << " is in view";
+        EXPECT_EQ(narrow.photons[i].power.w, 0.0f) << "photon " << i << " is in view";
+    }
+    EXPECT_EQ(wide.photons[count - 2].power.w, 0.0f) << "a 1 m disc reaches the view";
+    EXPECT_EQ(narrow.photons[count - 2].power.w, gpu::kCulledPhoton) << "a 0.5 m disc does not";
+    EXPECT_EQ(wide.photons[count - 1].power.w, gpu::kCulledPhoton) << "behind the camera";
 }
 
 TEST_F(PhotonDensityTest, SurfaceEndClipsDiscsLikeAWall) {
