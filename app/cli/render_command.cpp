@@ -86,8 +86,7 @@ int runReference(const RenderOptions& options, const Scene& scene, const Setting
     if (!options.quiet) {
         std::printf("wrote %s (%dx%d, reference, %d spp, %d bounces)\n", options.outputPath.c_str(),
                     resolveFrameSettings(settings).width, resolveFrameSettings(settings).height,
-                    options.spp,
-                    reference.getBounces());
+                    options.spp, reference.getBounces());
         std::printf("path tracing: %.1f ms; whole command: %.1f ms\n",
                     secondsSince(traceStart) * 1e3, secondsSince(start) * 1e3);
     }

@@ -22,13 +22,17 @@
 namespace ispm {
 namespace {
 
-// Uniform locations of shaders/splat/*.
-
 // The unit cube's 12 triangles over its 8 corners (splat.vert: corner i has x from bit 0, y from
 // bit 1, z from bit 2, each -1 or +1), counter-clockwise seen from outside.
 constexpr std::array<uint32_t, gpu::kSplatCubeVertices> kCubeIndices = {
     0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4,
     2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5};
+// The disc's square (2 triangles over its 4 corners), then degenerate triangles up to the cube's
+// index count: the draw commands (photon_prepare.comp) serve both shapes, and a zero-area
+// triangle ends in the rasteriser's setup.
+constexpr std::array<uint32_t, gpu::kSplatCubeVertices> kDiscIndices = {
+    0, 1, 2, 0, 2, 3, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
 
 // How many discs cover a point on average with the derived base radius: enough overlap that
 // one photon's noise is averaged with its neighbours', few enough to keep detail.
@@ -73,10 +77,12 @@ SplatPass::SplatPass(const GBuffer& viewer, const PhotonBuffers& buffers, const 
                                   .stages = {{gl::ShaderStage::Vertex, "splat/splat.vert"},
                                              {gl::ShaderStage::Fragment, "splat/splat.frag"}},
                                   .defines = getGBufferDefines()})),
-      mVertexArray("splat vao"),
-      mCubeIndices(gl::Buffer::fromSpan<uint32_t>("splat cube indices", kCubeIndices)) {
-    // Indexed: the vertex stage runs once per cube corner (8), not per triangle corner (36).
-    mVertexArray.setElementBuffer(mCubeIndices);
+      mCubeVertexArray("splat cube vao"), mDiscVertexArray("splat disc vao"),
+      mCubeIndices(gl::Buffer::fromSpan<uint32_t>("splat cube indices", kCubeIndices)),
+      mDiscIndices(gl::Buffer::fromSpan<uint32_t>("splat disc indices", kDiscIndices)) {
+    // Indexed: the vertex stage runs once per corner (8), not per triangle corner (36).
+    mCubeVertexArray.setElementBuffer(mCubeIndices);
+    mDiscVertexArray.setElementBuffer(mDiscIndices);
 }
 
 void SplatPass::resizeBuffer(int width, int height) {
@@ -96,12 +102,12 @@ void SplatPass::clear(const FrameInputs& inputs) {
 void SplatPass::execute(const FrameInputs& inputs) {
     clear(inputs);
     mFramebuffer.bind();
-    // Additive float accumulation; only back faces count, so each box covers a pixel once.
-    const bool cullInRasteriser = inputs.settings.splatBackFacesOnly;
-    gl::applyState(
-        {.blend = gl::Blend::Additive, .cull = cullInRasteriser ? gl::Cull::Front : gl::Cull::Off});
+    // Additive float accumulation. A flat disc covers a pixel once from either side; of a box,
+    // only the back faces count.
+    const bool isBox = inputs.settings.splatShape == gpu::kSplatShapeBox;
+    gl::applyState({.blend = gl::Blend::Additive, .cull = isBox ? gl::Cull::Front : gl::Cull::Off});
     mProgram.use();
-    mVertexArray.bind();
+    (isBox ? mCubeVertexArray : mDiscVertexArray).bind();
     mBuffers.bind();
     mClip.bindBase(gl::BufferTarget::Storage, gpu::kBindingSplatClip);
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
@@ -114,7 +120,7 @@ void SplatPass::execute(const FrameInputs& inputs) {
     for (uint32_t p = 0; p < passes; ++p) {
         params[p].radius = glm::vec4(r.radiusMinM, r.radiusMaxM, r.distMinM, r.distMaxM);
         params[p].control =
-            glm::uvec4(inputs.settings.radiusMode, cullInRasteriser ? 0u : 1u, p, passes);
+            glm::uvec4(inputs.settings.radiusMode, inputs.settings.splatShape, p, passes);
         params[p].shape =
             glm::vec4(inputs.settings.squash, float(inputs.settings.splatDivisor), 0.0f, 0.0f);
     }

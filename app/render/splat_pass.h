@@ -1,5 +1,6 @@
-// SplatPass: every result photon is drawn as an instanced box squashed along its normal; the
-// fragment stage adds BRDF x power x kernel to the indirect-light buffer (additive RGBA32F).
+// SplatPass: every result photon is drawn as an instanced flat square in its surface plane (or,
+// splat_shape box, a box squashed along its normal); the fragment stage adds BRDF x power x
+// kernel to the indirect-light buffer (additive RGBA32F).
 // The draw count comes from the GPU (glDrawArraysIndirect), split into `splat_passes` calls.
 // The buffer may be smaller than the image (`splat_resolution`): each of its pixels then shades
 // one viewer G-buffer pixel of the block it covers, and UpsamplePass brings it back.
@@ -57,8 +58,10 @@ class SplatPass final : public Pass {
     const PhotonBuffers& mBuffers;
     const gl::Buffer& mClip;
     ReloadableProgram mProgram;
-    gl::VertexArray mVertexArray;
+    gl::VertexArray mCubeVertexArray; // splat_shape box
+    gl::VertexArray mDiscVertexArray; // splat_shape disc
     gl::Buffer mCubeIndices;
+    gl::Buffer mDiscIndices;
     ParamBlocks<gpu::SplatParams> mParams{"splat parameters"}; // one per draw
     gl::Texture mIndirect;
     gl::Framebuffer mFramebuffer;

@@ -22,6 +22,8 @@ static_assert(kRngGeneratorChoices[gpu::kRngPcg] == "pcg" &&
 static_assert(kRngModeChoices[gpu::kRngFixed] == "fixed" &&
               kRngModeChoices[gpu::kRngPerFrame] == "per_frame" &&
               kRngModeChoices[gpu::kRngObjectSpace] == "object_space");
+static_assert(kSplatShapeChoices[gpu::kSplatShapeDisc] == "disc" &&
+              kSplatShapeChoices[gpu::kSplatShapeBox] == "box");
 static_assert(kRadiusModeChoices[gpu::kRadiusTravel] == "travel");
 static_assert(kRadiusModeChoices[gpu::kRadiusPathDensity] == "path_density");
 static_assert(kRadiusModeChoices[gpu::kRadiusDensity] == "density");
@@ -122,7 +124,7 @@ FrameSettings resolveFrameSettings(const Settings& settings) {
     f.radiusScale = settings.getFloat("radius_scale");
     f.squash = settings.getFloat("squash");
     f.splatPasses = settings.getInt("splat_passes");
-    f.splatBackFacesOnly = settings.getEnum("splat_faces") == kSplatFacesChoices[0];
+    f.splatShape = getChoice(settings, "splat_shape");
     f.splatDivisor = computeSplatDivisor(settings, f.width, f.height);
     f.splatSize = computeSplatSize(settings, f.width, f.height);
     f.denoiseIterations = computeDenoiseIterations(settings, f.splatSize.x, f.splatSize.y);

@@ -23,7 +23,7 @@ inline constexpr std::array<std::string_view, 3> kRngModeChoices = {"fixed", "pe
                                                                     "object_space"};
 inline constexpr std::array<std::string_view, 3> kRadiusModeChoices = {"travel", "path_density",
                                                                        "density"};
-inline constexpr std::array<std::string_view, 2> kSplatFacesChoices = {"back", "all"};
+inline constexpr std::array<std::string_view, 2> kSplatShapeChoices = {"disc", "box"};
 inline constexpr std::array<std::string_view, 4> kSplatResolutionChoices = {"auto", "1", "1/2",
                                                                             "1/4"};
 
@@ -59,11 +59,11 @@ struct FrameSettings {
     float radiusScale = 1.0f;
     float squash = 0.0f;
     int splatPasses = 1;
-    bool splatBackFacesOnly = true; // splat_faces = back
-    int splatDivisor = 1;           // image pixels per splat-buffer pixel along an axis (1, 2, 4)
-    glm::ivec2 splatSize{0};        // the splat buffer: the image divided, rounded up
-    int denoiseIterations = 0;      // derived from the splat buffer's size
-    int accumulate = 0;             // history length in frames (0: off)
+    uint32_t splatShape = 0;   // gpu::kSplatShape*
+    int splatDivisor = 1;      // image pixels per splat-buffer pixel along an axis (1, 2, 4)
+    glm::ivec2 splatSize{0};   // the splat buffer: the image divided, rounded up
+    int denoiseIterations = 0; // derived from the splat buffer's size
+    int accumulate = 0;        // history length in frames (0: off)
 
     bool hasIndirect() const { return bounces > 0 && photons > 0; }
 };

@@ -239,11 +239,13 @@ const std::vector<SettingDesc>& table() {
          "same surface shows, at most this many frames a pixel) and the direct light's restarts; "
          "a changed light or setting starts again; 0 = off (each frame alone)",
          {}},
-        {"splat_faces", SettingType::Enum, 0, 0, 1, "",
-         "back: the rasteriser culls the boxes' front faces (each covered pixel shaded once, the "
-         "camera inside a box included); all: every face is rasterised and the fragment stage "
-         "drops front faces (same image, for measuring)",
-         toChoices(kSplatFacesChoices)},
+        {"splat_shape", SettingType::Enum, 0, 0, 1, "",
+         "what each photon's splat rasterises: disc (a flat square round its disc in its surface "
+         "plane, cut where walls cut the disc) or box (the thesis's cube, squashed along the "
+         "normal to squash x the radius, back faces only, so each covered pixel is shaded once); "
+         "the fragment stage tests the same ellipsoid in both, so the images differ only on "
+         "surfaces off the photon's plane but inside the box",
+         toChoices(kSplatShapeChoices)},
     };
     return kTable;
 }

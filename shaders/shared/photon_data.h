@@ -64,6 +64,11 @@ ISPM_CONST uint kReflectionBits = 8u;      // ResultPhoton.incoming.w: reflectio
 ISPM_CONST int kBindingDensityCells = 17;  // photon_density.comp's hashed grid (kDensitySlotUints
                                            // a slot)
 
+// Splat shapes (setting splat_shape, checked against the table in frame_settings.cpp): one
+// draw of kSplatCubeVertices indices per photon either way.
+ISPM_CONST uint kSplatShapeDisc = 0u;
+ISPM_CONST uint kSplatShapeBox = 1u;
+
 // Splat radius modes (setting radius_mode, checked against the table in splat_pass.cpp).
 ISPM_CONST uint kRadiusTravel = 0u;
 ISPM_CONST uint kRadiusPathDensity = 1u;
@@ -124,8 +129,8 @@ ISPM_STATIC_ASSERT_SIZE(EmitParams, 32);
 struct SplatParams {
     vec4 radius;   // travel modes: x = radius_min, y = radius_max (m, times radius_scale),
                    // z = dist_min, w = dist_max (m)
-    uvec4 control; // x = radius mode (kRadius*), y = 1: drop front faces in the fragment stage,
-                   // z = this draw, w = draw count
+    uvec4 control; // x = radius mode (kRadius*), y = shape (kSplatShape*), z = this draw,
+                   // w = draw count
     vec4 shape;    // x = squash (thickness along the normal / radius), y = image pixels per
                    // splat-buffer pixel along an axis, zw unused
 };

@@ -24,7 +24,6 @@ flat in vec2 vPoles[kClipRays];
 layout(location = 0) out vec4 outRadiance;
 
 void main() {
-    if (params.control.y == 1u && gl_FrontFacing) discard; // splat_faces = all
     // A buffer smaller than the image shades the G-buffer pixel at the middle of its block.
     ivec2 pixel = getBlockGBufferPixel(ivec2(gl_FragCoord.xy), int(params.shape.y));
     vec4 position = texelFetch(uPosition, pixel, 0);

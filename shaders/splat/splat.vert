@@ -1,6 +1,8 @@
-// Splat vertex stage: one instanced box per result photon, aligned with the photon's surface
-// normal, radius r in the surface plane and r * squash along the normal. Only back faces are kept
-// (front faces culled): they cover the box's screen footprint once, camera inside or out.
+// Splat vertex stage: one instance per result photon, aligned with the photon's surface normal.
+// splat_shape disc: a flat square of side 2r in the surface plane (cut to the clip extents), which
+// covers each pixel once; box (the thesis's): radius r in the plane and r * squash along the
+// normal, only back faces kept (front faces culled), which cover the box's footprint once,
+// camera inside or out.
 #include "lib/frame_constants.glsl"
 #include "shared/photon_data.h"
 #include "shared/photon_scatter.h"
@@ -22,8 +24,18 @@ flat out vec3 vIncoming; // the direction the photon arrived along
 flat out uint vLines;    // clip lines in vPoles (the nonzero poles first)
 flat out vec2 vPoles[kClipRays];
 
-// The draw is indexed (splat_pass.cpp holds the 12 triangles): gl_VertexID is the cube corner, its
-// x from bit 0, y from bit 1, z from bit 2 of the index, each -1 or +1.
+// The draw is indexed (splat_pass.cpp holds the triangles). Box: gl_VertexID is the cube corner,
+// its x from bit 0, y from bit 1, z from bit 2 of the index, each -1 or +1.
+
+// Disc: corner i (0 to 3, counter-clockwise from (+t, +b)) of the square round the disc in its
+// plane, cut to the extents where walls cut the disc. Two triangles: an octagon's six fan
+// triangles cover fewer pixels but cost more in the rasteriser than they save (llvmpipe: a
+// splat is a few pixels across, and each triangle edge is a row of partly covered blocks).
+vec3 computeDiscCorner(uint i, vec3 t, vec3 b, vec4 extent) {
+    vec2 sign2 = vec2(i == 0u || i == 3u ? 1.0 : -1.0, i < 2u ? 1.0 : -1.0);
+    vec2 corner = sign2 * vec2(sign2.x > 0.0 ? extent.x : extent.y, sign2.y > 0.0 ? extent.z : extent.w);
+    return t * corner.x + b * corner.y;
+}
 
 void main() {
     uint stored = counters.splatDraw.y;
@@ -49,12 +61,17 @@ void main() {
             if (dot(two.zw, two.zw) > 0.0) vPoles[vLines++] = two.zw;
         }
     }
-    vec3 c = vec3((gl_VertexID & 1) != 0 ? 1.0 : -1.0, (gl_VertexID & 2) != 0 ? 1.0 : -1.0,
-                  (gl_VertexID & 4) != 0 ? 1.0 : -1.0);
-    float alongT = c.x > 0.0 ? extent.x : extent.y;
-    float alongB = c.y > 0.0 ? extent.z : extent.w;
-    vec3 world = photon.positionDistance.xyz +
-                 (t * (c.x * alongT) + b * (c.y * alongB) + n * (c.z * radius * params.shape.x));
+    vec3 world;
+    if (params.control.y == kSplatShapeBox) {
+        vec3 c = vec3((gl_VertexID & 1) != 0 ? 1.0 : -1.0, (gl_VertexID & 2) != 0 ? 1.0 : -1.0,
+                      (gl_VertexID & 4) != 0 ? 1.0 : -1.0);
+        float alongT = c.x > 0.0 ? extent.x : extent.y;
+        float alongB = c.y > 0.0 ? extent.z : extent.w;
+        world = photon.positionDistance.xyz +
+                (t * (c.x * alongT) + b * (c.y * alongB) + n * (c.z * radius * params.shape.x));
+    } else {
+        world = photon.positionDistance.xyz + computeDiscCorner(uint(gl_VertexID), t, b, extent);
+    }
     vCentre = vec4(photon.positionDistance.xyz, radius);
     vNormal = n;
     vTangent = t;

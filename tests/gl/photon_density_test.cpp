@@ -14,8 +14,8 @@
 #include <glm/gtc/constants.hpp>
 
 #include <algorithm>
-#include <optional>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 namespace ispm::test {

@@ -101,7 +101,12 @@ double computePixelArea(const Scene& scene, int x, int y, int size) {
     return 0.5 * glm::length(glm::cross(c11 - c00, c01 - c10));
 }
 
-TEST_F(PhotonEnergyTest, OneSplatOnAPlaneIntegratesToBrdfTimesPower) {
+// Both splat shapes: the flat square and the thesis's squashed box shade the same pixels of a
+// plane, so each conserves the photon's power there.
+class SplatShapeEnergyTest : public PhotonEnergyTest,
+                             public ::testing::WithParamInterface<const char*> {};
+
+TEST_P(SplatShapeEnergyTest, OneSplatOnAPlaneIntegratesToBrdfTimesPower) {
     constexpr float kRho = 0.5f;
     constexpr int kSize = 128;
     constexpr float kRadiusM = 0.3f; // ~40 pixels across: the kernel is well resolved
@@ -120,6 +125,7 @@ TEST_F(PhotonEnergyTest, OneSplatOnAPlaneIntegratesToBrdfTimesPower) {
     settings.set("radius_min", kRadiusM, "test");
     settings.set("radius_max", kRadiusM, "test");
     settings.setEnum("radius_mode", "travel", "test"); // the radius set above, not the density's
+    settings.setEnum("splat_shape", GetParam(), "test");
     FrameRunner runner(scene, settings, gl::TimingMethod::CpuFinish);
     runner.renderFrame();
 
@@ -166,6 +172,8 @@ TEST_F(PhotonEnergyTest, OneSplatOnAPlaneIntegratesToBrdfTimesPower) {
     for (int c = 0; c < 3; ++c)
         EXPECT_NEAR(flux[c] / expected[c], 1.0, 0.01) << "channel " << c;
 }
+
+INSTANTIATE_TEST_SUITE_P(Shapes, SplatShapeEnergyTest, ::testing::Values("disc", "box"));
 
 } // namespace
 } // namespace ispm::test
