@@ -33,8 +33,9 @@ constexpr float kTravelRadiusFactor = 0.5f;
 // are wide for its noise, which the average takes down, while their blur stays. 32 frames of the
 // Cornell box, courtyard outside and room (rel RMSE 4x4), one frame holding 0.3 sqrt(photons):
 // 0.053 / 0.093 / 0.099 at 0.367 (0.11 sqrt(photons), the earlier rule), 0.051 / 0.090 / 0.091
-// at 0.55, the same at 0.75.
-constexpr double kAveragedNeighbourShare = 0.55;
+// at 0.55, the same at 0.75. One frame now holds 0.45 sqrt(photons): the share keeps 0.165
+// sqrt(photons).
+constexpr double kAveragedNeighbourShare = 0.55 * 0.3 / 0.45;
 
 } // namespace
 

@@ -32,7 +32,7 @@ static_assert(kSplatResolutionChoices[0] == "auto" && kSplatResolutionChoices[2]
 
 // Photons a splat disc holds by default: enough that one photon's noise averages out over its
 // neighbours' (relative noise ~ 1 / sqrt(k)), few enough to keep detail. k grows with the budget
-// as sqrt(photons), so more photons buy both less noise and sharper light: 67 at 50,000 photons.
+// as sqrt(photons), so more photons buy both less noise and sharper light: 101 at 50,000 photons.
 // One frame's noise against its blur. Medians over eight seeds at 256x256, 50,000 photons, rel
 // RMSE of Cornell / courtyard outside / room, with sobol first bounces and each block's area
 // from its photons' span: 0.127 / 0.263 / 0.221 at k 44 (0.2 sqrt(photons)), 0.123 / 0.252 /
@@ -42,10 +42,13 @@ static_assert(kSplatResolutionChoices[0] == "auto" && kSplatResolutionChoices[2]
 // within 2 cm of an edge got 0.95 of the middle's light at 64, 0.93 at 90; with it they get
 // 1.0 at 67 and 89 (FailureModeTest.CornersAndEdgesLoseIndirectEnergy). 89 leaves 0.7% of the
 // Cornell box's pixels dark at 2,000 photons (FailureModeTest.SparsePhotonsLeaveUncoveredPixels
-// holds 0.5%), 67 leaves 0.09%. The splat's cost grows little with k (Cornell box, 256 px:
-// 246-261 ms at 44, 265-274 at 67). Accumulated frames hold fewer (computeProgressiveStep):
-// their average takes the noise down, the blur stays.
-constexpr double kNeighboursPerSqrtPhoton = 0.3;
+// holds 0.5%), 67 leaves 0.09%. With flat splats (splat_shape disc) the worst of eight seeds
+// decides: 0.128 / 0.268 / 0.281 at 67, 0.123 / 0.252 / 0.256 at 100, 0.121 / 0.245 / 0.250 at
+// 130 (medians 0.120 / 0.247 / 0.207, 0.115 / 0.229 / 0.202, 0.113 / 0.224 / 0.203), the
+// corners at 1.0 of the middle still; 0.45 sqrt(photons) (101) costs the splat about 1.4x of 67.
+// Accumulated frames hold fewer (computeProgressiveStep): their average takes the noise down,
+// the blur stays.
+constexpr double kNeighboursPerSqrtPhoton = 0.45;
 constexpr int kMinNeighbours = 16;
 constexpr int kMaxNeighbours = 256;
 

@@ -50,7 +50,7 @@ struct FrameSettings {
     uint32_t rngMode = 0;      // gpu::kRngFixed, kRngPerFrame, kRngObjectSpace
     // Splats.
     uint32_t radiusMode = 0; // gpu::kRadius*
-    int splatNeighbours = 0; // derived: 0.3 sqrt(photons), 16 to 256
+    int splatNeighbours = 0; // derived: 0.45 sqrt(photons), 16 to 256
     // As set (metres, before radius_scale); the passes derive the rest from the scene.
     std::optional<float> radiusMinM;
     std::optional<float> radiusMaxM;

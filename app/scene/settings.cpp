@@ -142,7 +142,7 @@ const std::vector<SettingDesc>& table() {
          1,
          4096,
          "",
-         "radius_mode density: photons a splat disc holds in one frame; derived: 0.3 "
+         "radius_mode density: photons a splat disc holds in one frame; derived: 0.45 "
          "sqrt(photons), 16 to 256 (accumulated frames hold fewer, see accumulate)",
          {},
          true},
