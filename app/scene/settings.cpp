@@ -132,9 +132,10 @@ const std::vector<SettingDesc>& table() {
          "bounces pcg)",
          toChoices(kRngGeneratorChoices)},
         {"radius_mode", SettingType::Enum, 2, 0, 2, "",
-         "splat radius from travel distance (travel, the thesis), from path density "
-         "(path_density, McGuire and Luebke 2009) or from the local density of stored photons "
-         "(density: each disc holds about splat_neighbours photons)",
+         "splat radius from travel distance (travel, the thesis), from path density alone "
+         "(path_density, McGuire and Luebke 2009: radius_max / sqrt(path density), at least "
+         "radius_min) or from the local density of stored photons (density: each disc holds about "
+         "splat_neighbours photons)",
          toChoices(kRadiusModeChoices)},
         {"splat_neighbours",
          SettingType::Int,
@@ -152,8 +153,9 @@ const std::vector<SettingDesc>& table() {
          1e-6,
          1e6,
          "m",
-         "travel modes: splat radius at dist_min or less; derived: r0 / 2, where `photons` discs "
-         "of radius r0 cover the scene's surface area 32 times; density: a floor when set",
+         "travel: splat radius at dist_min or less; path_density: the smallest radius; derived: "
+         "r0 / 2, where `photons` discs of radius r0 cover the scene's surface area 32 times; "
+         "density: a floor when set",
          {},
          true},
         {"radius_max",
@@ -162,8 +164,9 @@ const std::vector<SettingDesc>& table() {
          1e-6,
          1e6,
          "m",
-         "travel modes: splat radius at dist_max or more; derived: 2 r0; density: the largest "
-         "radius, derived: 4 r0 with r0 for splat_neighbours discs",
+         "travel: splat radius at dist_max or more; path_density: the radius of a photon whose "
+         "path never focused (diffuse bounces only); derived: 2 r0; density: the largest radius, "
+         "derived: 4 r0 with r0 for splat_neighbours discs",
          {},
          true},
         {"dist_min",
@@ -172,7 +175,7 @@ const std::vector<SettingDesc>& table() {
          0,
          1e9,
          "m",
-         "travel distance where the radius starts to grow; derived: 0",
+         "radius_mode travel: travel distance where the radius starts to grow; derived: 0",
          {},
          true},
         {"dist_max",
@@ -181,7 +184,8 @@ const std::vector<SettingDesc>& table() {
          1e-6,
          1e9,
          "m",
-         "travel distance where the radius reaches radius_max; derived: the scene's diagonal",
+         "radius_mode travel: travel distance where the radius reaches radius_max; derived: the "
+         "scene's diagonal",
          {},
          true},
         {"radius_scale",
@@ -241,8 +245,9 @@ const std::vector<SettingDesc>& table() {
          {}},
         {"splat_shape", SettingType::Enum, 0, 0, 1, "",
          "what each photon's splat rasterises: disc (a flat square round its disc in its surface "
-         "plane, cut where walls cut the disc) or box (the thesis's cube, squashed along the "
-         "normal to squash x the radius, back faces only, so each covered pixel is shaded once); "
+         "plane, cut where walls cut the disc) or box (the cube of the thesis, squashed along the "
+         "normal to squash x the radius; ispm draws its back faces only, so each covered pixel is "
+         "shaded once); "
          "the fragment stage tests the same ellipsoid in both, so the images differ only on "
          "surfaces off the photon's plane but inside the box",
          toChoices(kSplatShapeChoices)},

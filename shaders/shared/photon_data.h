@@ -74,15 +74,16 @@ ISPM_CONST uint kRadiusTravel = 0u;
 ISPM_CONST uint kRadiusPathDensity = 1u;
 ISPM_CONST uint kRadiusDensity = 2u;
 
-// Travel radii (modes travel and path_density): from radius_min at dist_min to radius_max at
-// dist_max, linear in the distance the photon travelled between (the thesis); path_density
-// (McGuire and Luebke 2009) divides it by the square root of the path density, so focused photons
-// splat smaller, never below radius_min. radii = (radius_min, radius_max, dist_min, dist_max).
+// Radii of the modes travel and path_density. travel (the thesis): from radius_min at dist_min
+// to radius_max at dist_max, linear in the distance the photon travelled between. path_density
+// (McGuire and Luebke 2009), from the path alone: radius_max for a photon whose path never
+// focused (path density 1: diffuse bounces only), divided by the square root of the path density,
+// so focused photons splat smaller, never below radius_min. radii = (radius_min, radius_max,
+// dist_min, dist_max).
 ISPM_INLINE float computeTravelRadius(float travelledM, float pathDensity, vec4 radii, uint mode) {
+    if (mode == kRadiusPathDensity) return max(radii.x, radii.y / sqrt(max(pathDensity, 1.0f)));
     float s = clamp((travelledM - radii.z) / max(radii.w - radii.z, 1e-9f), 0.0f, 1.0f);
-    float r = mix(radii.x, radii.y, s);
-    if (mode == kRadiusPathDensity) r = max(radii.x, r / sqrt(max(pathDensity, 1.0f)));
-    return r;
+    return mix(radii.x, radii.y, s);
 }
 // ResultPhoton.power.w in the travel modes after the density pass's cull: below 0, the splat
 // cannot reach the view and is not drawn (0 or above: drawn at its travel radius).
