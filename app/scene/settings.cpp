@@ -26,8 +26,9 @@ const std::vector<SettingDesc>& table() {
         {"width", SettingType::Int, 512, 1, 16384, "px", "image width", {}},
         {"height", SettingType::Int, 512, 1, 16384, "px", "image height", {}},
         {"tonemap", SettingType::Enum, 0, 0, 2, "",
-         "tone-map operator: thesis (luminance clamped at luminance_max), filmic (ACES fit), "
-         "linear (exposure only, clipped)",
+         "tone-map operator, after the 2^exposure scale: thesis (luminance clamped at "
+         "luminance_max keeping the hue, then divided by it), filmic (ACES fit, luminance_max at "
+         "97% of white), linear (each channel divided by luminance_max and clipped at 1)",
          toChoices(kToneMapChoices)},
         {"exposure",
          SettingType::Float,
@@ -43,8 +44,8 @@ const std::vector<SettingDesc>& table() {
          1e-6,
          1e9,
          "W/(m^2 sr)",
-         "luminance mapped to white by the thesis operator; derived from the image (99th "
-         "percentile of luminance) when not set",
+         "luminance mapped to white (thesis and linear; filmic maps it to 97% of white); "
+         "derived from the image (99th percentile of luminance) when not set",
          {},
          true},
         {"gamma",
