@@ -70,6 +70,7 @@ class WindowContext final : public Context {
     explicit WindowContext(const WindowOptions& options);
     ~WindowContext() override;
     GLFWwindow* getWindow() const { return mWindow; }
+    void setTitle(const std::string& title);
 
   private:
     void bindCurrent() override;

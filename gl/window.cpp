@@ -34,6 +34,10 @@ WindowContext::~WindowContext() {
     glfwTerminate();
 }
 
+void WindowContext::setTitle(const std::string& title) {
+    glfwSetWindowTitle(mWindow, title.c_str());
+}
+
 void WindowContext::bindCurrent() {
     glfwMakeContextCurrent(mWindow);
 }

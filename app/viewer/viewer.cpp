@@ -37,12 +37,16 @@ constexpr float kMaxFrameSeconds = 0.1f;            // a stall must not fling th
 // second at interactive rates, instead of a GPU wait every frame.
 constexpr uint64_t kStatsReadbackFrames = 8;
 
+std::string makeWindowTitle(const Scene& scene) {
+    return strCat("ispm view ", scene.sourcePath);
+}
+
 gl::WindowOptions makeWindowOptions(const Scene& scene, const ViewerOptions& options) {
     gl::WindowOptions w;
     const FrameSettings settings = resolveFrameSettings(scene.settings);
     w.width = settings.width + kPanelWidthPx;
     w.height = settings.height;
-    w.title = strCat("ispm view ", scene.sourcePath);
+    w.title = makeWindowTitle(scene);
     w.visible = options.visible;
     return w;
 }
@@ -62,15 +66,7 @@ Viewer::Viewer(Scene scene, const ViewerOptions& options)
       mFly(mScene.camera, glm::length(mScene.computeWorldBounds().getExtent())),
       mScript(options.script) {
     if (!options.referencePath.empty()) mReference.load(options.referencePath);
-    const std::filesystem::path folder =
-        std::filesystem::path(mScene.sourcePath).parent_path().empty()
-            ? std::filesystem::path(".")
-            : std::filesystem::path(mScene.sourcePath).parent_path();
-    std::error_code error;
-    for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
-        if (entry.path().extension() == ".json") mScenePaths.push_back(entry.path().string());
-    }
-    std::sort(mScenePaths.begin(), mScenePaths.end());
+    mScenePaths = listScenesBeside(mScene.sourcePath);
     mLastTime = glfwGetTime();
     glfwGetCursorPos(mWindow, &mLastCursor.x, &mLastCursor.y);
 }
@@ -179,6 +175,7 @@ void Viewer::switchScene(const std::string& path) {
     mReference.restart(); // its path tracer holds a reference to mScene too
     mRunner.reset();      // holds a reference to mScene
     mScene = std::move(next);
+    mContext.setTitle(makeWindowTitle(mScene));
     mRunner = std::make_unique<FrameRunner>(mScene, mScene.settings, mTiming);
     mFly = FlyCamera(mScene.camera, glm::length(mScene.computeWorldBounds().getExtent()));
     mLightEdit = LightEdit::None;

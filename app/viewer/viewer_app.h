@@ -32,6 +32,9 @@ inline constexpr int kPanelWidthPx = 380;    // the panel column right of the sc
 inline constexpr size_t kPathCapacity = 512; // the panel's save-path field
 inline constexpr std::array<const char*, 4> kPointsNames = {"none", "bounce", "result", "both"};
 
+// The scene files (.json) in the folder of `scenePath`, sorted: the scene picker's list.
+std::vector<std::string> listScenesBeside(const std::string& scenePath);
+
 struct KeyAxis {
     int key;
     char name;

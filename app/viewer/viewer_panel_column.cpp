@@ -7,6 +7,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <filesystem>
 
 namespace ispm {
@@ -15,6 +16,18 @@ namespace {
 constexpr float kMaxExposureStops = 20.0f; // the debug view's exposure slider
 
 } // namespace
+
+std::vector<std::string> listScenesBeside(const std::string& scenePath) {
+    const std::filesystem::path parent = std::filesystem::path(scenePath).parent_path();
+    const std::filesystem::path folder = parent.empty() ? std::filesystem::path(".") : parent;
+    std::vector<std::string> paths;
+    std::error_code error; // an unreadable folder lists nothing
+    for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
+        if (entry.path().extension() == ".json") paths.push_back(entry.path().string());
+    }
+    std::sort(paths.begin(), paths.end());
+    return paths;
+}
 
 void Viewer::drawPanels() {
     const int renderWidth = mRunner->getWidth();
