@@ -36,6 +36,10 @@ float computeEvenRadius(double surfaceAreaM2, int photons, int neighbours) {
     return std::max(float(evenRadius), std::numeric_limits<float>::min());
 }
 
+float computeDensityRadiusMax(double surfaceAreaM2, int photons, int neighbours) {
+    return kMaxRadiusFactor * computeEvenRadius(surfaceAreaM2, photons, neighbours);
+}
+
 PhotonDensityPass::PhotonDensityPass(PhotonBuffers& buffers)
     : mBuffers(buffers),
       mProgram(ReloadableProgram(
@@ -84,7 +88,10 @@ void PhotonDensityPass::execute(const FrameInputs& inputs) {
     const float radiusMin = inputs.settings.radiusMinM.value_or(0.0f) * scale;
     const float even =
         computeEvenRadius(inputs.scene.getSurfaceArea(), inputs.settings.photons, neighbours);
-    const float radiusMax = inputs.settings.radiusMaxM.value_or(kMaxRadiusFactor * even) * scale;
+    const float radiusMax =
+        inputs.settings.radiusMaxM.value_or(computeDensityRadiusMax(
+            inputs.scene.getSurfaceArea(), inputs.settings.photons, neighbours)) *
+        scale;
     const float cell = kFinestCellFraction * even;
 
     gpu::DensityParams params{};

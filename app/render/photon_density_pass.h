@@ -15,6 +15,9 @@ namespace ispm {
 // the scene still find their level; radii stop at 4 times it (radius_max's derived value), so a
 // photon alone in a dark place splats wide but not across the scene.
 float computeEvenRadius(double surfaceAreaM2, int photons, int neighbours);
+// radius_max's derived value in radius_mode density (before radius_scale): 4 times the even
+// radius.
+float computeDensityRadiusMax(double surfaceAreaM2, int photons, int neighbours);
 
 class PhotonDensityPass final : public Pass {
   public:

@@ -90,7 +90,13 @@ Settings removeSetting(const Settings& settings, std::string_view name) {
     return result;
 }
 
-bool drawSettingsPanel(Settings& settings) {
+double computeUntickedValue(const SettingDesc& desc, std::optional<double> derived) {
+    const double value = derived.value_or(desc.defaultValue);
+    const double clamped = std::clamp(value, desc.minValue, desc.maxValue);
+    return desc.type == SettingType::Int ? std::round(clamped) : clamped;
+}
+
+bool drawSettingsPanel(Settings& settings, const DerivedValues& derived) {
     bool changed = false;
     for (const SettingDesc& d : getSettingTable()) {
         ImGui::PushID(d.name.data(), d.name.data() + d.name.size());
@@ -100,14 +106,20 @@ bool drawSettingsPanel(Settings& settings) {
         } else if (d.derived) {
             // Derived settings: "auto" leaves the value to the renderer (from the scene).
             bool isAuto = !settings.isSet(d.name);
+            const std::optional<double> value = derived(d.name);
             if (ImGui::Checkbox("auto", &isAuto)) {
                 settings = isAuto ? removeSetting(settings, d.name) : settings;
-                if (!isAuto) settings.set(d.name, std::max(d.defaultValue, d.minValue), kWhere);
+                if (!isAuto) settings.set(d.name, computeUntickedValue(d, value), kWhere);
                 changed = true;
             }
             ImGui::SameLine();
             if (isAuto) {
-                ImGui::TextDisabled("%s (derived)", std::string(d.name).c_str());
+                if (value) {
+                    ImGui::TextDisabled("%s = %.4g %s (derived)", std::string(d.name).c_str(),
+                                        *value, std::string(d.unit).c_str());
+                } else {
+                    ImGui::TextDisabled("%s (derived)", std::string(d.name).c_str());
+                }
                 showHelp(d);
             } else {
                 changed |= drawValue(d, settings);

@@ -5,6 +5,8 @@
 
 #include "scene/settings.h"
 
+#include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -13,8 +15,16 @@ namespace ispm {
 // Settings the panel shows but does not edit: the window size decides them.
 bool isWindowSetting(std::string_view name);
 
-// Draws the widgets; returns true when `settings` changed.
-bool drawSettingsPanel(Settings& settings);
+// The value a derived setting takes now (what "auto" gives), when the caller knows it.
+using DerivedValues = std::function<std::optional<double>(std::string_view name)>;
+
+// Draws the widgets, each derived setting's current value beside its "auto"; returns true when
+// `settings` changed.
+bool drawSettingsPanel(Settings& settings, const DerivedValues& derived);
+
+// The value a derived setting starts from when "auto" is unticked: the derived value it had,
+// within the setting's range; the table default when it is not known.
+double computeUntickedValue(const SettingDesc& desc, std::optional<double> derived);
 
 // `settings` without an override of `name` (the table default, or derived, applies again).
 Settings removeSetting(const Settings& settings, std::string_view name);

@@ -23,6 +23,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,10 @@ inline constexpr std::array<const char*, 4> kPointsNames = {"none", "bounce", "r
 
 // The scene files (.json) in the folder of `scenePath`, sorted: the scene picker's list.
 std::vector<std::string> listScenesBeside(const std::string& scenePath);
+// What "auto" gives a derived setting now (the runner's resolved settings and scene, the white
+// point read back); nullopt where the mode does not use it.
+std::optional<double> findDerivedValue(const FrameRunner& runner, float luminanceMax,
+                                       std::string_view name);
 
 struct KeyAxis {
     int key;

@@ -3,6 +3,9 @@
 #include "viewer/viewer_app.h"
 
 #include "core/strings.h"
+#include "render/gpu_scene.h"
+#include "render/photon_density_pass.h"
+#include "render/splat_pass.h"
 #include "scene/scene_loader.h"
 
 #include <imgui.h>
@@ -16,6 +19,31 @@ namespace {
 constexpr float kMaxExposureStops = 20.0f; // the debug view's exposure slider
 
 } // namespace
+
+std::optional<double> findDerivedValue(const FrameRunner& runner, float luminanceMax,
+                                       std::string_view name) {
+    const FrameSettings& s = runner.getFrameSettings();
+    const GpuScene& scene = runner.getGpuScene();
+    if (name == "splat_neighbours") return s.splatNeighbours;
+    if (name == "denoise") return s.denoiseIterations;
+    if (name == "luminance_max") {
+        if (luminanceMax > 0.0f) return luminanceMax; // read back from the GPU every few frames
+        return std::nullopt;
+    }
+    if (s.radiusMode == gpu::kRadiusDensity) {
+        // radius_min is only a floor when set; dist_min and dist_max are not used.
+        if (name == "radius_max")
+            return computeDensityRadiusMax(scene.getSurfaceArea(), s.photons, s.splatNeighbours);
+        return std::nullopt;
+    }
+    const SplatRadii r = computeSplatRadii(scene.getSurfaceArea(),
+                                           glm::length(scene.getBounds().getExtent()), s, 1.0f);
+    if (name == "radius_min") return r.radiusMinM;
+    if (name == "radius_max") return r.radiusMaxM;
+    if (name == "dist_min") return r.distMinM;
+    if (name == "dist_max") return r.distMaxM;
+    return std::nullopt;
+}
 
 std::vector<std::string> listScenesBeside(const std::string& scenePath) {
     const std::filesystem::path parent = std::filesystem::path(scenePath).parent_path();
@@ -85,7 +113,10 @@ void Viewer::drawPanels() {
     }
     if (ImGui::CollapsingHeader("Settings", ImGuiTreeNodeFlags_DefaultOpen)) {
         Settings edited = mRunner->getSettings();
-        if (drawSettingsPanel(edited)) applySettings(edited);
+        const auto derived = [&](std::string_view name) {
+            return findDerivedValue(*mRunner, mLuminanceMax, name);
+        };
+        if (drawSettingsPanel(edited, derived)) applySettings(edited);
         ImGui::InputText("##savepath", mSavePath.data(), mSavePath.size());
         ImGui::SameLine();
         if (ImGui::Button("save")) {
