@@ -47,7 +47,7 @@ PhotonDensityPass::PhotonDensityPass(PhotonBuffers& buffers)
            .stages = {{gl::ShaderStage::Compute, "photon/photon_density.comp"}}})),
       mParams("photon density parameters", sizeof(gpu::DensityParams)) {}
 
-void PhotonDensityPass::cullTravelPhotons(const FrameInputs& inputs) {
+void PhotonDensityPass::setTravelRadii(const FrameInputs& inputs) {
     const SplatRadii r = computeSplatRadii(inputs.scene.getSurfaceArea(),
                                            glm::length(inputs.scene.getBounds().getExtent()),
                                            inputs.settings, inputs.getRadiusScale());
@@ -55,22 +55,20 @@ void PhotonDensityPass::cullTravelPhotons(const FrameInputs& inputs) {
     params.control = glm::uvec4(gpu::kDensityStageTravelCull, 0, 0, inputs.settings.radiusMode);
     params.travel = glm::vec4(r.radiusMinM, r.radiusMaxM, r.distMinM, r.distMaxM);
     mParams.upload(0, sizeof(params), &params);
-    // The shader's table is not read in this stage, but every block it declares gets a buffer.
-    if (mCells.getSize() == 0) mCells = gl::Buffer("photon density cells", sizeof(glm::uvec4));
+    // This stage reads neither the table nor the scene and writes no clip lines.
     mBuffers.bind();
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
     mParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
-    mCells.bindBase(gl::BufferTarget::Storage, gpu::kBindingDensityCells);
     mProgram.use();
     gl::dispatchComputeIndirect(mBuffers.getCounters(),
                                 offsetof(gpu::PhotonCounters, densityDispatch));
-    // The splat's vertex stage reads the marks.
+    // The splat's vertex stage reads the radii.
     gl::memoryBarrier(gl::Barrier::Storage);
 }
 
 void PhotonDensityPass::execute(const FrameInputs& inputs) {
     if (inputs.settings.radiusMode != gpu::kRadiusDensity) {
-        cullTravelPhotons(inputs);
+        setTravelRadii(inputs);
         return;
     }
     const uint32_t slots =

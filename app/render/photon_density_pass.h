@@ -2,7 +2,7 @@
 // the disc that holds about `splat_neighbours` photons around it, estimated on the GPU from the
 // result photons themselves (hashed grids of cells at several sizes, photon_density.comp). Dense
 // places splat small and sharp, sparse ones large enough that discs still overlap. In the travel
-// modes it only culls: photons whose splat cannot reach the view are marked and not drawn.
+// modes it sets the travel radius instead, so the splat reads every mode's radius from one place.
 #pragma once
 
 #include "render/pass.h"
@@ -30,9 +30,9 @@ class PhotonDensityPass final : public Pass {
     size_t getGpuBytes() const { return mCells.getSize() + mClip.getSize(); }
 
   private:
-    // Travel modes: marks the photons whose travel-radius splat cannot reach the view
-    // (gpu::kCulledPhoton) and counts the others in view.
-    void cullTravelPhotons(const FrameInputs& inputs);
+    // Travel modes: each photon's travel (or path-density) radius, 0 where its disc cannot
+    // reach the view; the others count in view.
+    void setTravelRadii(const FrameInputs& inputs);
 
     PhotonBuffers& mBuffers;
     ReloadableProgram mProgram;

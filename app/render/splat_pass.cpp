@@ -27,11 +27,11 @@ namespace {
 constexpr std::array<uint32_t, gpu::kSplatCubeVertices> kCubeIndices = {
     0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4,
     2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5};
-// The disc's square (2 triangles over its 4 corners), then degenerate triangles up to the cube's
-// index count: the draw commands (photon_prepare.comp) serve both shapes, and a zero-area
-// triangle ends in the rasteriser's setup.
+// The disc's square (2 triangles over the cube's corners 0-3, its bottom face), then degenerate
+// triangles up to the cube's index count: the draw commands (photon_prepare.comp) serve both
+// shapes, and a zero-area triangle ends in the rasteriser's setup.
 constexpr std::array<uint32_t, gpu::kSplatCubeVertices> kDiscIndices = {
-    0, 1, 2, 0, 2, 3, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0,
+    0, 1, 3, 0, 3, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0,
     0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
 
 // How many discs cover a point on average with the derived base radius: enough overlap that
@@ -112,13 +112,9 @@ void SplatPass::execute(const FrameInputs& inputs) {
     mClip.bindBase(gl::BufferTarget::Storage, gpu::kBindingSplatClip);
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
     mViewer.bindTextures(gpu::kUnitGBufferFirst);
-    const SplatRadii r = computeSplatRadii(inputs.scene.getSurfaceArea(),
-                                           glm::length(inputs.scene.getBounds().getExtent()),
-                                           inputs.settings, inputs.getRadiusScale());
     const auto passes = static_cast<uint32_t>(inputs.settings.splatPasses);
     std::vector<gpu::SplatParams> params(passes);
     for (uint32_t p = 0; p < passes; ++p) {
-        params[p].radius = glm::vec4(r.radiusMinM, r.radiusMaxM, r.distMinM, r.distMaxM);
         params[p].control =
             glm::uvec4(inputs.settings.radiusMode, inputs.settings.splatShape, p, passes);
         params[p].shape =

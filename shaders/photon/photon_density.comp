@@ -10,8 +10,8 @@
 // floor, another light) spreads sqrt(k) times wider instead of making a bright spot. Times
 // radius_scale, clamped.
 //
-// In the travel modes (radius from travel distance) only stage 2 runs: it culls, by the travel
-// radius, the photons whose splat cannot reach the view, and counts the others.
+// In the travel modes only stage 2 runs: it gives each photon its travel (or path-density) radius,
+// 0 where that disc cannot reach the view, and counts the others in view.
 //
 // Stage 1 also culls photons whose disc lies outside the view frustum (radius 0: the splat skips
 // them) and finds the lines where surfaces cut each disc (shared/splat_clip.h): the in-plane
@@ -311,24 +311,24 @@ void clipDisc(uint index, vec3 p, vec3 n, float radius) {
     writeClip(index, poles, radius);
 }
 
-// Travel modes: a photon whose travel radius cannot reach the view is marked for the splat to
-// skip; the others count as in view.
-void cullTravelPhoton(uint index) {
+// Travel modes: the photon's radius from its travel or path (computeTravelRadius), 0 (not drawn)
+// when its disc cannot reach the view; the others count as in view.
+void setTravelRadius(uint index) {
     float radius = computeTravelRadius(photons[index].positionDistance.w, photons[index].normalDensity.w,
                                        params.travel, params.control.w);
     if (isOutsideView(photons[index].positionDistance.xyz, radius)) {
-        photons[index].power.w = kCulledPhoton;
+        photons[index].power.w = 0.0;
         return;
     }
     countPhoton(unpackLight(photons[index].incoming.w), 2);
-    photons[index].power.w = 0.0;
+    photons[index].power.w = radius;
 }
 
 void main() {
     uint index = gl_GlobalInvocationID.x;
     if (index >= counters.splatDraw.y) return;
     if (params.control.x == kDensityStageTravelCull) {
-        cullTravelPhoton(index);
+        setTravelRadius(index);
         return;
     }
     vec3 p = photons[index].positionDistance.xyz;

@@ -23,8 +23,8 @@ struct ResultPhoton {
     vec4 normalDensity;    // xyz unit normal on the side the photon arrived from; w = path density
     vec4 incoming;         // xyz unit direction of travel; w = uint bits: reflections before
                            // this hit (low 8 bits) | the light's index << 8
-    vec4 power;            // rgb incoming power (W); w = splat radius (m) from the local photon
-                           // density (photon_density.comp), 0 before that pass
+    vec4 power;            // rgb incoming power (W); w = splat radius (m), set by the density
+                           // pass in every radius mode (0: not drawn; 0 before that pass)
 };
 ISPM_STATIC_ASSERT_SIZE(ResultPhoton, 64);
 
@@ -85,9 +85,6 @@ ISPM_INLINE float computeTravelRadius(float travelledM, float pathDensity, vec4 
     float s = clamp((travelledM - radii.z) / max(radii.w - radii.z, 1e-9f), 0.0f, 1.0f);
     return mix(radii.x, radii.y, s);
 }
-// ResultPhoton.power.w in the travel modes after the density pass's cull: below 0, the splat
-// cannot reach the view and is not drawn (0 or above: drawn at its travel radius).
-ISPM_CONST float kCulledPhoton = -1.0f;
 
 // Local photon density: result photons are counted in hashed grids of cubic cells, one grid per
 // level, each level's cells twice the size of the one below.
@@ -128,14 +125,12 @@ ISPM_STATIC_ASSERT_SIZE(EmitParams, 32);
 // Parameters of the splat pass, splat.vert and splat.frag (std140, at kBindingPassParams); one
 // block per splat_passes draw, bound by range.
 struct SplatParams {
-    vec4 radius;   // travel modes: x = radius_min, y = radius_max (m, times radius_scale),
-                   // z = dist_min, w = dist_max (m)
     uvec4 control; // x = radius mode (kRadius*), y = shape (kSplatShape*), z = this draw,
                    // w = draw count
     vec4 shape;    // x = squash (thickness along the normal / radius), y = image pixels per
                    // splat-buffer pixel along an axis, zw unused
 };
-ISPM_STATIC_ASSERT_SIZE(SplatParams, 48);
+ISPM_STATIC_ASSERT_SIZE(SplatParams, 32);
 
 // photon_density.comp's stages: count photons into the grid, then radii and clip lines; in the
 // travel modes only the cull (travel radii against the view frustum, in-view counts).
@@ -151,7 +146,7 @@ struct DensityParams {
     uvec4 control; // x = stage (kDensityStage*), y = table slots - 1 (a power of two),
                    // z = 1: measure a photon against its neighbours only, w = radius mode
     vec4 travel;   // travel modes: radius_min, radius_max (m, times radius_scale), dist_min,
-                   // dist_max (m), as SplatParams.radius
+                   // dist_max (m)
 };
 ISPM_STATIC_ASSERT_SIZE(DensityParams, 64);
 

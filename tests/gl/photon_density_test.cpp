@@ -279,10 +279,11 @@ TEST_F(PhotonDensityTest, WallClipsDiscsAndViewCullsPhotons) {
     EXPECT_EQ(run.photons.back().power.w, 0.0f) << "a photon outside the view is culled";
 }
 
-TEST_F(PhotonDensityTest, TravelRadiiAreCulledByTheirReachIntoTheView) {
+TEST_F(PhotonDensityTest, TravelRadiiAreSetAndCulledByTheirReachIntoTheView) {
     // The camera 6 m above the floor sees x + y <= 6 (90 degrees): a floor photon at x = 7 lies
-    // 1 / sqrt(2) = 0.71 m outside that side plane. With travel radii the pass only culls: a
-    // 1 m disc reaches into the view and stays, a 0.5 m one does not, and one behind is culled.
+    // 1 / sqrt(2) = 0.71 m outside that side plane. With travel radii (radius_min = radius_max
+    // here) the pass gives each photon that radius: a 1 m disc reaches into the view and keeps
+    // it, a 0.5 m one does not and gets 0 (not drawn), as does one behind the camera.
     const Scene scene = makeFloorScene();
     std::vector<gpu::ResultPhoton> photons;
     addSquare(photons, -0.5f, -0.5f, 1.0f, 2, 6u); // in view
@@ -296,12 +297,12 @@ TEST_F(PhotonDensityTest, TravelRadiiAreCulledByTheirReachIntoTheView) {
     const DensityRun wide = runDensity(scene, photons, {}, 1.0f);
     const DensityRun narrow = runDensity(scene, photons, {}, 0.5f);
     for (size_t i = 0; i + 2 < count; ++i) {
-        EXPECT_EQ(wide.photons[i].power.w, 0.0f) << "photon " << i << " is in view";
-        EXPECT_EQ(narrow.photons[i].power.w, 0.0f) << "photon " << i << " is in view";
+        EXPECT_EQ(wide.photons[i].power.w, 1.0f) << "photon " << i << " is in view";
+        EXPECT_EQ(narrow.photons[i].power.w, 0.5f) << "photon " << i << " is in view";
     }
-    EXPECT_EQ(wide.photons[count - 2].power.w, 0.0f) << "a 1 m disc reaches the view";
-    EXPECT_EQ(narrow.photons[count - 2].power.w, gpu::kCulledPhoton) << "a 0.5 m disc does not";
-    EXPECT_EQ(wide.photons[count - 1].power.w, gpu::kCulledPhoton) << "behind the camera";
+    EXPECT_EQ(wide.photons[count - 2].power.w, 1.0f) << "a 1 m disc reaches the view";
+    EXPECT_EQ(narrow.photons[count - 2].power.w, 0.0f) << "a 0.5 m disc does not";
+    EXPECT_EQ(wide.photons[count - 1].power.w, 0.0f) << "behind the camera";
 }
 
 TEST_F(PhotonDensityTest, SurfaceEndClipsDiscsLikeAWall) {

@@ -136,7 +136,9 @@ TEST_P(SplatShapeEnergyTest, OneSplatOnAPlaneIntegratesToBrdfTimesPower) {
     photon.positionDistance = glm::vec4(0.1f, 0.0f, -0.05f, 1.0f);
     photon.normalDensity = glm::vec4(0.0f, 1.0f, 0.0f, 1.0f);
     photon.incoming = glm::vec4(0.0f, -1.0f, 0.0f, 1.0f);
-    photon.power = glm::vec4(1.0f, 2.0f, 0.5f, 0.0f);
+    // w: the radius the density pass gives every photon in the travel modes (radius_min =
+    // radius_max), here without that pass.
+    photon.power = glm::vec4(1.0f, 2.0f, 0.5f, kRadiusM);
     buffers.getResult().upload(0, sizeof(photon), &photon);
     gpu::PhotonCounters counters{};
     counters.result = glm::uvec4(1, 1, 0, 1);
