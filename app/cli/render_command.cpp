@@ -8,6 +8,7 @@
 #include "gl/debug.h"
 #include "image/image_io.h"
 #include "render/frame.h"
+#include "render/photon_points.h"
 #include "render/readback.h"
 #include "render/reference_pass.h"
 #include "scene/frame_settings.h"
@@ -18,6 +19,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include <unistd.h>
 
@@ -34,7 +36,9 @@ void addRenderCommand(CLI::App& app, RenderOptions& options) {
     cmd->add_option("--height", options.height, "image height in pixels (setting `height`)");
     cmd->add_option("--set", options.sets, "override a setting: name=value (repeatable)");
     cmd->add_option("--aov", options.aov,
-                    "linear output for .pfm/.exr: direct, indirect or total (default total)");
+                    "linear output for .pfm/.exr: direct, indirect or total (default total); or a "
+                    "photon-buffer image for .png: bounce_direction, bounce_power, "
+                    "result_direction or result_power (photons as points over the dimmed frame)");
     cmd->add_flag("-q,--quiet", options.quiet, "print only errors");
     cmd->add_option("--mode", options.mode,
                     "ispm (image-space photon mapping, default) or reference (path tracer)");
@@ -99,12 +103,20 @@ int runRender(const RenderOptions& options) {
     const auto start = std::chrono::steady_clock::now();
     const OutputKind kind = classifyOutput(options.outputPath, "--output");
     checkWritableOutput(options.outputPath, "--output");
-    const Aov aov = parseAov(options.aov, "--aov");
+    const std::optional<PhotonAov> photonAov = findPhotonAov(options.aov);
+    const Aov aov = photonAov ? Aov::Display : parseAov(options.aov, "--aov");
     if (options.mode != "ispm" && options.mode != "reference") {
         throw InputError(strCat("--mode: expected ispm or reference, got '", options.mode, "'"));
     }
     const bool isReference = options.mode == "reference";
-    if (kind == OutputKind::Png && aov != Aov::Total) {
+    if (photonAov && kind != OutputKind::Png) {
+        throw InputError(strCat("--aov: the photon-buffer image '", options.aov,
+                                "' is a display image: write .png"));
+    }
+    if (photonAov && options.mode != "ispm") {
+        throw InputError("--aov: photon-buffer images need --mode ispm");
+    }
+    if (kind == OutputKind::Png && aov != Aov::Total && !photonAov) {
         throw InputError(
             strCat("--aov: a PNG holds the tone-mapped total; write .pfm or .exr for '",
                    options.aov, "'"));
@@ -133,6 +145,11 @@ int runRender(const RenderOptions& options) {
     const gl::TimingMethod timing =
         context->getInfo().isSoftware ? gl::TimingMethod::CpuFinish : gl::TimingMethod::TimerQuery;
     FrameRunner runner(scene, settings, timing);
+    if (photonAov && !runner.hasIndirect()) {
+        throw InputError(strCat("--aov: '", options.aov,
+                                "' draws photons, and this frame has none (bounces and photons "
+                                "must be > 0)"));
+    }
     warnIfLightFades(runner);
     // The first frame compiles shaders in the driver and touches every resource once; time the
     // second, which is what every later frame costs. Accumulating, every frame counts: the image
@@ -143,7 +160,8 @@ int runRender(const RenderOptions& options) {
         runner.renderFrame();
     runner.waitForTimings(); // one frame to report: the frame is over, waiting costs nothing
     const Image image =
-        readTextureImage(runner.getAov(kind == OutputKind::Png ? Aov::Display : aov));
+        photonAov ? PhotonPointsDrawer().renderAov(runner, *photonAov)
+                  : readTextureImage(runner.getAov(kind == OutputKind::Png ? Aov::Display : aov));
     writeImage(options.outputPath, image);
     if (!options.quiet) {
         const double totalMs =
@@ -151,7 +169,9 @@ int runRender(const RenderOptions& options) {
                 .count();
         std::printf("wrote %s (%dx%d, %s)\n", options.outputPath.c_str(), runner.getWidth(),
                     runner.getHeight(),
-                    kind == OutputKind::Png ? "tone mapped" : options.aov.c_str());
+                    photonAov                 ? options.aov.c_str()
+                    : kind == OutputKind::Png ? "tone mapped"
+                                              : options.aov.c_str());
         if (accumulate > 0) {
             std::printf("indirect light: %u frames accumulated (seeds %u to %u)\n",
                         runner.getAccumulatedFrames(), runner.getFrameSettings().seed,

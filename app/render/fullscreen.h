@@ -15,6 +15,7 @@ class ColorTarget {
     ColorTarget(std::string label, gl::Format format) : mLabel(std::move(label)), mFormat(format) {}
     void resize(int width, int height);
     void bind() const { mFramebuffer.bind(); } // with the viewport
+    void clear(const glm::vec4& colour) const { mFramebuffer.clearColor(0, colour); }
     const gl::Texture& getTexture() const { return mTexture; }
 
   private:

@@ -70,6 +70,12 @@ ScriptCommand parseLine(const std::string& command, std::istringstream& in,
             throw InputError(
                 strCat(where, ": expected none, bounce, result or both, got '", c.text, "'"));
         }
+        c.option = "kind";
+        if (in >> c.option && c.option != "kind" && c.option != "direction" &&
+            c.option != "power") {
+            throw InputError(strCat(
+                where, ": expected the colouring kind, direction or power, got '", c.option, "'"));
+        }
     } else if (command == "reset_camera") {
         c.kind = Kind::ResetCamera;
     } else if (command == "reload_shaders") {

@@ -6,7 +6,8 @@
 //   set NAME=VALUE       change a setting as the settings panel does
 //   view NAME            choose the debug view (as in the view menu: display, total,
 //                        gbuffer normal, reference, side by side, error heat map ...)
-//   points P             photon points: none, bounce, result or both
+//   points P [C]         photon points: none, bounce, result or both, coloured by C: kind
+//                        (default), direction or power (render/photon_points.h)
 //   reset_camera         back to the scene camera
 //   reload_shaders       what F5 does: rebuild the programs whose shader files changed
 //   wait_file F          stop until file F exists (another process, e.g. a test, edits shaders
@@ -47,12 +48,13 @@ struct ScriptCommand {
         Frames
     };
     Kind kind = Kind::Frames;
-    std::string text;  // key, setting assignment, view, points choice, AOV name, on/off
-    std::string path;  // write_aov, screenshot, save_settings, load_reference, wait_file
-    float x = 0.0f;    // drag dx, wheel steps
-    float y = 0.0f;    // drag dy
-    int frames = 0;    // frames the command lasts; 0 for instantaneous commands
-    std::string where; // "file:line" for messages
+    std::string text;   // key, setting assignment, view, points choice, AOV name, on/off
+    std::string path;   // write_aov, screenshot, save_settings, load_reference, wait_file
+    std::string option; // points: the colouring
+    float x = 0.0f;     // drag dx, wheel steps
+    float y = 0.0f;     // drag dy
+    int frames = 0;     // frames the command lasts; 0 for instantaneous commands
+    std::string where;  // "file:line" for messages
 };
 
 // Throws InputError naming file and line for an unknown command or a malformed argument.

@@ -12,12 +12,12 @@
 #include "gl/state.h"
 #include "gl/timer.h"
 #include "render/frame.h"
+#include "render/photon_points.h"
 #include "scene/scene_loader.h"
 #include "viewer/animation_panel.h"
 #include "viewer/debug_view.h"
 #include "viewer/fly_camera.h"
 #include "viewer/imgui_layer.h"
-#include "viewer/photon_points.h"
 #include "viewer/reference_view.h"
 #include "viewer/screenshot.h"
 
@@ -196,7 +196,8 @@ void Viewer::drawFrame() {
     // Points are placed with the viewer camera: not over a light camera's image.
     const DebugView::Source source = mViews[static_cast<size_t>(mViewIndex)].source;
     if (source != DebugView::Source::LightGBuffer && source != DebugView::Source::LightImportance) {
-        mPointsDrawer.draw(*mRunner, mPoints, mRunner->getWidth(), mRunner->getHeight());
+        gl::bindDefaultFramebuffer(mRunner->getWidth(), mRunner->getHeight());
+        mPointsDrawer.draw(*mRunner, mPoints, mPointsColour);
     }
     gl::bindDefaultFramebuffer(mWindowWidth, mWindowHeight);
     mImGui.beginFrame();

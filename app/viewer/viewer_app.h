@@ -7,13 +7,13 @@
 #include "gl/gl.h" // before GLFW: glad's header must come first
 #include "gl/timer.h"
 #include "render/frame.h"
+#include "render/photon_points.h"
 #include "scene/scene.h"
 #include "viewer/animation_panel.h"
 #include "viewer/debug_view.h"
 #include "viewer/fly_camera.h"
 #include "viewer/imgui_layer.h"
 #include "viewer/input_script.h"
-#include "viewer/photon_points.h"
 #include "viewer/reference_view.h"
 #include "viewer/settings_panel.h"
 #include "viewer/viewer.h"
@@ -31,7 +31,6 @@ namespace ispm {
 
 inline constexpr int kPanelWidthPx = 380;    // the panel column right of the scene region
 inline constexpr size_t kPathCapacity = 512; // the panel's save-path field
-inline constexpr std::array<const char*, 4> kPointsNames = {"none", "bounce", "result", "both"};
 
 // The scene files (.json) in the folder of `scenePath`, sorted: the scene picker's list.
 std::vector<std::string> listScenesBeside(const std::string& scenePath);
@@ -73,6 +72,7 @@ class Viewer {
     void drawPanels();
     void takeScreenshot(const std::string& path);
     void drawScenePicker();
+    void drawPointColourLegend() const; // what the photon points' colours mean
     void switchScene(const std::string& path);
     void reloadShaders();
     void waitForFile(const ScriptCommand& c);
@@ -88,6 +88,7 @@ class Viewer {
     DebugViewDrawer mDrawer;
     PhotonPointsDrawer mPointsDrawer;
     PhotonPoints mPoints = PhotonPoints::None;
+    PhotonColour mPointsColour = PhotonColour::Kind;
     ReferenceView mReference;
     bool mReloadRequested = false; // F5
     std::string mShaderStatus;     // the last reload's result (its errors stay until fixed)

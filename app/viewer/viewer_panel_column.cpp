@@ -79,9 +79,17 @@ void Viewer::drawPanels() {
         ImGui::SliderFloat("view stops", &mTransform.exposureStops, -kMaxExposureStops,
                            kMaxExposureStops);
         int points = static_cast<int>(mPoints);
-        if (ImGui::Combo("photon points", &points, kPointsNames.data(),
-                         static_cast<int>(kPointsNames.size()))) {
+        if (ImGui::Combo("photon points", &points, kPhotonPointsNames.data(),
+                         static_cast<int>(kPhotonPointsNames.size()))) {
             mPoints = static_cast<PhotonPoints>(points);
+        }
+        if (mPoints != PhotonPoints::None) {
+            int colour = static_cast<int>(mPointsColour);
+            if (ImGui::Combo("point colour", &colour, kPhotonColourNames.data(),
+                             static_cast<int>(kPhotonColourNames.size()))) {
+                mPointsColour = static_cast<PhotonColour>(colour);
+            }
+            drawPointColourLegend();
         }
         if (current.source == DebugView::Source::LightGBuffer ||
             current.source == DebugView::Source::LightImportance) {
@@ -156,6 +164,29 @@ void Viewer::drawScenePicker() {
     ImGui::EndCombo();
     // Switched at the start of the next frame: this frame's panels still read the old runner.
     if (!picked.empty()) mPendingScenePath = picked;
+}
+
+void Viewer::drawPointColourLegend() const {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    switch (mPointsColour) {
+    case PhotonColour::Kind:
+        ImGui::TextWrapped("yellow: bounce photons (after the first bounce); cyan: result photons "
+                           "(stored hits); each half its own power's hue");
+        break;
+    case PhotonColour::Direction:
+        ImGui::TextWrapped("R, G, B = x, y, z of the direction, [-1, 1] -> [0, 1]: bounce photons "
+                           "leaving the surface, result photons arriving");
+        break;
+    case PhotonColour::Power: {
+        const double scale = computePhotonPowerScale(*mRunner);
+        ImGui::TextWrapped("RGB power, gamma 2.2: white = %.3g W, %g x the mean a photon leaves "
+                           "its light with (%.3g W)",
+                           scale > 0.0 ? kPhotonPowerWhite / scale : 0.0, kPhotonPowerWhite,
+                           scale > 0.0 ? 1.0 / scale : 0.0);
+        break;
+    }
+    }
+    ImGui::PopStyleColor();
 }
 
 } // namespace ispm

@@ -56,8 +56,11 @@ void Viewer::runScriptCommand(const ScriptCommand& c, CameraInput& input,
         break;
     }
     case Kind::Points:
-        for (size_t i = 0; i < kPointsNames.size(); ++i) {
-            if (c.text == kPointsNames[i]) mPoints = static_cast<PhotonPoints>(i);
+        for (size_t i = 0; i < kPhotonPointsNames.size(); ++i) {
+            if (c.text == kPhotonPointsNames[i]) mPoints = static_cast<PhotonPoints>(i);
+        }
+        for (size_t i = 0; i < kPhotonColourNames.size(); ++i) {
+            if (c.option == kPhotonColourNames[i]) mPointsColour = static_cast<PhotonColour>(i);
         }
         break;
     case Kind::ResetCamera:

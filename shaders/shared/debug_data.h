@@ -1,5 +1,6 @@
-// The interface of shaders/debug/trace_rays.comp, shared by C++ and GLSL: closest-hit queries for
-// a batch of rays through the scene's BVH (tests against the CPU traversal, debug tools).
+// The interfaces of shaders/debug/, shared by C++ and GLSL: closest-hit queries for a batch of
+// rays through the scene's BVH (tests against the CPU traversal, debug tools) and the photon
+// buffers drawn as points (viewer, `render --aov bounce_direction ...`).
 #ifndef ISPM_DEBUG_DATA_H
 #define ISPM_DEBUG_DATA_H
 
@@ -27,6 +28,17 @@ struct TraceRaysParams {
     uvec4 control; // x = ray count (the last group runs past the end of the rays), yzw unused
 };
 ISPM_STATIC_ASSERT_SIZE(TraceRaysParams, 16);
+
+// debug/photon_points.vert: one kind of photon as points (render/photon_points.cpp).
+ISPM_CONST uint kPhotonColourKind = 0u;      // the kind's tint, half the photon's hue
+ISPM_CONST uint kPhotonColourDirection = 1u; // unit direction [-1, 1] -> RGB [0, 1]
+ISPM_CONST uint kPhotonColourPower = 2u;     // RGB power x display.x, then ^display.y
+struct PhotonPointsParams {
+    vec4 tint;     // rgb tint of this kind of photon, a = point size (px)
+    vec4 display;  // x = power scale (1/W: white at 1), y = 1/gamma of power colours, zw unused
+    uvec4 control; // x = colouring (kPhotonColour*)
+};
+ISPM_STATIC_ASSERT_SIZE(PhotonPointsParams, 48);
 
 ISPM_NAMESPACE_END
 

@@ -26,12 +26,6 @@ struct ReferenceViewParams {
 };
 ISPM_STATIC_ASSERT_SIZE(ReferenceViewParams, 48);
 
-// photon_points.vert: one kind of photon as points (photon_points.cpp).
-struct PhotonPointsParams {
-    vec4 tint; // rgb tint of this kind of photon, a = point size (px)
-};
-ISPM_STATIC_ASSERT_SIZE(PhotonPointsParams, 16);
-
 ISPM_NAMESPACE_END
 
 #endif

@@ -75,6 +75,35 @@ TEST_F(CliTest, RendersPngAndPfm) {
     EXPECT_EQ(readImage(pfm).width, 8);
 }
 
+TEST_F(CliTest, WritesPhotonBufferImages) {
+    // Each photon AOV is a PNG of points over the dimmed frame: brighter than the backdrop alone
+    // (30% of a frame whose display values reach 1), and refused where it cannot be written.
+    // A wall behind the floor: photons the floor reflects land on it (result photons).
+    std::string text = kGoodScene;
+    const std::string floor = "\"material\": \"grey\"}";
+    text.replace(text.find(floor), floor.size(),
+                 floor + ", {\"type\": \"box\", \"min\": [-1, 0, -1.1], \"max\": [1, 1, -1], "
+                         "\"material\": \"grey\"}");
+    const std::string scene = writeScene("wall.json", text);
+    for (const char* aov :
+         {"bounce_direction", "bounce_power", "result_direction", "result_power"}) {
+        const std::string png = (mDir / (std::string(aov) + ".png")).string();
+        const RunResult r =
+            run("render " + scene + " -o " + png + " --width 32 --height 24 -q --aov " + aov);
+        ASSERT_EQ(r.exitCode, 0) << aov << ": " << r.output;
+        const Image image = readImage(png);
+        float maxValue = 0.0f;
+        for (const glm::vec3& p : image.pixels)
+            maxValue = std::max({maxValue, p.x, p.y, p.z});
+        EXPECT_GT(maxValue, 0.4f) << aov << ": no point is brighter than the dimmed backdrop";
+    }
+    expectBadInput("render " + scene + " -o x.pfm --aov result_power", {"--aov", ".png"});
+    expectBadInput("render " + scene + " -o x.png --aov result_power --bounces 0",
+                   {"--aov", "photons"});
+    expectBadInput("render " + scene + " -o x.exr --aov bounce_direction --mode reference",
+                   {"--aov"});
+}
+
 TEST_F(CliTest, SplatsWiderThanTheSceneAreWarnedAbout) {
     // Travel radii 30 times their derived size are wider than this 2.8 m scene: the render
     // still runs (exit 0) but says why its indirect light fades. The default radii say nothing.

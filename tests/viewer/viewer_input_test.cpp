@@ -52,6 +52,11 @@ TEST(InputScript, ParsesReloadAndReferenceCommands) {
     EXPECT_EQ(commands[3].text, "on");
     EXPECT_EQ(commands[4].kind, Kind::ComputeMetrics);
     EXPECT_THROW(parseInputScript("render_reference maybe\n", "s.txt"), InputError);
+    const auto points = parseInputScript("points result\npoints bounce power\n", "s.txt");
+    ASSERT_EQ(points.size(), 2u);
+    EXPECT_EQ(points[0].option, "kind"); // the colouring defaults to the kind's tint
+    EXPECT_EQ(points[1].text, "bounce");
+    EXPECT_EQ(points[1].option, "power");
     // compute_metrics is an output: it ends its frame like write_aov.
     ScriptPlayer player(parseInputScript("compute_metrics\nreset_camera\n", "s.txt"));
     EXPECT_EQ(player.advanceFrame().size(), 1u);
@@ -59,8 +64,16 @@ TEST(InputScript, ParsesReloadAndReferenceCommands) {
 }
 
 TEST(InputScript, NamesFileAndLineOnErrors) {
-    const char* bad[] = {"jump 3",       "key X 3",    "key W",          "key W -1",
-                         "mouse_drag 1", "frames 2 3", "write_aov total"};
+    const char* bad[] = {"jump 3",
+                         "key X 3",
+                         "key W",
+                         "key W -1",
+                         "mouse_drag 1",
+                         "frames 2 3",
+                         "write_aov total",
+                         "points sideways",
+                         "points result sideways",
+                         "points result power 2"};
     for (const char* line : bad) {
         try {
             parseInputScript(std::string("frames 1\n") + line + "\n", "in.txt");

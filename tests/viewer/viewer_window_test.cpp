@@ -212,6 +212,10 @@ TEST_F(ViewerWindowTest, DebugViewsAndPhotonPointsChangeTheSceneRegion) {
                                            "screenshot " +
                                            path("points.png") +
                                            "\n"
+                                           "points result direction\n"
+                                           "screenshot " +
+                                           path("directions.png") +
+                                           "\n"
                                            "points none\n"
                                            "view gbuffer normal\n"
                                            "screenshot " +
@@ -221,7 +225,10 @@ TEST_F(ViewerWindowTest, DebugViewsAndPhotonPointsChangeTheSceneRegion) {
     const Image display = readImage(path("display.png"));
     // Points cover a good part of the box (20k+ result photons over 128 x 128 pixels) ...
     const double kMinPointsChanged = 0.1;
-    EXPECT_GT(computeChangedFraction(display, readImage(path("points.png"))), kMinPointsChanged);
+    const Image points = readImage(path("points.png"));
+    EXPECT_GT(computeChangedFraction(display, points), kMinPointsChanged);
+    // ... and coloured by direction they change colour (the same points, other colours).
+    EXPECT_GT(computeChangedFraction(points, readImage(path("directions.png"))), kMinPointsChanged);
     // ... and the normal view recolours nearly every pixel.
     const double kMinViewChanged = 0.5;
     EXPECT_GT(computeChangedFraction(display, readImage(path("normal.png"))), kMinViewChanged);

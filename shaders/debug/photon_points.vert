@@ -1,18 +1,20 @@
-// Photons as points over the viewer's debug view: bounce photons (where the first bounce left
-// them) or result photons (where they landed), tinted by the hue of their power.
+// Photons as points over the scene: bounce photons (where the first bounce left them) or result
+// photons (where they landed), coloured by kind, by direction or by power (PhotonPointsParams).
 #include "lib/frame_constants.glsl"
 #include "shared/photon_data.h"
 #include "shared/scene_data.h"
-#include "shared/viewer_data.h"
+#include "shared/debug_data.h"
 
 layout(std430, binding = kBindingPhotonCounters) readonly buffer Counters { PhotonCounters counters; };
 
 #ifdef RESULT_PHOTONS
 layout(std430, binding = kBindingResultPhotons) readonly buffer Photons { ResultPhoton photons[]; };
 uint getPhotonCount() { return min(counters.result.x, counters.result.y); }
+vec3 getDirection(uint i) { return photons[i].incoming.xyz; } // of travel, onto the surface
 #else
 uint getPhotonCount() { return counters.bounce.x; }
 layout(std430, binding = kBindingBouncePhotons) readonly buffer Photons { BouncePhoton photons[]; };
+vec3 getDirection(uint i) { return photons[i].directionDensity.xyz; } // leaving the surface
 #endif
 
 layout(std140, binding = kBindingPassParams) uniform PhotonPointsParamsBlock { PhotonPointsParams params; };
@@ -37,6 +39,12 @@ void main() {
     vPositionW = positionW;
     gl_Position = frame.clipFromWorld * vec4(positionW, 1.0);
     gl_PointSize = params.tint.a;
-    float peak = max(max(power.r, power.g), max(power.b, kTinyPower));
-    vColor = mix(power / peak, params.tint.rgb, kTintWeight);
+    if (params.control.x == kPhotonColourDirection) {
+        vColor = getDirection(uint(gl_VertexID)) * 0.5 + 0.5;
+    } else if (params.control.x == kPhotonColourPower) {
+        vColor = pow(clamp(power * params.display.x, 0.0, 1.0), vec3(params.display.y));
+    } else {
+        float peak = max(max(power.r, power.g), max(power.b, kTinyPower));
+        vColor = mix(power / peak, params.tint.rgb, kTintWeight);
+    }
 }
