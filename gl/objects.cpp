@@ -71,6 +71,14 @@ void Buffer::clearToZero() const {
     glClearNamedBufferData(getId(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
 }
 
+void Buffer::clearRangeToZero(size_t offsetBytes, size_t bytes) const {
+    assert(offsetBytes % 4 == 0 && bytes % 4 == 0 && offsetBytes + bytes <= mSize);
+    const GLuint zero = 0;
+    glClearNamedBufferSubData(getId(), GL_R32UI, static_cast<GLintptr>(offsetBytes),
+                              static_cast<GLsizeiptr>(bytes), GL_RED_INTEGER, GL_UNSIGNED_INT,
+                              &zero);
+}
+
 void Buffer::bindBase(BufferTarget target, GLuint index) const {
     glBindBufferBase(static_cast<GLenum>(target), index, getId());
 }

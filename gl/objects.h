@@ -57,6 +57,8 @@ class Buffer {
         return items;
     }
     void clearToZero() const;
+    // Zeroes bytes [offsetBytes, offsetBytes + bytes), both multiples of 4.
+    void clearRangeToZero(size_t offsetBytes, size_t bytes) const;
 
     void bindBase(BufferTarget target, GLuint index) const;
     void bindRange(BufferTarget target, GLuint index, size_t offsetBytes, size_t bytes) const;

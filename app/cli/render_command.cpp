@@ -16,6 +16,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -50,26 +52,39 @@ void addRenderCommand(CLI::App& app, RenderOptions& options) {
                     "render this many frames of the still scene, each with new photons, and write "
                     "their average (setting `accumulate`; 0 = one frame)");
     cmd->add_option("--time", options.timeS,
-                    "animation time in seconds, >= 0 (default 0): where animated objects and "
-                    "lights are (docs/scene-format.md, Animation)");
+                    "animation time in seconds, >= 0 (default 0): where animated objects, lights "
+                    "and the camera are (docs/scene-format.md, Animation); a sequence's start");
+    cmd->add_option("--frames", options.frames,
+                    "render a sequence of this many frames from --time on, one every 1/--fps s of "
+                    "animation time, to -o with a frame number (e.g. out_%04d.png); default 1");
+    cmd->add_option("--fps", options.fps,
+                    "frames per second of a sequence (default 30): its time step, which eye "
+                    "adaptation (setting eye_adaptation_s) follows");
     cmd->footer("ispm mode renders a warm-up frame first and prints the per-pass times of the "
-                "second. reference mode accumulates --spp jittered samples per pixel with a "
+                "second; a sequence renders each frame once (the renderer's history carries "
+                "over: accumulate reprojects, eye adaptation follows) with a progress bar on a "
+                "terminal. reference mode accumulates --spp jittered samples per pixel with a "
                 "progress bar on a terminal and writes linear .pfm/.exr only.");
 }
 
 namespace {
 
+// A sequence's frame rate: above this a frame's time step (1/fps) rounds animation times.
+constexpr double kMaxFps = 1e4;
+// Frame numbers are padded to at most this many digits (%0Nd).
+constexpr size_t kMaxFrameNumberWidth = 9;
+
 bool isTerminal() {
     return ::isatty(::fileno(stderr)) != 0;
 }
 
-void printProgress(int done, int total, double elapsedS) {
+void printProgress(int done, int total, const char* unit, double elapsedS) {
     constexpr int kBarWidth = 30;
     const int filled = total > 0 ? done * kBarWidth / total : kBarWidth;
     const double left = done > 0 ? elapsedS / done * (total - done) : 0.0;
-    std::fprintf(stderr, "\r[%s%s] %d/%d spp, %.1f s left  ",
+    std::fprintf(stderr, "\r[%s%s] %d/%d %s, %.1f s left  ",
                  std::string(size_t(filled), '#').c_str(),
-                 std::string(size_t(kBarWidth - filled), '.').c_str(), done, total, left);
+                 std::string(size_t(kBarWidth - filled), '.').c_str(), done, total, unit, left);
     if (done == total) std::fprintf(stderr, "\n");
 }
 
@@ -84,7 +99,7 @@ int runReference(const RenderOptions& options, const Scene& scene, const Setting
     };
     for (int s = 0; s < options.spp; ++s) {
         reference.addSample();
-        if (progress) printProgress(s + 1, options.spp, secondsSince(traceStart));
+        if (progress) printProgress(s + 1, options.spp, "spp", secondsSince(traceStart));
     }
     writeImage(options.outputPath, reference.readMean());
     if (!options.quiet) {
@@ -99,10 +114,132 @@ int runReference(const RenderOptions& options, const Scene& scene, const Setting
 
 } // namespace
 
+std::string formatFramePath(const std::string& pattern, int index, const std::string& where) {
+    std::string out;
+    int conversions = 0;
+    for (size_t i = 0; i < pattern.size(); ++i) {
+        if (pattern[i] != '%') {
+            out += pattern[i];
+            continue;
+        }
+        if (i + 1 < pattern.size() && pattern[i + 1] == '%') {
+            out += '%';
+            ++i;
+            continue;
+        }
+        // %d, %Nd or %0Nd: an optional zero flag and width, then d.
+        size_t j = i + 1;
+        const bool zeros = j < pattern.size() && pattern[j] == '0';
+        if (zeros) ++j;
+        size_t width = 0;
+        while (j < pattern.size() && std::isdigit(static_cast<unsigned char>(pattern[j])) &&
+               width < kMaxFrameNumberWidth) {
+            width = width * 10 + size_t(pattern[j] - '0');
+            ++j;
+        }
+        if (j >= pattern.size() || pattern[j] != 'd') {
+            throw InputError(strCat(where,
+                                    ": expected a frame number as %d, %4d or %04d (and %% "
+                                    "for a percent sign), got '",
+                                    pattern, "'"));
+        }
+        std::string number = std::to_string(index);
+        if (number.size() < width) number.insert(0, width - number.size(), zeros ? '0' : ' ');
+        out += number;
+        ++conversions;
+        i = j;
+    }
+    if (conversions != 1) {
+        throw InputError(strCat(where,
+                                ": a sequence needs one frame number in the path (e.g. "
+                                "out_%04d.png), got '",
+                                pattern, "'"));
+    }
+    return out;
+}
+
+namespace {
+
+// The image `render` writes of the runner's last frame.
+Image readOutputImage(const FrameRunner& runner, OutputKind kind, Aov aov,
+                      const std::optional<PhotonAov>& photonAov) {
+    if (photonAov) return PhotonPointsDrawer().renderAov(runner, *photonAov);
+    return readTextureImage(runner.getAov(kind == OutputKind::Png ? Aov::Display : aov));
+}
+
+// --frames N: the animation from --time on, a frame every 1/fps s, each written as it is done.
+int runSequence(const RenderOptions& options, Scene& scene, FrameRunner& runner, OutputKind kind,
+                Aov aov, const std::optional<PhotonAov>& photonAov, const gl::ContextInfo& info,
+                std::chrono::steady_clock::time_point start) {
+    const bool progress = !options.quiet && isTerminal();
+    const auto sequenceStart = std::chrono::steady_clock::now();
+    std::vector<double> frameMs;
+    for (int i = 0; i < options.frames; ++i) {
+        const auto frameStart = std::chrono::steady_clock::now();
+        if (scene.isAnimated()) {
+            scene.update(options.timeS + double(i) / options.fps);
+            runner.updateScene();
+        }
+        // The first frame has no predecessor: its white point is its own.
+        runner.setTimeStep(i == 0 ? -1.0 : 1.0 / options.fps);
+        runner.renderFrame();
+        writeImage(formatFramePath(options.outputPath, i, "--output"),
+                   readOutputImage(runner, kind, aov, photonAov));
+        frameMs.push_back(
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart)
+                .count());
+        if (progress) {
+            printProgress(
+                i + 1, options.frames, "frames",
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - sequenceStart)
+                    .count());
+        }
+    }
+    if (!options.quiet) {
+        runner.waitForTimings();
+        std::printf("wrote %d frames, %s to %s (%dx%d, %s; %g s to %g s at %g frames/s)\n",
+                    options.frames, formatFramePath(options.outputPath, 0, "--output").c_str(),
+                    formatFramePath(options.outputPath, options.frames - 1, "--output").c_str(),
+                    runner.getWidth(), runner.getHeight(),
+                    photonAov                 ? options.aov.c_str()
+                    : kind == OutputKind::Png ? "tone mapped"
+                                              : options.aov.c_str(),
+                    options.timeS, options.timeS + double(options.frames - 1) / options.fps,
+                    options.fps);
+        // The first frame builds the shaders: the median of the others is what a frame costs.
+        std::vector<double> later(frameMs.begin() + (frameMs.size() > 1 ? 1 : 0), frameMs.end());
+        std::nth_element(later.begin(), later.begin() + long(later.size() / 2), later.end());
+        std::printf("frame with its write, median: %.1f ms; the last frame's passes:\n",
+                    later[later.size() / 2]);
+        printTimings(runner, info);
+        std::printf("whole command: %.1f ms\n", std::chrono::duration<double, std::milli>(
+                                                    std::chrono::steady_clock::now() - start)
+                                                    .count());
+    }
+    return checkGlErrors("rendering");
+}
+
+} // namespace
+
 int runRender(const RenderOptions& options) {
     const auto start = std::chrono::steady_clock::now();
     const OutputKind kind = classifyOutput(options.outputPath, "--output");
-    checkWritableOutput(options.outputPath, "--output");
+    if (options.frames < 1) {
+        throw InputError(strCat("--frames: expected at least 1, got ", options.frames));
+    }
+    if (!std::isfinite(options.fps) || !(options.fps > 0.0) || options.fps > kMaxFps) {
+        throw InputError(
+            strCat("--fps: expected frames per second in (0, ", kMaxFps, "], got ", options.fps));
+    }
+    const bool isSequence = options.frames > 1;
+    if (isSequence && options.mode == "reference") {
+        throw InputError("--frames: reference mode renders one frame (render a sequence with "
+                         "--mode ispm, or each --time with the reference)");
+    }
+    // Every frame of a sequence goes to the same folder: checking the first checks them all.
+    checkWritableOutput(isSequence ? formatFramePath(options.outputPath, 0, "--output")
+                                   : options.outputPath,
+                        "--output");
     const std::optional<PhotonAov> photonAov = findPhotonAov(options.aov);
     const Aov aov = photonAov ? Aov::Display : parseAov(options.aov, "--aov");
     if (options.mode != "ispm" && options.mode != "reference") {
@@ -151,6 +288,9 @@ int runRender(const RenderOptions& options) {
                                 "must be > 0)"));
     }
     warnIfLightFades(runner);
+    if (isSequence) {
+        return runSequence(options, scene, runner, kind, aov, photonAov, context->getInfo(), start);
+    }
     // The first frame compiles shaders in the driver and touches every resource once; time the
     // second, which is what every later frame costs. Accumulating, every frame counts: the image
     // is the average of `accumulate` frames.
@@ -159,10 +299,7 @@ int runRender(const RenderOptions& options) {
     for (int i = 0; i < frames; ++i)
         runner.renderFrame();
     runner.waitForTimings(); // one frame to report: the frame is over, waiting costs nothing
-    const Image image =
-        photonAov ? PhotonPointsDrawer().renderAov(runner, *photonAov)
-                  : readTextureImage(runner.getAov(kind == OutputKind::Png ? Aov::Display : aov));
-    writeImage(options.outputPath, image);
+    writeImage(options.outputPath, readOutputImage(runner, kind, aov, photonAov));
     if (!options.quiet) {
         const double totalMs =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)

@@ -20,6 +20,11 @@ constexpr size_t kBudgetFrames = 3;
 
 } // namespace
 
+double computeAdaptationWeight(double timeStepS, double timeConstantS) {
+    if (timeConstantS <= 0.0 || timeStepS < 0.0) return 1.0;
+    return 1.0 - std::exp(-timeStepS / timeConstantS);
+}
+
 Aov parseAov(const std::string& text, const std::string& where) {
     if (text == "direct") return Aov::Direct;
     if (text == "indirect") return Aov::Indirect;
@@ -96,9 +101,11 @@ void FrameRunner::updateFrameConstants() {
     // Accumulated frames look through new sub-pixel offsets: the average is anti-aliased.
     const glm::vec2 jitter =
         mFrameSettings.accumulate > 0 ? computePixelJitter(mHistoryFrames) : glm::vec2(0.0f);
-    const gpu::FrameConstants fc = computeFrameConstants(mScene, mGpuScene, mFrameSettings, mWidth,
-                                                         mHeight, getFrameSeed(), jitter);
+    gpu::FrameConstants fc = computeFrameConstants(mScene, mGpuScene, mFrameSettings, mWidth,
+                                                   mHeight, getFrameSeed(), jitter);
     mClipFromWorld = fc.clipFromWorld;
+    fc.tonemap.x =
+        static_cast<float>(computeAdaptationWeight(mTimeStepS, mFrameSettings.eyeAdaptationS));
     mFrameConstants.upload(0, sizeof(fc), &fc);
 }
 

@@ -29,6 +29,10 @@ namespace ispm {
 
 enum class Aov { Direct, Indirect, Total, Display };
 
+// Eye adaptation: the share of the way from the last frame's white point to this frame's after
+// `timeStepS` (< 0: unknown, at once) with time constant `timeConstantS` (0: at once).
+double computeAdaptationWeight(double timeStepS, double timeConstantS);
+
 // Parses "direct|indirect|total"; throws InputError naming `where` otherwise.
 Aov parseAov(const std::string& text, const std::string& where);
 
@@ -43,6 +47,9 @@ class FrameRunner {
     FrameRunner(const Scene& scene, const Settings& settings, gl::TimingMethod timing);
 
     void renderFrame();
+    // Seconds since the previous frame, for eye adaptation (eye_adaptation_s); until set, every
+    // frame adapts at once (a still render).
+    void setTimeStep(double seconds) { mTimeStepS = seconds; }
     // Viewer edits (both cheap when nothing relevant changed). setSettings resizes the passes when
     // width/height change and re-uploads the scene when shadow_map_size changes; every other
     // setting is read by the passes each frame. updateScene re-uploads instance transforms and
@@ -116,6 +123,7 @@ class FrameRunner {
     uint64_t mHistoryLightsVersion = 0; // GpuScene::getLightsVersion of the history's lights
     Camera mHistoryCamera;              // the camera of the last frame
     uint32_t mFramesDrawn = 0;          // since the runner was made (rng = per_frame)
+    double mTimeStepS = -1.0;           // setTimeStep; < 0: not set
     // What the importance maps were last built for (renderFrame): stale after a camera move, a
     // settings change or a rebuilt scene; else rebuilt when the seed or a light view changed.
     bool mImportanceStale = true;

@@ -9,6 +9,8 @@
 #include <shared/scene_data.h>
 #include <shared/tonemap_data.h>
 
+#include <cstddef>
+
 namespace ispm {
 
 DirectPass::DirectPass(const GBuffer& viewer, const GBuffer& lights)
@@ -51,7 +53,8 @@ void TonemapPass::execute(const FrameInputs& inputs) {
     mExposure.bindBase(gl::BufferTarget::Storage, gpu::kBindingExposure);
     mHdr.bindUnit(gpu::kUnitHdr);
     if (!inputs.settings.luminanceMax) {
-        mExposure.clearToZero();
+        // The histogram and counts; the white point stays for eye adaptation.
+        mExposure.clearRangeToZero(0, offsetof(gpu::ExposureData, luminanceMax));
         mHistogram.use();
         const auto groups = [](int size) {
             return (static_cast<unsigned>(size) + gpu::kExposureGroupSize - 1) /

@@ -7,6 +7,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace ispm {
@@ -50,8 +51,67 @@ glm::mat4 computeAnimationTransform(const Animation& animation, double timeS) {
     return glm::translate(glm::mat4(1.0f), offsetM) * m;
 }
 
+namespace {
+
+// Hermite basis on s in [0, 1]: p(s) = h00 p0 + h10 m0 + h01 p1 + h11 m1 (tangents scaled by
+// the segment's duration).
+template <typename T>
+T evaluateHermite(const T& p0, const T& m0, const T& p1, const T& m1, float s) {
+    const float s2 = s * s;
+    const float s3 = s2 * s;
+    return (2.0f * s3 - 3.0f * s2 + 1.0f) * p0 + (s3 - 2.0f * s2 + s) * m0 +
+           (-2.0f * s3 + 3.0f * s2) * p1 + (s3 - s2) * m1;
+}
+
+// The tangent (per second) at key i: the chord of its neighbours over their time, one-sided at
+// the ends.
+template <typename T>
+T computeTangent(const std::vector<CameraKey>& keys, size_t i, T CameraKey::*field) {
+    const size_t lo = i == 0 ? 0 : i - 1;
+    const size_t hi = i + 1 == keys.size() ? i : i + 1;
+    const auto dt = static_cast<float>(keys[hi].timeS - keys[lo].timeS);
+    return (keys[hi].*field - keys[lo].*field) / dt;
+}
+
+// Shorter interpolated view directions (m) keep the nearer key's direction.
+constexpr float kMinViewDistanceM = 1e-4f;
+
+} // namespace
+
+CameraPose evaluateCameraPath(const std::vector<CameraKey>& keys, double timeS) {
+    const auto pose = [](const CameraKey& k) {
+        return CameraPose{k.position, k.target, k.fovYDeg};
+    };
+    if (timeS <= keys.front().timeS) return pose(keys.front());
+    if (timeS >= keys.back().timeS) return pose(keys.back());
+    size_t i = 0;
+    while (keys[i + 1].timeS <= timeS)
+        ++i;
+    const CameraKey& a = keys[i];
+    const CameraKey& b = keys[i + 1];
+    const double duration = b.timeS - a.timeS;
+    const auto s = static_cast<float>((timeS - a.timeS) / duration);
+    const auto d = static_cast<float>(duration);
+    CameraPose p;
+    p.position =
+        evaluateHermite(a.position, d * computeTangent(keys, i, &CameraKey::position), b.position,
+                        d * computeTangent(keys, i + 1, &CameraKey::position), s);
+    p.target = evaluateHermite(a.target, d * computeTangent(keys, i, &CameraKey::target), b.target,
+                               d * computeTangent(keys, i + 1, &CameraKey::target), s);
+    p.fovYDeg = evaluateHermite(a.fovYDeg, d * computeTangent(keys, i, &CameraKey::fovYDeg),
+                                b.fovYDeg, d * computeTangent(keys, i + 1, &CameraKey::fovYDeg), s);
+    // The spline may overshoot a key's field of view slightly: keep it between the keys'.
+    p.fovYDeg =
+        std::clamp(p.fovYDeg, std::min(a.fovYDeg, b.fovYDeg), std::max(a.fovYDeg, b.fovYDeg));
+    if (!(glm::length(p.target - p.position) > kMinViewDistanceM)) {
+        const CameraKey& k = s < 0.5f ? a : b;
+        p.target = p.position + (k.target - k.position);
+    }
+    return p;
+}
+
 bool Scene::isAnimated() const {
-    if (!instanceAnimations.empty()) return true;
+    if (!instanceAnimations.empty() || !camera.path.empty()) return true;
     for (const Light& light : lights) {
         if (light.animation) return true;
     }
@@ -59,6 +119,12 @@ bool Scene::isAnimated() const {
 }
 
 void Scene::update(double timeS) {
+    if (!camera.path.empty()) {
+        const CameraPose pose = evaluateCameraPath(camera.path, timeS);
+        camera.position = pose.position;
+        camera.target = pose.target;
+        camera.fovYDeg = pose.fovYDeg;
+    }
     for (const InstanceAnimation& a : instanceAnimations) {
         instances.at(a.instanceIndex).worldFromObject =
             computeAnimationTransform(a.animation, timeS) * a.baseWorldFromObject;

@@ -1,12 +1,14 @@
-// Animation of instances and lights (docs/scene-format.md, "Animation"): motions that are pure
-// functions of time, applied in world space after an object's static transform, so the same time
-// always gives the same scene. No GL, no JSON: the loader fills these, Scene::update applies them.
+// Animation of instances, lights and the camera (docs/scene-format.md, "Animation"): motions
+// that are pure functions of time, applied in world space after an object's static transform (a
+// camera follows a path of keys), so the same time always gives the same scene. No GL, no JSON:
+// the loader fills these, Scene::update applies them.
 #pragma once
 
 #include <glm/glm.hpp>
 
 #include <cstdint>
 #include <optional>
+#include <vector>
 
 namespace ispm {
 
@@ -52,5 +54,25 @@ struct LightAnimation {
     glm::vec3 baseDirection{0.0f, -1.0f, 0.0f};
     Animation animation;
 };
+
+// A keyframe of a camera path: where the camera is and looks at `timeS`.
+struct CameraKey {
+    double timeS = 0.0;
+    glm::vec3 position{0.0f};
+    glm::vec3 target{0.0f};
+    float fovYDeg = 45.0f; // full vertical field of view
+};
+
+// The camera at time t on a path of >= 2 keys with increasing times: position, target and field
+// of view each follow a cubic Hermite spline through the keys (tangents from the neighbouring
+// keys, Catmull-Rom on the keys' own times, one-sided at the ends), so speed and turn change
+// smoothly; before the first key and after the last the camera rests there. Where the
+// interpolated target would meet the position, the view direction of the nearer key is kept.
+struct CameraPose {
+    glm::vec3 position{0.0f};
+    glm::vec3 target{0.0f};
+    float fovYDeg = 45.0f;
+};
+CameraPose evaluateCameraPath(const std::vector<CameraKey>& keys, double timeS);
 
 } // namespace ispm

@@ -107,6 +107,7 @@ FrameSettings resolveFrameSettings(const Settings& settings) {
     f.exposureStops = settings.getFloat("exposure");
     f.gamma = settings.getFloat("gamma");
     f.luminanceMax = getIfSet(settings, "luminance_max");
+    f.eyeAdaptationS = settings.getFloat("eye_adaptation_s");
     f.shadowMapSize = settings.getInt("shadow_map_size");
     f.shadowBiasTexels = settings.getFloat("shadow_bias");
     f.seed = static_cast<uint32_t>(settings.getInt("seed"));

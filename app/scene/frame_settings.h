@@ -35,6 +35,7 @@ struct FrameSettings {
     float exposureStops = 0.0f;
     float gamma = 2.2f;
     std::optional<float> luminanceMax; // W/(m^2 sr); derived on the GPU when not set
+    float eyeAdaptationS = 0.0f;       // time constant of the derived white point; 0 = at once
     // Lights and shadows.
     int shadowMapSize = 0; // px
     float shadowBiasTexels = 0.0f;

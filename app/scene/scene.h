@@ -50,6 +50,9 @@ struct Camera {
     float fovYDeg = 45.0f; // full vertical field of view
     float nearM = 0.0f;    // 0: derived from the scene bounds
     float farM = 0.0f;     // 0: derived from the scene bounds
+    // Keys of the camera's path (`path`), or none for a still camera: Scene::update moves
+    // position, target and fovYDeg along it (evaluateCameraPath).
+    std::vector<CameraKey> path;
 };
 
 // Reflectances in [0,1] per channel; defaults are all zero (ior 1.5), as in the scene format.

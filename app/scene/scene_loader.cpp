@@ -23,26 +23,79 @@ constexpr double kMaxLightPower = 1e12;
 // The camera's up vector must make at least this sine with the view direction to define a roll.
 constexpr float kMinUpSine = 1e-4f;
 constexpr double kMaxFovYDeg = 180.0; // exclusive: a pinhole sees less than a half space
+// Camera keys lie within this many seconds (11.6 days): later times lose float precision in the
+// spline's interpolation parameter long before.
+constexpr double kMaxAnimationTimeS = 1e6;
 
-Camera parseCamera(const JsonNode& node) {
-    node.checkKeys({"position", "target", "up", "fov_y_deg", "near", "far"}, "the camera");
-    Camera camera;
-    camera.position = node.get("position").readVec3();
-    const JsonNode target = node.get("target");
-    camera.target = target.readVec3();
-    const glm::vec3 forward = camera.target - camera.position;
-    if (!(glm::length(forward) > 0.0f)) target.fail("a target different from the position");
-    const std::optional<JsonNode> up = node.find("up");
-    if (up) camera.up = up->readDirection();
-    if (!(glm::length(glm::cross(glm::normalize(forward), camera.up)) > kMinUpSine)) {
+// The view direction from `position` to `target` must exist and make a roll with `up`.
+void checkView(const JsonNode& node, const JsonNode& targetNode, const glm::vec3& position,
+               const glm::vec3& target, const glm::vec3& up,
+               const std::optional<JsonNode>& upNode) {
+    const glm::vec3 forward = target - position;
+    if (!(glm::length(forward) > 0.0f)) targetNode.fail("a target different from the position");
+    if (!(glm::length(glm::cross(glm::normalize(forward), up)) > kMinUpSine)) {
         // The default up fails for a camera looking straight up or down: the file must say.
         const std::string what = "an up vector not parallel to the view direction";
-        if (up) up->fail(what);
+        if (upNode) upNode->fail(what + strCat(" (at ", node.getPath(), ")"));
         throwInputError(node.getFile(), node.getPath() + "/up",
                         what + " (the default is [0, 1, 0])");
     }
+}
+
+// A camera path: keys in increasing time, each a position and target (and a field of view,
+// else the camera's).
+std::vector<CameraKey> parseCameraPath(const JsonNode& node, const Camera& camera,
+                                       const std::optional<JsonNode>& upNode) {
+    const std::vector<JsonNode> keyNodes = node.getElements("an array of camera keys");
+    if (keyNodes.size() < 2) node.fail("at least two keys (one key is a still camera)");
+    std::vector<CameraKey> keys;
+    for (const JsonNode& k : keyNodes) {
+        k.checkKeys({"time_s", "position", "target", "fov_y_deg"}, "a camera key");
+        CameraKey key;
+        const JsonNode time = k.get("time_s");
+        key.timeS = time.readNumber(NumberRange::getClosed(0.0, kMaxAnimationTimeS));
+        if (!keys.empty() && !(key.timeS > keys.back().timeS)) {
+            time.failGot(strCat("a time after the previous key's (",
+                                formatFloat(float(keys.back().timeS)), " s)"));
+        }
+        key.position = k.get("position").readVec3();
+        const JsonNode target = k.get("target");
+        key.target = target.readVec3();
+        checkView(k, target, key.position, key.target, camera.up, upNode);
+        key.fovYDeg = camera.fovYDeg;
+        if (auto fov = k.find("fov_y_deg")) {
+            key.fovYDeg = fov->readFloat(NumberRange::getOpen(0.0, kMaxFovYDeg));
+        }
+        keys.push_back(key);
+    }
+    return keys;
+}
+
+Camera parseCamera(const JsonNode& node) {
+    node.checkKeys({"position", "target", "up", "fov_y_deg", "near", "far", "path"}, "the camera");
+    Camera camera;
+    const std::optional<JsonNode> up = node.find("up");
+    if (up) camera.up = up->readDirection();
     if (auto fov = node.find("fov_y_deg")) {
         camera.fovYDeg = fov->readFloat(NumberRange::getOpen(0.0, kMaxFovYDeg));
+    }
+    const std::optional<JsonNode> path = node.find("path");
+    if (path) {
+        // The path says where the camera is: a position or target beside it would be ignored.
+        for (const char* key : {"position", "target"}) {
+            if (auto n = node.find(key))
+                n->fail("no position or target beside a path (its keys give them)");
+        }
+        camera.path = parseCameraPath(*path, camera, up);
+        const CameraPose start = evaluateCameraPath(camera.path, 0.0);
+        camera.position = start.position;
+        camera.target = start.target;
+        camera.fovYDeg = start.fovYDeg;
+    } else {
+        camera.position = node.get("position").readVec3();
+        const JsonNode target = node.get("target");
+        camera.target = target.readVec3();
+        checkView(node, target, camera.position, camera.target, camera.up, up);
     }
     if (auto nearNode = node.find("near")) {
         camera.nearM = nearNode->readFloat(NumberRange::getAbove(0.0));

@@ -48,6 +48,16 @@ const std::vector<SettingDesc>& table() {
          "derived from the image (99th percentile of luminance) when not set",
          {},
          true},
+        {"eye_adaptation_s",
+         SettingType::Float,
+         0,
+         0,
+         60,
+         "s",
+         "eye adaptation: time constant with which a derived luminance_max follows the image, in "
+         "log luminance (63% of the way after this time); 0 = each frame its own. Time passes "
+         "in render sequences (--frames, --fps) and in the viewer",
+         {}},
         {"gamma",
          SettingType::Float,
          2.2,

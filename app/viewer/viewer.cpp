@@ -243,6 +243,7 @@ int Viewer::run() {
             mReference.restart(); // a path-traced reference of another moment would be stale
         }
 
+        mRunner->setTimeStep(seconds); // eye adaptation follows the wall clock
         mRunner->renderFrame();
         mTimings.record(mRunner->getLastTimings());
         // Counts and the white point are read back for the Stats panel only, every few frames:

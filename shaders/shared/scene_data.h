@@ -104,7 +104,9 @@ struct FrameConstants {
     uvec4 counts;        // x = light count, y = light view count, z = seed, w = tone-map operator
                          // (kTonemap*)
     vec4 shadow;         // x = bias in texels, y = light G-buffer resolution
-    vec4 tonemap;        // y = exposure scale, z = 1/gamma, w = luminance_max (<=0: derived)
+    vec4 tonemap;        // x = eye adaptation's weight this frame (1: the derived white point
+                         // at once), y = exposure scale, z = 1/gamma, w = luminance_max (<=0:
+                         // derived)
 };
 ISPM_STATIC_ASSERT_SIZE(FrameConstants, 224);
 

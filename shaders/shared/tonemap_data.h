@@ -13,10 +13,13 @@ ISPM_CONST float kLog2LuminanceMax = 40.0f;
 ISPM_CONST float kWhitePercentile = 0.99f; // derived luminance_max: 99% of lit pixels are below
 ISPM_CONST uint kExposureGroupSize = 16u;
 
+// Each frame clears the histogram and counts; luminanceMax stays, so the white point can adapt
+// from the last frame's (eye_adaptation_s).
 struct ExposureData {
     uint histogram[kLuminanceBins];
     uvec4 counts;      // x = pixels counted
-    vec4 luminanceMax; // x = derived white point, W/(m^2 sr)
+    vec4 luminanceMax; // x = white point the tone map uses (adapted), y = this frame's derived
+                       // one, W/(m^2 sr); x = 0 before the first frame
 };
 ISPM_STATIC_ASSERT_SIZE(ExposureData, 1056);
 

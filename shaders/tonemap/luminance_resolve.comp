@@ -1,6 +1,8 @@
-// Picks the white point: the luminance below which kWhitePercentile of the lit pixels lie.
+// Picks the white point: the luminance below which kWhitePercentile of the lit pixels lie, and
+// moves the adapted white point towards it in log luminance by this frame's weight
+// (frame.tonemap.x = 1 - exp(-dt / eye_adaptation_s), or 1: at once).
+#include "lib/frame_constants.glsl"
 #include "shared/tonemap_data.h"
-#include "shared/scene_data.h"
 
 layout(local_size_x = 1) in;
 layout(std430, binding = kBindingExposure) buffer ExposureBuffer { ExposureData exposure; };
@@ -23,5 +25,10 @@ void main() {
             }
         }
     }
-    exposure.luminanceMax = vec4(exp2(log2White), 0.0, 0.0, 0.0);
+    float target = exp2(log2White);
+    float previous = exposure.luminanceMax.x;
+    float weight = frame.tonemap.x;
+    float white = target;
+    if (weight < 1.0 && previous > 0.0) white = exp2(mix(log2(previous), log2White, weight));
+    exposure.luminanceMax = vec4(white, target, 0.0, 0.0);
 }

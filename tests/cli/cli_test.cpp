@@ -1,6 +1,7 @@
 // The executable's contract with users: bad input gives one line naming the file and the JSON path
 // (or the flag) and exit code 2; good input renders a non-black image.
 #include "image/image_io.h"
+#include "image/metrics.h"
 #include "support/run_ispm.h"
 
 #include <gtest/gtest.h>
@@ -102,6 +103,44 @@ TEST_F(CliTest, WritesPhotonBufferImages) {
                    {"--aov", "photons"});
     expectBadInput("render " + scene + " -o x.exr --aov bounce_direction --mode reference",
                    {"--aov"});
+}
+
+TEST_F(CliTest, RendersSequencesAlongACameraPath) {
+    // The camera walks 2 m in 1 s: three frames at 2 frames/s are the scene at 0, 0.5 and 1 s,
+    // each as a single render at that --time would draw it.
+    std::string text = kGoodScene;
+    const std::string camera =
+        R"("camera": {"position": [0, 1, 3], "target": [0, 0, 0], "up": [0, 1, 0], "fov_y_deg": 50})";
+    ASSERT_NE(text.find(camera), std::string::npos);
+    text.replace(text.find(camera), camera.size(),
+                 R"("camera": {"fov_y_deg": 50, "path": [)"
+                 R"({"time_s": 0, "position": [0, 1, 3], "target": [0, 0, 0]},)"
+                 R"({"time_s": 1, "position": [2, 1, 2], "target": [0, 0, 0]}]})");
+    const std::string scene = writeScene("walk.json", text);
+    const std::string size = " --width 32 --height 24 -q";
+    RunResult r = run("render " + scene + " -o " + (mDir / "walk_%03d.pfm").string() +
+                      " --frames 3 --fps 2" + size + " --set eye_adaptation_s=0.5");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    for (const char* name : {"walk_000.pfm", "walk_001.pfm", "walk_002.pfm"})
+        EXPECT_TRUE(std::filesystem::exists(mDir / name)) << name;
+    EXPECT_FALSE(std::filesystem::exists(mDir / "walk_003.pfm"));
+    r = run("render " + scene + " -o " + (mDir / "at1.pfm").string() + " --time 1" + size);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const Image single = readImage((mDir / "at1.pfm").string());
+    // The same frame up to float round-off where buffers of the earlier frames are reused.
+    EXPECT_LT(computeRelRmse(readImage((mDir / "walk_002.pfm").string()), single, 1), 1e-4);
+    // ... and another view than the first frame's.
+    EXPECT_GT(computeRelRmse(readImage((mDir / "walk_000.pfm").string()), single, 1), 0.1);
+
+    const std::string out = " -o " + (mDir / "f_%d.png").string();
+    expectBadInput("render " + scene + " -o x.png --frames 3", {"--output", "frame number"});
+    expectBadInput("render " + scene + " -o x_%d_%d.png --frames 3", {"--output"});
+    expectBadInput("render " + scene + " -o x_%s.png --frames 3", {"--output", "%04d"});
+    expectBadInput("render " + scene + out + " --frames 0", {"--frames"});
+    expectBadInput("render " + scene + out + " --frames 2 --fps 0", {"--fps"});
+    expectBadInput("render " + scene + out + " --frames 2 --fps nan", {"--fps"});
+    expectBadInput("render " + scene + " -o x_%d.pfm --frames 2 --mode reference", {"--frames"});
+    expectBadInput("render " + scene + out + " --set eye_adaptation_s=-1", {"eye_adaptation_s"});
 }
 
 TEST_F(CliTest, SplatsWiderThanTheSceneAreWarnedAbout) {

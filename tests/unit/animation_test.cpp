@@ -241,5 +241,100 @@ TEST(AnimationTest, DynamicSceneAssetLoadsAndMoves) {
     }
 }
 
+// ---------------------------------------------------------------------------------------------
+// Camera paths.
+
+std::vector<CameraKey> makeKeys() {
+    return {{0.0, {0, 1, -10}, {0, 1, 0}, 50.0f},
+            {2.0, {4, 1, -6}, {0, 1, 2}, 60.0f},
+            {3.0, {4, 2, -2}, {1, 0, 2}, 40.0f},
+            {7.0, {0, 1, 0}, {0, 1, 5}, 50.0f}};
+}
+
+TEST(CameraPath, PassesThroughItsKeysAndRestsBeyondThem) {
+    const auto keys = makeKeys();
+    for (const CameraKey& k : keys) {
+        const CameraPose p = evaluateCameraPath(keys, k.timeS);
+        EXPECT_EQ(p.position, k.position);
+        EXPECT_EQ(p.target, k.target);
+        EXPECT_EQ(p.fovYDeg, k.fovYDeg);
+    }
+    EXPECT_EQ(evaluateCameraPath(keys, -1.0).position, keys.front().position);
+    EXPECT_EQ(evaluateCameraPath(keys, 100.0).target, keys.back().target);
+}
+
+TEST(CameraPath, MovesSmoothlyThroughEachKey) {
+    // C1: the velocity just before a key equals the velocity just after it (finite differences
+    // of 1e-3 s; their error is O(h) times the spline's second derivative, a few m/s^2 here).
+    const auto keys = makeKeys();
+    constexpr double kH = 1e-3;
+    constexpr float kVelocityTolerance = 0.02f; // m/s, against speeds of 1-4 m/s
+    for (size_t i = 1; i + 1 < keys.size(); ++i) {
+        const double t = keys[i].timeS;
+        const glm::vec3 before =
+            (evaluateCameraPath(keys, t).position - evaluateCameraPath(keys, t - kH).position) /
+            float(kH);
+        const glm::vec3 after =
+            (evaluateCameraPath(keys, t + kH).position - evaluateCameraPath(keys, t).position) /
+            float(kH);
+        EXPECT_LT(glm::length(after - before), kVelocityTolerance) << "key " << i;
+        EXPECT_GT(glm::length(after), 0.5f) << "key " << i << ": the camera does not stop";
+    }
+    // Between keys, no jump: 1 ms moves the camera by at most a few mm.
+    for (double t = 0.0; t < 7.0; t += 0.01) {
+        const float step = glm::length(evaluateCameraPath(keys, t + kH).position -
+                                       evaluateCameraPath(keys, t).position);
+        EXPECT_LT(step, 0.02f) << "t " << t;
+    }
+}
+
+TEST(CameraPath, EvenlySpacedKeysOnALineGiveUniformMotion) {
+    // Catmull-Rom reproduces a straight line walked at constant speed exactly.
+    const std::vector<CameraKey> keys = {{0.0, {0, 0, 0}, {0, 0, 5}, 45.0f},
+                                         {1.0, {1, 0, 0}, {1, 0, 5}, 45.0f},
+                                         {2.0, {2, 0, 0}, {2, 0, 5}, 45.0f},
+                                         {3.0, {3, 0, 0}, {3, 0, 5}, 45.0f}};
+    for (double t = 0.0; t <= 3.0; t += 0.125) {
+        const CameraPose p = evaluateCameraPath(keys, t);
+        EXPECT_NEAR(p.position.x, t, kTolerance) << t;
+        EXPECT_NEAR(p.target.x, t, kTolerance) << t;
+        EXPECT_FLOAT_EQ(p.fovYDeg, 45.0f);
+    }
+}
+
+TEST(CameraPath, FieldOfViewStaysBetweenItsKeys) {
+    const auto keys = makeKeys();
+    for (double t = 0.0; t <= 7.0; t += 0.05) {
+        const CameraPose p = evaluateCameraPath(keys, t);
+        EXPECT_GE(p.fovYDeg, 40.0f) << t;
+        EXPECT_LE(p.fovYDeg, 60.0f) << t;
+    }
+}
+
+TEST(CameraPath, AViewThatWouldCollapseKeepsAKeysDirection) {
+    // Position and target swap places: half-way both are at the middle.
+    const std::vector<CameraKey> keys = {{0.0, {0, 0, 0}, {0, 0, 2}, 45.0f},
+                                         {1.0, {0, 0, 2}, {0, 0, 0}, 45.0f}};
+    const CameraPose p = evaluateCameraPath(keys, 0.5);
+    EXPECT_GT(glm::length(p.target - p.position), 1.0f);
+}
+
+TEST(CameraPath, SceneFilesAnimateTheCamera) {
+    json doc = makeScene(nullptr);
+    doc["camera"] = json::parse(R"({"fov_y_deg": 30, "path": [
+        {"time_s": 0, "position": [0, 1, -5], "target": [0, 0, 0]},
+        {"time_s": 2, "position": [0, 1, -3], "target": [0, 0, 0], "fov_y_deg": 60}]})");
+    Scene scene = load(doc);
+    EXPECT_TRUE(scene.isAnimated());
+    EXPECT_EQ(scene.camera.position, glm::vec3(0, 1, -5)); // loaded at t = 0
+    EXPECT_FLOAT_EQ(scene.camera.fovYDeg, 30.0f);          // the camera's, for keys without one
+    scene.update(2.0);
+    EXPECT_EQ(scene.camera.position, glm::vec3(0, 1, -3));
+    EXPECT_FLOAT_EQ(scene.camera.fovYDeg, 60.0f);
+    scene.update(1.0);
+    EXPECT_GT(scene.camera.position.z, -5.0f);
+    EXPECT_LT(scene.camera.position.z, -3.0f);
+}
+
 } // namespace
 } // namespace ispm::test

@@ -126,6 +126,47 @@ std::vector<ErrorCase> getErrorCases() {
         {"MissingCameraTarget",
          mutate([](json& d) { d["camera"].erase("target"); }),
          {"/camera/target", "required"}},
+        {"CameraPathOneKey",
+         mutate([](json& d) {
+             d["camera"] = {
+                 {"path", {{{"time_s", 0}, {"position", {0, 1, -3}}, {"target", {0, 1, 0}}}}}};
+         }),
+         {"/camera/path", "two keys"}},
+        {"CameraPathTimesGoBack",
+         mutate([](json& d) {
+             d["camera"] = {{"path",
+                             {{{"time_s", 2}, {"position", {0, 1, -3}}, {"target", {0, 1, 0}}},
+                              {{"time_s", 1}, {"position", {0, 1, -2}}, {"target", {0, 1, 0}}}}}};
+         }),
+         {"/camera/path/1/time_s", "after the previous key"}},
+        {"CameraPathBesidePosition",
+         mutate([](json& d) {
+             d["camera"]["path"] = {
+                 {{"time_s", 0}, {"position", {0, 1, -3}}, {"target", {0, 1, 0}}},
+                 {{"time_s", 1}, {"position", {0, 1, -2}}, {"target", {0, 1, 0}}}};
+         }),
+         {"/camera/position", "beside a path"}},
+        {"CameraPathKeyWithoutTarget",
+         mutate([](json& d) {
+             d["camera"] = {{"path",
+                             {{{"time_s", 0}, {"position", {0, 1, -3}}, {"target", {0, 1, 0}}},
+                              {{"time_s", 1}, {"position", {0, 1, -2}}}}}};
+         }),
+         {"/camera/path/1/target", "required"}},
+        {"CameraPathKeyLooksAlongUp",
+         mutate([](json& d) {
+             d["camera"] = {{"path",
+                             {{{"time_s", 0}, {"position", {0, 1, -3}}, {"target", {0, 1, 0}}},
+                              {{"time_s", 1}, {"position", {0, 1, 0}}, {"target", {0, 3, 0}}}}}};
+         }),
+         {"/camera/path/1/up"}},
+        {"CameraPathNegativeTime",
+         mutate([](json& d) {
+             d["camera"] = {{"path",
+                             {{{"time_s", -1}, {"position", {0, 1, -3}}, {"target", {0, 1, 0}}},
+                              {{"time_s", 1}, {"position", {0, 1, -2}}, {"target", {0, 1, 0}}}}}};
+         }),
+         {"/camera/path/0/time_s"}},
         {"TargetAtPosition",
          mutate([](json& d) {
              d["camera"]["target"] = {0, 1, -3};
