@@ -49,15 +49,19 @@ FrameRunner::FrameRunner(const Scene& scene, const Settings& settings, gl::Timin
                                                    mUpsample->getOutput());
     mCompose = std::make_unique<ComposePass>(mGBuffer->getGBuffer(), mAccumulate->getDirect(),
                                              mAccumulate->getIndirect());
-    mTonemap = std::make_unique<TonemapPass>(mCompose->getOutput());
+    mMotionBlur = std::make_unique<MotionBlurPass>(mGBuffer->getGBuffer());
+    mDepthBlur = std::make_unique<DepthBlurPass>(mGBuffer->getGBuffer());
+    mBloom = std::make_unique<BloomPass>();
+    mTotal = &mCompose->getOutput();
+    mTonemap = std::make_unique<TonemapPass>(*mTotal);
     resizePasses();
 }
 
-std::array<Pass*, 13> FrameRunner::getPasses() const {
-    return {mGBuffer.get(), mLightViews.get(), mImportance.get(), mEmit.get(),
-            mDirect.get(),  mTrace.get(),      mDensity.get(),    mSplat.get(),
-            mDenoise.get(), mUpsample.get(),   mAccumulate.get(), mCompose.get(),
-            mTonemap.get()};
+std::array<Pass*, 16> FrameRunner::getPasses() const {
+    return {mGBuffer.get(),    mLightViews.get(), mImportance.get(), mEmit.get(),
+            mDirect.get(),     mTrace.get(),      mDensity.get(),    mSplat.get(),
+            mDenoise.get(),    mUpsample.get(),   mAccumulate.get(), mCompose.get(),
+            mMotionBlur.get(), mDepthBlur.get(),  mBloom.get(),      mTonemap.get()};
 }
 
 void FrameRunner::resizePasses() {
@@ -219,11 +223,35 @@ void FrameRunner::renderFrame() {
     ++mSequenceFrames;
     ++mFramesDrawn;
     runPass(*mCompose, inputs);
+    mTotal = &runPostPasses(inputs);
+    mTonemap->setInput(*mTotal);
     runPass(*mTonemap, inputs);
     if (auto samples = mTimer.collect()) {
         setTimings(*samples);
         adaptPhotonBudget();
     }
+}
+
+const gl::Texture& FrameRunner::runPostPasses(const FrameInputs& inputs) {
+    // Camera effects on the scene's light first (the shutter, then the lens), then the bloom
+    // that scatters the focused image.
+    const gl::Texture* hdr = &mCompose->getOutput();
+    if (mFrameSettings.hasMotionBlur()) {
+        mMotionBlur->setInput(*hdr);
+        runPass(*mMotionBlur, inputs);
+        hdr = &mMotionBlur->getOutput();
+    }
+    if (mFrameSettings.hasDepthBlur()) {
+        mDepthBlur->setInput(*hdr);
+        runPass(*mDepthBlur, inputs);
+        hdr = &mDepthBlur->getOutput();
+    }
+    if (mFrameSettings.hasBloom()) {
+        mBloom->setInput(*hdr);
+        runPass(*mBloom, inputs);
+        hdr = &mBloom->getOutput();
+    }
+    return *hdr;
 }
 
 void FrameRunner::adaptPhotonBudget() {
@@ -291,7 +319,7 @@ const gl::Texture& FrameRunner::getAov(Aov aov) const {
     case Aov::Indirect:
         return mAccumulate->getIndirect();
     case Aov::Total:
-        return mCompose->getOutput();
+        return *mTotal;
     case Aov::Display:
         return mTonemap->getOutput();
     }
