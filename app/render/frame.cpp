@@ -98,8 +98,7 @@ void FrameRunner::setSettings(const Settings& settings) {
 
 void FrameRunner::updateFrameConstants() {
     // Accumulated frames look through new sub-pixel offsets: the average is anti-aliased.
-    const glm::vec2 jitter =
-        mFrameSettings.accumulate > 0 ? computePixelJitter(mHistoryFrames) : glm::vec2(0.0f);
+    const glm::vec2 jitter = computeFrameJitter(mFrameSettings, mHistoryFrames);
     const gpu::FrameConstants fc = computeFrameConstants(mScene, mGpuScene, mFrameSettings, mWidth,
                                                          mHeight, getFrameSeed(), jitter);
     mClipFromWorld = fc.clipFromWorld;
@@ -337,7 +336,8 @@ size_t FrameRunner::getGpuBytes() const {
     const size_t pixels = static_cast<size_t>(mWidth) * static_cast<size_t>(mHeight);
     return mGpuScene.getGpuBytes() + mPhotonBuffers.getGpuBytes() + mImportance->getGpuBytes() +
            mDensity->getGpuBytes() + mGBuffer->getGBuffer().getGpuBytes() +
-           mLightViews->getGBuffer().getGpuBytes() +
+           mLightViews->getGBuffer().getGpuBytes() + mMotionBlur->getGpuBytes() +
+           mDepthBlur->getGpuBytes() + mBloom->getGpuBytes() +
            pixels * (kFullResolutionRgba32F * kBytesRgba32F + kBytesRgba8) +
            size_t(splat.x) * size_t(splat.y) * kSplatResolutionRgba32F * kBytesRgba32F;
 }

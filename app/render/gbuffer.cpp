@@ -125,8 +125,9 @@ size_t GBuffer::getGpuBytes() const {
 
 void appendGBufferParams(std::vector<gpu::GBufferParams>& blocks, const GpuScene& scene,
                          const glm::mat4& clipFromWorld, const glm::vec4& eye,
-                         const glm::mat4& previousClipFromWorld, glm::vec2 targetSizePx) {
-    const glm::vec4 pixelScale(0.5f * targetSizePx, 0.0f, 0.0f);
+                         const glm::mat4& previousClipFromWorld, glm::vec2 targetSizePx,
+                         glm::vec2 jitterMotionPx) {
+    const glm::vec4 pixelScale(0.5f * targetSizePx, jitterMotionPx);
     for (uint32_t i = 0; i < scene.getInstanceCount(); ++i)
         blocks.push_back({.clipFromWorld = clipFromWorld,
                           .previousClipFromWorld = previousClipFromWorld,

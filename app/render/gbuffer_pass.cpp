@@ -1,6 +1,7 @@
 // Rasterises the scene for the viewer and for each light camera (one array layer per view).
 #include "render/gbuffer_pass.h"
 
+#include "render/frame_constants.h"
 #include "render/gpu_scene.h"
 
 namespace ispm {
@@ -22,12 +23,16 @@ void GBufferPass::execute(const FrameInputs& inputs) {
     inputs.scene.bind();
     // The first frame (or the first at a new size) has no last frame: it does not move.
     const glm::mat4 previous = mHasPrevious ? mPreviousClipFromWorld : inputs.clipFromWorld;
+    // Accumulated frames look through sub-pixel offsets (inside both cameras): not motion.
+    const glm::vec2 jitter = computeFrameJitter(inputs.settings, inputs.historyFrames);
+    const glm::vec2 jitterMotion = mHasPrevious ? jitter - mPreviousJitterPx : glm::vec2(0.0f);
     mPreviousClipFromWorld = inputs.clipFromWorld;
+    mPreviousJitterPx = jitter;
     mHasPrevious = true;
     std::vector<gpu::GBufferParams> blocks;
     appendGBufferParams(blocks, inputs.scene, inputs.clipFromWorld,
                         glm::vec4(inputs.cameraPosition, 1.0f), previous,
-                        glm::vec2(inputs.width, inputs.height));
+                        glm::vec2(inputs.width, inputs.height), jitterMotion);
     mParams.upload(blocks);
     drawSceneGBuffer(mProgram.get(), inputs.scene, mParams, 0);
 }

@@ -50,6 +50,12 @@ PostStep::PostStep(const std::string& label, const std::string& fragmentPath)
                                  .defines = getGBufferDefines()})),
       vertexArray(label + " vao") {}
 
+size_t PostStep::getGpuBytes() const {
+    constexpr size_t kBytesRgba32F = 16;
+    const gl::Texture& t = target.getTexture();
+    return size_t(t.getWidth()) * size_t(t.getHeight()) * kBytesRgba32F;
+}
+
 void PostStep::draw() const {
     target.bind();
     gl::applyState({});

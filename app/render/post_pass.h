@@ -23,6 +23,7 @@ gpu::PostParams computePostParams(const FrameInputs& inputs);
 struct PostStep {
     PostStep(const std::string& label, const std::string& fragmentPath);
     void draw() const;
+    size_t getGpuBytes() const; // 0 until the target is made
 
     ColorTarget target;
     ReloadableProgram program;
@@ -40,6 +41,7 @@ class MotionBlurPass final : public Pass {
     void execute(const FrameInputs& inputs) override;
     void reloadPrograms(ShaderReloadReport& report) override;
     const gl::Texture& getOutput() const { return mResolve.target.getTexture(); }
+    size_t getGpuBytes() const { return mScattered.getSize() + mResolve.getGpuBytes(); }
 
   private:
     const GBuffer& mViewer;
@@ -62,6 +64,7 @@ class DepthBlurPass final : public Pass {
     void execute(const FrameInputs& inputs) override;
     void reloadPrograms(ShaderReloadReport& report) override;
     const gl::Texture& getOutput() const { return mGather.target.getTexture(); }
+    size_t getGpuBytes() const { return mCoc.getGpuBytes() + mGather.getGpuBytes(); }
 
   private:
     const GBuffer& mViewer;
@@ -83,6 +86,9 @@ class BloomPass final : public Pass {
     void execute(const FrameInputs& inputs) override;
     void reloadPrograms(ShaderReloadReport& report) override;
     const gl::Texture& getOutput() const { return mCombine.target.getTexture(); }
+    size_t getGpuBytes() const {
+        return mExtract.getGpuBytes() + mBlurX.getGpuBytes() + mCombine.getGpuBytes();
+    }
 
   private:
     const gl::Texture* mInput = nullptr;

@@ -272,7 +272,7 @@ const std::vector<SettingDesc>& table() {
          10,
          "m",
          "depth blur: diameter of a thin lens; each pixel's light is spread evenly over its "
-         "circle of confusion, A |1/d - 1/dof_focus_m| H / (2 tan(fovY / 2)) pixels across at "
+         "circle of confusion, A abs(1/d - 1/dof_focus_m) H / (2 tan(fovY / 2)) pixels across at "
          "depth d (H the image height; the focal length cancels for a given field of view), "
          "radius at most 16 px; energy kept; 0 = off (a pinhole)",
          {}},

@@ -13,7 +13,7 @@ layout(binding = kUnitPostAux2) uniform sampler2D uBloom;
 
 layout(location = 0) out vec4 outRadiance;
 
-#include "post/dof_common.glsl"
+#include "post/post_common.glsl"
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);

@@ -6,7 +6,7 @@
 #include "shared/post_data.h"
 
 #include "lib/viewer_gbuffer.glsl"
-#include "post/dof_common.glsl"
+#include "post/post_common.glsl"
 
 layout(std140, binding = kBindingPassParams) uniform PostParamsBlock { PostParams params; };
 layout(binding = kUnitPostSource) uniform sampler2D uSource;

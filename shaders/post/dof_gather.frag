@@ -1,13 +1,13 @@
 // Depth blur, second step (DepthBlurPass): a scatter written as a gather. Pixel q sums, over
 // every pixel p within the frame's largest radius, p's radiance share times p's disc weight at
 // q's distance: exactly what p's disc spreads to q, so the image's sum is kept. Light a disc
-// spreads beyond the image lands mirrored at the edge (dof_common.glsl): q also gathers around
+// spreads beyond the image lands mirrored at the edge (post_common.glsl): q also gathers around
 // its mirror images beyond each edge within reach (exact while the image is wider and taller
 // than a disc, 2 x 16 px).
 #include "shared/scene_data.h"
 #include "shared/post_data.h"
 
-#include "post/dof_common.glsl"
+#include "post/post_common.glsl"
 
 layout(binding = kUnitPostAux) uniform sampler2D uSpread;
 layout(std430, binding = kBindingPostCocMax) readonly buffer CocMax { uint cocMaxPx; };

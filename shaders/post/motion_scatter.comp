@@ -9,7 +9,7 @@
 #include "shared/post_data.h"
 
 #include "lib/viewer_gbuffer.glsl"
-#include "post/dof_common.glsl"
+#include "post/post_common.glsl"
 
 layout(local_size_x = kPostGroupSize, local_size_y = kPostGroupSize) in;
 layout(std140, binding = kBindingPassParams) uniform PostParamsBlock { PostParams params; };

@@ -133,7 +133,8 @@ struct GBufferParams {
     // own clipFromWorld, and has no velocity attachment anyway).
     mat4 previousClipFromWorld;
     vec4 eye;        // w = 1: the eye's position; w = 0: the direction toward an orthographic eye
-    vec4 pixelScale; // xy = half the target's size in pixels (NDC to pixels), zw unused
+    vec4 pixelScale; // xy = half the target's size in pixels (NDC to pixels), zw = change of the
+                     // sub-pixel offset since the last frame, px (not motion: subtracted)
     uvec4 control;   // x = the instance drawn, yzw unused
 };
 ISPM_STATIC_ASSERT_SIZE(GBufferParams, 176);

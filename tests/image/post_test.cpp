@@ -207,6 +207,28 @@ TEST_F(PostTest, EachOnChangesTheTotalOnlyAndIsTimed) {
     }
 }
 
+TEST_F(PostTest, AllOnKeepTheCornellBoxEnergyAsTheCameraTurns) {
+    Scene cornell = loadScene(std::string(ISPM_ASSET_DIR) + "/scenes/cornell.json");
+    Settings s = makeCornellSettings(cornell, 0); // direct light: the same in both runners
+    s.set("width", kSize, "test");
+    s.set("height", kSize, "test");
+    Settings post = s;
+    post.set("motion_blur_shutter", 1.0, "test");
+    post.set("dof_aperture_m", 0.05, "test");
+    post.set("bloom_intensity", 0.3, "test");
+    post.set("bloom_threshold", 0.05, "test");
+    FrameRunner blurred(cornell, post, gl::TimingMethod::CpuFinish);
+    blurred.renderFrame();
+    // The camera turns by about 4 px between the frames.
+    cornell.camera.target +=
+        glm::vec3(0.04f, 0.0f, 0.0f) * glm::length(cornell.camera.target - cornell.camera.position);
+    blurred.renderFrame();
+    const Image after = readTextureImage(blurred.getAov(Aov::Total));
+    const Image before = render(cornell, s);
+    EXPECT_NEAR(computeEnergyRatio(after, before), 1.0, kEnergyTolerance);
+    EXPECT_GT(countDifferingPixels(after, before), after.pixels.size() / 2);
+}
+
 TEST_F(PostTest, BloomSpreadsTheBrightPartWithinItsRadiusAndKeepsEnergy) {
     // A bright square (radiance 100, 15 px wide) on black.
     const Scene scene = makeSquares({{{0.0f, 0.0f, -2.0f}, 0.1f}});
@@ -259,7 +281,7 @@ TEST_F(PostTest, DepthBlurWidensAnOutOfFocusEdgeByItsCircleAndKeepsFocusSharp) {
     // diameter A |1/d - 1/S| in radians.
     const double radiusPx =
         0.5 * kApertureM * std::abs(1.0 / kFarM - 1.0 / kFocusM) * getPixelsPerRadian();
-    const double rimPx = 1.5 + 0.25 * radiusPx; // dof_common.glsl's soft rim
+    const double rimPx = 1.5 + 0.25 * radiusPx; // post_common.glsl's soft rim
     std::printf("depth blur: circle of confusion at %g m: radius %.2f px\n", kFarM, radiusPx);
     const std::vector<double> distance = computeDistanceToLit(before);
     int widened = 0;
@@ -349,6 +371,22 @@ TEST_F(PostTest, MotionBlurSmearsAlongTheMotionOnlyAndKeepsEnergy) {
     // A still frame does not blur: the image is the composed one.
     runner.renderFrame();
     EXPECT_EQ(readTextureImage(runner.getAov(Aov::Total)).pixels, before.pixels);
+}
+
+TEST_F(PostTest, AStillViewHasNoVelocityWhileAccumulating) {
+    // Accumulated frames look through new sub-pixel offsets: the velocity channel leaves them out.
+    const Scene scene = makeSquares({{{0.0f, 0.0f, -2.0f}, 0.5f}});
+    Settings s = makeSettings();
+    s.set("accumulate", 4, "test");
+    FrameRunner runner(scene, s, gl::TimingMethod::CpuFinish);
+    for (int frame = 0; frame < 3; ++frame) {
+        runner.renderFrame();
+        const Image velocity = readTextureImage(runner.getViewerGBuffer().getChannel("velocity"));
+        float largest = 0.0f;
+        for (const glm::vec3& v : velocity.pixels)
+            largest = std::max({largest, std::abs(v.x), std::abs(v.y)});
+        EXPECT_LT(largest, 1e-3f) << "frame " << frame;
+    }
 }
 
 } // namespace

@@ -1,3 +1,5 @@
+// Shared by the post passes (app/render/post_pass.cpp).
+
 // Depth blur (DepthBlurPass): how much of a pixel's light its circle of confusion of radius r
 // gives a pixel `dist` away: 1 inside, 0 outside, a linear ramp one pixel wide across the rim (so
 // the disc grows smoothly with r; r = 0 keeps the light in its own pixel). The coc step sums it
