@@ -20,6 +20,7 @@ enum class Format : GLenum {
     RGBA16F = GL_RGBA16F,
     RGBA8 = GL_RGBA8,
     RG32F = GL_RG32F,
+    RG16F = GL_RG16F,
     R32F = GL_R32F,
     R32UI = GL_R32UI,
     Depth32F = GL_DEPTH_COMPONENT32F,

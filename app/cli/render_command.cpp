@@ -26,6 +26,12 @@
 #include <unistd.h>
 
 namespace ispm {
+namespace {
+
+// One frame of motion for motion blur: a 60 Hz display's, the step bench --animate uses.
+constexpr double kMotionFrameSeconds = 1.0 / 60.0;
+
+} // namespace
 
 void addRenderCommand(CLI::App& app, RenderOptions& options) {
     CLI::App* cmd = app.add_subcommand("render", "Render one frame of a scene headless");
@@ -296,8 +302,21 @@ int runRender(const RenderOptions& options) {
     // is the average of `accumulate` frames.
     const int accumulate = runner.getFrameSettings().accumulate;
     const int frames = accumulate > 0 ? accumulate : 2;
-    for (int i = 0; i < frames; ++i)
+    // Motion blur follows the motion since the last frame: the warm-up frame shows the scene one
+    // 60 Hz frame earlier (at 0 when --time is under a frame), so the image at --time has a
+    // last frame to move from.
+    const bool blurMotion = runner.getFrameSettings().hasMotionBlur() && scene.isAnimated();
+    if (blurMotion && accumulate == 0) {
+        scene.update(std::max(0.0, options.timeS - kMotionFrameSeconds));
+        runner.updateScene();
+    }
+    for (int i = 0; i < frames; ++i) {
+        if (blurMotion && accumulate == 0 && i == 1) {
+            scene.update(options.timeS);
+            runner.updateScene();
+        }
         runner.renderFrame();
+    }
     runner.waitForTimings(); // one frame to report: the frame is over, waiting costs nothing
     writeImage(options.outputPath, readOutputImage(runner, kind, aov, photonAov));
     if (!options.quiet) {

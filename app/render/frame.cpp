@@ -54,15 +54,19 @@ FrameRunner::FrameRunner(const Scene& scene, const Settings& settings, gl::Timin
                                                    mUpsample->getOutput());
     mCompose = std::make_unique<ComposePass>(mGBuffer->getGBuffer(), mAccumulate->getDirect(),
                                              mAccumulate->getIndirect());
-    mTonemap = std::make_unique<TonemapPass>(mCompose->getOutput());
+    mMotionBlur = std::make_unique<MotionBlurPass>(mGBuffer->getGBuffer());
+    mDepthBlur = std::make_unique<DepthBlurPass>(mGBuffer->getGBuffer());
+    mBloom = std::make_unique<BloomPass>();
+    mTotal = &mCompose->getOutput();
+    mTonemap = std::make_unique<TonemapPass>(*mTotal);
     resizePasses();
 }
 
-std::array<Pass*, 13> FrameRunner::getPasses() const {
-    return {mGBuffer.get(), mLightViews.get(), mImportance.get(), mEmit.get(),
-            mDirect.get(),  mTrace.get(),      mDensity.get(),    mSplat.get(),
-            mDenoise.get(), mUpsample.get(),   mAccumulate.get(), mCompose.get(),
-            mTonemap.get()};
+std::array<Pass*, 16> FrameRunner::getPasses() const {
+    return {mGBuffer.get(),    mLightViews.get(), mImportance.get(), mEmit.get(),
+            mDirect.get(),     mTrace.get(),      mDensity.get(),    mSplat.get(),
+            mDenoise.get(),    mUpsample.get(),   mAccumulate.get(), mCompose.get(),
+            mMotionBlur.get(), mDepthBlur.get(),  mBloom.get(),      mTonemap.get()};
 }
 
 void FrameRunner::resizePasses() {
@@ -99,8 +103,7 @@ void FrameRunner::setSettings(const Settings& settings) {
 
 void FrameRunner::updateFrameConstants() {
     // Accumulated frames look through new sub-pixel offsets: the average is anti-aliased.
-    const glm::vec2 jitter =
-        mFrameSettings.accumulate > 0 ? computePixelJitter(mHistoryFrames) : glm::vec2(0.0f);
+    const glm::vec2 jitter = computeFrameJitter(mFrameSettings, mHistoryFrames);
     gpu::FrameConstants fc = computeFrameConstants(mScene, mGpuScene, mFrameSettings, mWidth,
                                                    mHeight, getFrameSeed(), jitter);
     mClipFromWorld = fc.clipFromWorld;
@@ -226,11 +229,35 @@ void FrameRunner::renderFrame() {
     ++mSequenceFrames;
     ++mFramesDrawn;
     runPass(*mCompose, inputs);
+    mTotal = &runPostPasses(inputs);
+    mTonemap->setInput(*mTotal);
     runPass(*mTonemap, inputs);
     if (auto samples = mTimer.collect()) {
         setTimings(*samples);
         adaptPhotonBudget();
     }
+}
+
+const gl::Texture& FrameRunner::runPostPasses(const FrameInputs& inputs) {
+    // Camera effects on the scene's light first (the shutter, then the lens), then the bloom
+    // that scatters the focused image.
+    const gl::Texture* hdr = &mCompose->getOutput();
+    if (mFrameSettings.hasMotionBlur()) {
+        mMotionBlur->setInput(*hdr);
+        runPass(*mMotionBlur, inputs);
+        hdr = &mMotionBlur->getOutput();
+    }
+    if (mFrameSettings.hasDepthBlur()) {
+        mDepthBlur->setInput(*hdr);
+        runPass(*mDepthBlur, inputs);
+        hdr = &mDepthBlur->getOutput();
+    }
+    if (mFrameSettings.hasBloom()) {
+        mBloom->setInput(*hdr);
+        runPass(*mBloom, inputs);
+        hdr = &mBloom->getOutput();
+    }
+    return *hdr;
 }
 
 void FrameRunner::adaptPhotonBudget() {
@@ -298,7 +325,7 @@ const gl::Texture& FrameRunner::getAov(Aov aov) const {
     case Aov::Indirect:
         return mAccumulate->getIndirect();
     case Aov::Total:
-        return mCompose->getOutput();
+        return *mTotal;
     case Aov::Display:
         return mTonemap->getOutput();
     }
@@ -316,7 +343,8 @@ size_t FrameRunner::getGpuBytes() const {
     const size_t pixels = static_cast<size_t>(mWidth) * static_cast<size_t>(mHeight);
     return mGpuScene.getGpuBytes() + mPhotonBuffers.getGpuBytes() + mImportance->getGpuBytes() +
            mDensity->getGpuBytes() + mGBuffer->getGBuffer().getGpuBytes() +
-           mLightViews->getGBuffer().getGpuBytes() +
+           mLightViews->getGBuffer().getGpuBytes() + mMotionBlur->getGpuBytes() +
+           mDepthBlur->getGpuBytes() + mBloom->getGpuBytes() +
            pixels * (kFullResolutionRgba32F * kBytesRgba32F + kBytesRgba8) +
            size_t(splat.x) * size_t(splat.y) * kSplatResolutionRgba32F * kBytesRgba32F;
 }

@@ -13,6 +13,7 @@
 #include "render/photon_density_pass.h"
 #include "render/photon_emit_pass.h"
 #include "render/photon_trace_pass.h"
+#include "render/post_pass.h"
 #include "render/shading_passes.h"
 #include "render/splat_pass.h"
 #include "render/upsample_pass.h"
@@ -79,6 +80,8 @@ class FrameRunner {
     gl::TimingMethod getTimingMethod() const { return mTimer.getMethod(); }
 
     // Linear radiance (Direct, Indirect, Total) or display values (Display), row 0 at the bottom.
+    // Total is after the post passes (motion blur, depth blur, bloom) when any is on; Direct and
+    // Indirect are the lights as composed, never post-processed.
     const gl::Texture& getAov(Aov aov) const;
     // The last frame's own direct or indirect light, before accumulation (tests, debug views).
     const gl::Texture& getFrameLight(Aov aov) const;
@@ -106,8 +109,11 @@ class FrameRunner {
     void updateFrameConstants();
     void resetHistory();
     // Every pass in frame order, for resize and shader reload.
-    std::array<Pass*, 13> getPasses() const;
+    std::array<Pass*, 16> getPasses() const;
     void runPass(Pass& pass, const FrameInputs& inputs);
+    // The post passes that are on, chained from the composed image; returns their output (the
+    // composed image when none is on).
+    const gl::Texture& runPostPasses(const FrameInputs& inputs);
 
     const Scene& mScene;
     Settings mSettings;
@@ -157,6 +163,10 @@ class FrameRunner {
     std::unique_ptr<AccumulatePass> mAccumulate;
     std::unique_ptr<DirectPass> mDirect;
     std::unique_ptr<ComposePass> mCompose;
+    std::unique_ptr<MotionBlurPass> mMotionBlur;
+    std::unique_ptr<DepthBlurPass> mDepthBlur;
+    std::unique_ptr<BloomPass> mBloom;
+    const gl::Texture* mTotal = nullptr; // the last frame's total: compose's or the post passes'
     std::unique_ptr<TonemapPass> mTonemap;
 };
 

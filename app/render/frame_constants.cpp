@@ -41,6 +41,10 @@ glm::vec2 computePixelJitter(uint32_t frame) {
     return computeHaltonOffset(frame, 2, 3);
 }
 
+glm::vec2 computeFrameJitter(const FrameSettings& settings, uint32_t historyFrames) {
+    return settings.accumulate > 0 ? computePixelJitter(historyFrames) : glm::vec2(0.0f);
+}
+
 glm::vec2 computeShadowJitter(uint32_t frame) {
     return computeHaltonOffset(frame, 5, 7);
 }

@@ -24,6 +24,8 @@ gpu::FrameConstants computeFrameConstants(const Scene& scene, const GpuScene& gp
 // The sub-pixel offset of accumulated frame `frame` in [-0.5, 0.5)^2 pixels: none for frame 0,
 // then the Halton (2, 3) sequence, so that N frames cover the pixel evenly.
 glm::vec2 computePixelJitter(uint32_t frame);
+// The sub-pixel offset a frame looks through: computePixelJitter while accumulating, else none.
+glm::vec2 computeFrameJitter(const FrameSettings& settings, uint32_t historyFrames);
 
 // The light cameras' offset for accumulated frame `frame`, in texels of their G-buffers:
 // (Halton 5, 7) - 1/2, none for frame 0. Bases apart from computePixelJitter's, so the two

@@ -24,6 +24,11 @@ constexpr GBufferChannel kChannels[] = {
     {"transmissive", "GBUFFER_TRANSMISSIVE", gl::Format::RGBA16F,
      "transmittance rgb; w = index of refraction"},
     {"emission", "GBUFFER_EMISSION", gl::Format::RGBA16F, "emitted radiance rgb, W/(m^2 sr)"},
+    {"velocity", "GBUFFER_VELOCITY", gl::Format::RG16F,
+     "screen-space motion since the last frame drawn, in pixels (x right, y up): where this "
+     "surface point was, moved with its instance and seen through the last frame's camera; 0 where "
+     "nothing was hit (motion blur)",
+     true},
 };
 
 } // namespace
@@ -44,6 +49,7 @@ GBuffer::GBuffer(std::string_view label, int width, int height, int layers, bool
     : mWidth(width), mHeight(height), mLayers(layers) {
     const std::string base(label);
     for (const GBufferChannel& c : kChannels) {
+        if (isArray && c.viewerOnly) continue; // light views: the table's shared channels
         const std::string name = base + " " + std::string(c.name);
         mChannels.push_back(isArray
                                 ? gl::Texture::create2DArray(name, c.format, width, height, layers)
@@ -96,7 +102,7 @@ void GBuffer::bindTextures(int firstUnit) const {
 }
 
 const gl::Texture& GBuffer::getChannel(std::string_view name) const {
-    for (size_t i = 0; i < std::size(kChannels); ++i) {
+    for (size_t i = 0; i < mChannels.size(); ++i) {
         if (kChannels[i].name == name) return mChannels[i];
     }
     throw std::logic_error("no G-buffer channel named " + std::string(name));
@@ -105,19 +111,29 @@ const gl::Texture& GBuffer::getChannel(std::string_view name) const {
 size_t GBuffer::getGpuBytes() const {
     constexpr size_t kBytesRgba32F = 16;
     constexpr size_t kBytesRgba16F = 8;
+    constexpr size_t kBytesRg16F = 4;
     constexpr size_t kBytesDepth = 4;
     size_t perTexel = kBytesDepth;
-    for (const GBufferChannel& c : kChannels) {
-        perTexel += c.format == gl::Format::RGBA32F ? kBytesRgba32F : kBytesRgba16F;
+    for (const gl::Texture& c : mChannels) {
+        perTexel += c.getFormat() == gl::Format::RGBA32F ? kBytesRgba32F
+                    : c.getFormat() == gl::Format::RG16F ? kBytesRg16F
+                                                         : kBytesRgba16F;
     }
     return perTexel * static_cast<size_t>(mWidth) * static_cast<size_t>(mHeight) *
            static_cast<size_t>(mLayers);
 }
 
 void appendGBufferParams(std::vector<gpu::GBufferParams>& blocks, const GpuScene& scene,
-                         const glm::mat4& clipFromWorld, const glm::vec4& eye) {
+                         const glm::mat4& clipFromWorld, const glm::vec4& eye,
+                         const glm::mat4& previousClipFromWorld, glm::vec2 targetSizePx,
+                         glm::vec2 jitterMotionPx) {
+    const glm::vec4 pixelScale(0.5f * targetSizePx, jitterMotionPx);
     for (uint32_t i = 0; i < scene.getInstanceCount(); ++i)
-        blocks.push_back({.clipFromWorld = clipFromWorld, .eye = eye, .control = {i, 0, 0, 0}});
+        blocks.push_back({.clipFromWorld = clipFromWorld,
+                          .previousClipFromWorld = previousClipFromWorld,
+                          .eye = eye,
+                          .pixelScale = pixelScale,
+                          .control = {i, 0, 0, 0}});
 }
 
 void drawSceneGBuffer(const gl::Program& program, const GpuScene& scene,

@@ -23,6 +23,9 @@ struct GBufferChannel {
     std::string_view define; // GLSL output location macro
     gl::Format format;
     std::string_view meaning;
+    // Written for the viewer only (light views have no such attachment; their draws' writes to
+    // its location are dropped). Such channels come last, so the others' indices match.
+    bool viewerOnly = false;
 };
 
 std::span<const GBufferChannel> getGBufferChannels();
@@ -61,9 +64,14 @@ class GBuffer {
 
 // Appends the parameter blocks of one view: one per instance of the scene, seen through
 // clipFromWorld. `eye` is the camera position (w = 1) or the direction toward an orthographic
-// camera (w = 0): normals are turned to face it, since surfaces are two-sided.
+// camera (w = 0): normals are turned to face it, since surfaces are two-sided. The velocity
+// channel compares each point with where the instance's previous transform put it, seen through
+// previousClipFromWorld, in pixels of a target of targetSizePx, less jitterMotionPx (the change
+// of sub-pixel offset that both cameras hold).
 void appendGBufferParams(std::vector<gpu::GBufferParams>& blocks, const GpuScene& scene,
-                         const glm::mat4& clipFromWorld, const glm::vec4& eye);
+                         const glm::mat4& clipFromWorld, const glm::vec4& eye,
+                         const glm::mat4& previousClipFromWorld, glm::vec2 targetSizePx,
+                         glm::vec2 jitterMotionPx = glm::vec2(0.0f));
 
 // Rasterises every instance of the scene into the bound G-buffer target, instance i with
 // blocks[first + i] (appendGBufferParams).

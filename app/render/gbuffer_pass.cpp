@@ -1,6 +1,7 @@
 // Rasterises the scene for the viewer and for each light camera (one array layer per view).
 #include "render/gbuffer_pass.h"
 
+#include "render/frame_constants.h"
 #include "render/gpu_scene.h"
 
 namespace ispm {
@@ -11,6 +12,7 @@ GBufferPass::GBufferPass()
 void GBufferPass::resize(int width, int height) {
     if (mGBuffer.getWidth() != width || mGBuffer.getHeight() != height) {
         mGBuffer = GBuffer("viewer gbuffer", width, height, 1, false);
+        mHasPrevious = false;
     }
 }
 
@@ -19,9 +21,18 @@ void GBufferPass::execute(const FrameInputs& inputs) {
     mGBuffer.bindTarget(0);
     mVertexArray.bind();
     inputs.scene.bind();
+    // The first frame (or the first at a new size) has no last frame: it does not move.
+    const glm::mat4 previous = mHasPrevious ? mPreviousClipFromWorld : inputs.clipFromWorld;
+    // Accumulated frames look through sub-pixel offsets (inside both cameras): not motion.
+    const glm::vec2 jitter = computeFrameJitter(inputs.settings, inputs.historyFrames);
+    const glm::vec2 jitterMotion = mHasPrevious ? jitter - mPreviousJitterPx : glm::vec2(0.0f);
+    mPreviousClipFromWorld = inputs.clipFromWorld;
+    mPreviousJitterPx = jitter;
+    mHasPrevious = true;
     std::vector<gpu::GBufferParams> blocks;
     appendGBufferParams(blocks, inputs.scene, inputs.clipFromWorld,
-                        glm::vec4(inputs.cameraPosition, 1.0f));
+                        glm::vec4(inputs.cameraPosition, 1.0f), previous,
+                        glm::vec2(inputs.width, inputs.height), jitterMotion);
     mParams.upload(blocks);
     drawSceneGBuffer(mProgram.get(), inputs.scene, mParams, 0);
 }
@@ -44,7 +55,9 @@ void LightViewPass::execute(const FrameInputs& inputs) {
         const LightCamera& cam = cameras[i];
         const glm::vec4 eye =
             cam.isOrthographic ? glm::vec4(-cam.axis, 0.0f) : glm::vec4(cam.origin, 1.0f);
-        appendGBufferParams(blocks, inputs.scene, inputs.scene.getLightClipFromWorld(i), eye);
+        const glm::mat4 clipFromWorld = inputs.scene.getLightClipFromWorld(i);
+        appendGBufferParams(blocks, inputs.scene, clipFromWorld, eye, clipFromWorld,
+                            glm::vec2(float(resolution)));
     }
     mParams.upload(blocks);
     mVertexArray.bind();

@@ -21,6 +21,11 @@ class GBufferPass final : public Pass {
     ParamBlocks<gpu::GBufferParams> mParams;
     gl::VertexArray mVertexArray;
     GBuffer mGBuffer;
+    // The camera of the last frame drawn (its sub-pixel offset included), for the velocity
+    // channel; none after a resize.
+    glm::mat4 mPreviousClipFromWorld{1.0f};
+    glm::vec2 mPreviousJitterPx{0.0f}; // its sub-pixel offset
+    bool mHasPrevious = false;
 };
 
 class LightViewPass final : public Pass {

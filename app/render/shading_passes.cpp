@@ -39,9 +39,10 @@ void ComposePass::execute(const FrameInputs& inputs) {
 }
 
 TonemapPass::TonemapPass(const gl::Texture& hdr)
-    : mHdr(hdr), mHistogram(ReloadableProgram(
-                     {.label = "luminance histogram",
-                      .stages = {{gl::ShaderStage::Compute, "tonemap/luminance_histogram.comp"}}})),
+    : mHdr(&hdr),
+      mHistogram(ReloadableProgram(
+          {.label = "luminance histogram",
+           .stages = {{gl::ShaderStage::Compute, "tonemap/luminance_histogram.comp"}}})),
       mResolve(ReloadableProgram(
           {.label = "luminance resolve",
            .stages = {{gl::ShaderStage::Compute, "tonemap/luminance_resolve.comp"}}})),
@@ -51,7 +52,7 @@ TonemapPass::TonemapPass(const gl::Texture& hdr)
 void TonemapPass::execute(const FrameInputs& inputs) {
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
     mExposure.bindBase(gl::BufferTarget::Storage, gpu::kBindingExposure);
-    mHdr.bindUnit(gpu::kUnitHdr);
+    mHdr->bindUnit(gpu::kUnitHdr);
     if (!inputs.settings.luminanceMax) {
         // The histogram and counts; the white point stays for eye adaptation.
         mExposure.clearRangeToZero(0, offsetof(gpu::ExposureData, luminanceMax));

@@ -44,6 +44,8 @@ class TonemapPass final : public Pass {
   public:
     explicit TonemapPass(const gl::Texture& hdr);
     const char* getName() const override { return "tonemap"; }
+    // The radiance it maps from the next frame on: the composed image, or the post passes'.
+    void setInput(const gl::Texture& hdr) { mHdr = &hdr; }
     void resize(int width, int height) override { mTarget.resize(width, height); }
     void execute(const FrameInputs& inputs) override;
     const gl::Texture& getOutput() const { return mTarget.getTexture(); }
@@ -56,7 +58,7 @@ class TonemapPass final : public Pass {
     }
 
   private:
-    const gl::Texture& mHdr;
+    const gl::Texture* mHdr;
     ReloadableProgram mHistogram;
     ReloadableProgram mResolve;
     gl::Buffer mExposure;

@@ -133,6 +133,12 @@ FrameSettings resolveFrameSettings(const Settings& settings) {
     f.splatSize = computeSplatSize(settings, f.width, f.height);
     f.denoiseIterations = computeDenoiseIterations(settings, f.splatSize.x, f.splatSize.y);
     f.accumulate = settings.getInt("accumulate");
+    f.motionBlurShutter = settings.getFloat("motion_blur_shutter");
+    f.dofApertureM = settings.getFloat("dof_aperture_m");
+    f.dofFocusM = getIfSet(settings, "dof_focus_m");
+    f.bloomIntensity = settings.getFloat("bloom_intensity");
+    f.bloomThreshold = settings.getFloat("bloom_threshold");
+    f.bloomRadiusPx = settings.getFloat("bloom_radius_px");
     return f;
 }
 

@@ -65,6 +65,18 @@ struct FrameSettings {
     glm::ivec2 splatSize{0};   // the splat buffer: the image divided, rounded up
     int denoiseIterations = 0; // derived from the splat buffer's size
     int accumulate = 0;        // history length in frames (0: off)
+    // Post-processing (PostPass); each 0 = off.
+    float motionBlurShutter = 0.0f; // fraction of a frame
+    float dofApertureM = 0.0f;      // lens diameter
+    std::optional<float> dofFocusM; // derived on the GPU (the image centre's depth)
+    float bloomIntensity = 0.0f;    // share of the light above the threshold spread
+    float bloomThreshold = 0.0f;    // luminance, W/(m^2 sr)
+    float bloomRadiusPx = 0.0f;     // 3 sigma
+
+    bool hasMotionBlur() const { return motionBlurShutter > 0.0f; }
+    bool hasDepthBlur() const { return dofApertureM > 0.0f; }
+    bool hasBloom() const { return bloomIntensity > 0.0f; }
+    bool hasPost() const { return hasMotionBlur() || hasDepthBlur() || hasBloom(); }
 
     bool hasIndirect() const { return bounces > 0 && photons > 0; }
 };

@@ -262,6 +262,68 @@ const std::vector<SettingDesc>& table() {
          "the fragment stage tests the same ellipsoid in both, so the images differ only on "
          "surfaces off the photon's plane but inside the box",
          toChoices(kSplatShapeChoices)},
+        // Post-processing (linear HDR, between compose and tone map): each off by default, and
+        // with all three off no post pass runs.
+        {"motion_blur_shutter",
+         SettingType::Float,
+         0,
+         0,
+         1,
+         "frames",
+         "motion blur: how long the shutter is open, as a fraction of a frame; each pixel's light "
+         "is spread evenly along its screen motion since the last frame (the G-buffer's velocity "
+         "channel: objects' and the camera's motion), centred on it, at most 64 px; energy "
+         "kept; 0 = off",
+         {}},
+        {"dof_aperture_m",
+         SettingType::Float,
+         0,
+         0,
+         10,
+         "m",
+         "depth blur: diameter of a thin lens; each pixel's light is spread evenly over its "
+         "circle of confusion, A abs(1/d - 1/dof_focus_m) H / (2 tan(fovY / 2)) pixels across at "
+         "depth d (H the image height; the focal length cancels for a given field of view), "
+         "radius at most 16 px; energy kept; 0 = off (a pinhole)",
+         {}},
+        {"dof_focus_m",
+         SettingType::Float,
+         0,
+         1e-3,
+         1e6,
+         "m",
+         "depth blur: distance along the view axis that is in focus; derived: the depth of the "
+         "surface at the image centre, read on the GPU each frame (infinitely far where the "
+         "centre shows no surface)",
+         {},
+         true},
+        {"bloom_intensity",
+         SettingType::Float,
+         0,
+         0,
+         1,
+         "",
+         "bloom: share of the light above bloom_threshold that is spread around its pixel by a "
+         "Gaussian (the rest stays), so the image's energy is kept; 0 = off",
+         {}},
+        {"bloom_threshold",
+         SettingType::Float,
+         1,
+         0,
+         1e9,
+         "W/(m^2 sr)",
+         "bloom: luminance (0.3 R + 0.6 G + 0.1 B, before exposure) above which light blooms; "
+         "a pixel gives the part of its radiance above it, hue kept (compare luminance_max, "
+         "which render prints)",
+         {}},
+        {"bloom_radius_px",
+         SettingType::Float,
+         16,
+         1,
+         64,
+         "px",
+         "bloom: reach of the Gaussian, 3 standard deviations",
+         {}},
     };
     return kTable;
 }

@@ -76,6 +76,7 @@ std::vector<DebugView> buildDebugViews() {
                          DebugView::Source::ViewerGBuffer, Aov::Display, i});
     }
     for (size_t i = 0; i < channels.size(); ++i) {
+        if (channels[i].viewerOnly) continue; // light views have no such attachment
         views.push_back({"light gbuffer " + std::string(channels[i].name),
                          DebugView::Source::LightGBuffer, Aov::Display, i});
     }

@@ -4,6 +4,8 @@
 layout(std140, binding = kBindingPassParams) uniform GBufferParamsBlock { GBufferParams params; };
 
 in vec3 vPositionW;
+in vec4 vClip;
+in vec4 vPreviousClip;
 flat in vec3 vNormalW;
 flat in uint vMaterial;
 flat in uint vInstance;
@@ -14,6 +16,7 @@ layout(location = GBUFFER_DIFFUSE) out vec4 outDiffuse;
 layout(location = GBUFFER_SPECULAR) out vec4 outSpecular;
 layout(location = GBUFFER_TRANSMISSIVE) out vec4 outTransmissive;
 layout(location = GBUFFER_EMISSION) out vec4 outEmission;
+layout(location = GBUFFER_VELOCITY) out vec2 outVelocity; // viewer only (dropped for lights)
 
 void main() {
     vec4 eye = params.eye;
@@ -29,4 +32,9 @@ void main() {
     outSpecular = m.specular;
     outTransmissive = m.transmissive;
     outEmission = vec4(m.emission.rgb, 0.0);
+    // A point behind the last frame's eye has no place in its image: no motion.
+    vec2 motionNdc = vPreviousClip.w > 0.0
+                         ? vClip.xy / vClip.w - vPreviousClip.xy / vPreviousClip.w
+                         : vec2(0.0);
+    outVelocity = motionNdc * params.pixelScale.xy - params.pixelScale.zw;
 }

@@ -4,7 +4,14 @@
 
 layout(std140, binding = kBindingPassParams) uniform GBufferParamsBlock { GBufferParams params; };
 
+layout(std430, binding = kBindingPreviousTransforms) readonly buffer PreviousTransforms {
+    mat4 previousWorldFromObject[];
+};
+
 out vec3 vPositionW;
+// This frame's and the last frame's clip positions (velocity), divided per fragment.
+out vec4 vClip;
+out vec4 vPreviousClip;
 flat out vec3 vNormalW;
 flat out uint vMaterial;
 flat out uint vInstance;
@@ -24,4 +31,7 @@ void main() {
     vMaterial = tri.w;
     vInstance = instance;
     gl_Position = params.clipFromWorld * positionW;
+    vClip = gl_Position;
+    vPreviousClip =
+        params.previousClipFromWorld * (previousWorldFromObject[instance] * vec4(p, 1.0));
 }

@@ -6,3 +6,4 @@ layout(binding = kUnitGBufferFirst + GBUFFER_DIFFUSE) uniform sampler2D uDiffuse
 layout(binding = kUnitGBufferFirst + GBUFFER_SPECULAR) uniform sampler2D uSpecular;
 layout(binding = kUnitGBufferFirst + GBUFFER_TRANSMISSIVE) uniform sampler2D uTransmissive;
 layout(binding = kUnitGBufferFirst + GBUFFER_EMISSION) uniform sampler2D uEmission;
+layout(binding = kUnitGBufferFirst + GBUFFER_VELOCITY) uniform sampler2D uVelocity;

@@ -131,10 +131,15 @@ ISPM_STATIC_ASSERT_SIZE(FilterParams, 16);
 // (std140, at kBindingPassParams; a view's draws are bound by range).
 struct GBufferParams {
     mat4 clipFromWorld;
-    vec4 eye;      // w = 1: the eye's position; w = 0: the direction toward an orthographic eye
-    uvec4 control; // x = the instance drawn, yzw unused
+    // The last frame's camera, for the velocity channel (the viewer's; a light view passes its
+    // own clipFromWorld, and has no velocity attachment anyway).
+    mat4 previousClipFromWorld;
+    vec4 eye;        // w = 1: the eye's position; w = 0: the direction toward an orthographic eye
+    vec4 pixelScale; // xy = half the target's size in pixels (NDC to pixels), zw = change of the
+                     // sub-pixel offset since the last frame, px (not motion: subtracted)
+    uvec4 control;   // x = the instance drawn, yzw unused
 };
-ISPM_STATIC_ASSERT_SIZE(GBufferParams, 96);
+ISPM_STATIC_ASSERT_SIZE(GBufferParams, 176);
 
 // Parameters of one sample of reference.comp, the path tracer (std140, at kBindingPassParams).
 struct ReferenceParams {

@@ -192,6 +192,14 @@ TEST_F(CliTest, BadCommandLineValuesExitTwo) {
     expectBadInput("render " + scene + " -o x.png --set nosuch=1", {"nosuch"});
     expectBadInput("render " + scene + " -o x.png --set gamma=-1", {"gamma"});
     expectBadInput("render " + scene + " -o x.png --set tonemap=sepia", {"tonemap", "sepia"});
+    // Post-processing: a shutter longer than the frame, a negative lens, bloom that would give
+    // more light than a pixel has.
+    expectBadInput("render " + scene + " -o x.png --set motion_blur_shutter=1.5",
+                   {"motion_blur_shutter"});
+    expectBadInput("render " + scene + " -o x.png --set dof_aperture_m=-0.1", {"dof_aperture_m"});
+    expectBadInput("render " + scene + " -o x.png --set dof_focus_m=0", {"dof_focus_m"});
+    expectBadInput("render " + scene + " -o x.png --set bloom_intensity=2", {"bloom_intensity"});
+    expectBadInput("render " + scene + " -o x.png --set bloom_radius_px=nan", {"bloom_radius_px"});
     expectBadInput("render " + scene + " -o x.pfm --aov sideways", {"--aov"});
     expectBadInput("render " + scene + " -o x.png --time -1", {"--time"});
     // Outputs that cannot be written are refused before the render (exit 2), not after it.
