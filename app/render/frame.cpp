@@ -342,7 +342,7 @@ size_t FrameRunner::getGpuBytes() const {
     const glm::ivec2 splat = mFrameSettings.splatSize;
     const size_t pixels = static_cast<size_t>(mWidth) * static_cast<size_t>(mHeight);
     return mGpuScene.getGpuBytes() + mPhotonBuffers.getGpuBytes() + mImportance->getGpuBytes() +
-           mDensity->getGpuBytes() + mGBuffer->getGBuffer().getGpuBytes() +
+           mDensity->getGpuBytes() + mSplat->getGpuBytes() + mGBuffer->getGBuffer().getGpuBytes() +
            mLightViews->getGBuffer().getGpuBytes() + mMotionBlur->getGpuBytes() +
            mDepthBlur->getGpuBytes() + mBloom->getGpuBytes() +
            pixels * (kFullResolutionRgba32F * kBytesRgba32F + kBytesRgba8) +

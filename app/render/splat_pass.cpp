@@ -8,6 +8,7 @@
 #include "render/gpu_scene.h"
 #include "render/shader_root.h"
 
+#include <shared/gather_data.h>
 #include <shared/photon_data.h>
 #include <shared/scene_data.h>
 #include <shared/splat_clip.h>
@@ -39,6 +40,21 @@ constexpr std::array<uint32_t, gpu::kSplatCubeVertices> kDiscIndices = {
 constexpr double kSplatOverlap = 32.0;
 constexpr float kMinRadiusFactor = 0.5f;
 constexpr float kMaxRadiusFactor = 2.0f;
+
+// The list's first size (slots: 1 MiB); it grows to 1.5x a frame's need when a frame needs more.
+constexpr size_t kInitialListSlots = size_t(1) << 18;
+constexpr double kListGrowth = 1.5;
+
+ReloadableProgram buildComputeProgram(const char* label, const char* path,
+                                      std::vector<std::string> defines) {
+    return ReloadableProgram({.label = label,
+                              .stages = {{gl::ShaderStage::Compute, path}},
+                              .defines = std::move(defines)});
+}
+
+unsigned divideRoundingUp(unsigned n, unsigned d) {
+    return (n + d - 1) / d;
+}
 
 } // namespace
 
@@ -79,7 +95,12 @@ SplatPass::SplatPass(const GBuffer& viewer, const PhotonBuffers& buffers, const 
                                   .defines = getGBufferDefines()})),
       mCubeVertexArray("splat cube vao"), mDiscVertexArray("splat disc vao"),
       mCubeIndices(gl::Buffer::fromSpan<uint32_t>("splat cube indices", kCubeIndices)),
-      mDiscIndices(gl::Buffer::fromSpan<uint32_t>("splat disc indices", kDiscIndices)) {
+      mDiscIndices(gl::Buffer::fromSpan<uint32_t>("splat disc indices", kDiscIndices)),
+      mBinCount(buildComputeProgram("gather bin count", "splat/gather_bin.comp", {})),
+      mBinFill(buildComputeProgram("gather bin fill", "splat/gather_bin.comp", {"FILL"})),
+      mScan(buildComputeProgram("gather scan", "splat/gather_scan.comp", {})),
+      mGather(buildComputeProgram("gather", "splat/gather.comp", getGBufferDefines())),
+      mGatherParams("gather parameters", sizeof(gpu::GatherParams)) {
     // Indexed: the vertex stage runs once per corner (8), not per triangle corner (36).
     mCubeVertexArray.setElementBuffer(mCubeIndices);
     mDiscVertexArray.setElementBuffer(mDiscIndices);
@@ -99,7 +120,55 @@ void SplatPass::clear(const FrameInputs& inputs) {
     mFramebuffer.clearColor(0, glm::vec4(0.0f));
 }
 
+void SplatPass::executeGather(const FrameInputs& inputs) {
+    const glm::ivec2 size = inputs.settings.splatSize;
+    resizeBuffer(size.x, size.y);
+    const unsigned tilesX = divideRoundingUp(unsigned(size.x), gpu::kGatherTilePx);
+    const unsigned tilesY = divideRoundingUp(unsigned(size.y), gpu::kGatherTilePx);
+    const size_t tileBytes = sizeof(glm::uvec4) + size_t(tilesX) * tilesY * sizeof(gpu::GatherTile);
+    if (mTiles.getSize() < tileBytes) mTiles = gl::Buffer("gather tiles", tileBytes);
+    mTiles.clearToZero();
+    gpu::GatherParams params{
+        .tiles = glm::uvec4(tilesX, tilesY, tilesX * tilesY, inputs.settings.radiusMode),
+        .splat = glm::uvec4(size.x, size.y, inputs.settings.splatDivisor, 0),
+        .shape = glm::vec4(inputs.settings.squash, 0.0f, 0.0f, 0.0f)};
+    mGatherParams.upload(0, sizeof(params), &params);
+    mGatherParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
+    inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
+    mBuffers.bind();
+    mClip.bindBase(gl::BufferTarget::Storage, gpu::kBindingSplatClip);
+    mTiles.bindBase(gl::BufferTarget::Storage, gpu::kBindingGatherTiles);
+    const unsigned binGroups =
+        divideRoundingUp(mBuffers.getResultCapacity(), gpu::kGatherBinGroupSize);
+    mBinCount.use();
+    gl::dispatchCompute(binGroups);
+    gl::memoryBarrier(gl::Barrier::Storage);
+    mScan.use();
+    gl::dispatchCompute(1);
+    gl::memoryBarrier(gl::Barrier::Storage | gl::Barrier::BufferUpdate);
+    // The list's length is known only now: read it (a wait for the GPU) and grow the list when
+    // this frame needs more than it holds, so no photon is ever dropped from a tile.
+    const size_t slots = mTiles.read<uint32_t>(1)[0];
+    if (slots * sizeof(uint32_t) > mList.getSize()) {
+        const auto grown = std::max(kInitialListSlots, size_t(double(slots) * kListGrowth));
+        mList = gl::Buffer("gather list", grown * sizeof(uint32_t));
+    }
+    mList.bindBase(gl::BufferTarget::Storage, gpu::kBindingGatherList);
+    mBinFill.use();
+    gl::dispatchCompute(binGroups);
+    gl::memoryBarrier(gl::Barrier::Storage);
+    mViewer.bindTextures(gpu::kUnitGBufferFirst);
+    mIndirect.bindImage(gpu::kImageGatherOutput, false, true);
+    mGather.use();
+    gl::dispatchCompute(tilesX, tilesY);
+    gl::memoryBarrier(gl::Barrier::TextureFetch | gl::Barrier::Framebuffer);
+}
+
 void SplatPass::execute(const FrameInputs& inputs) {
+    if (inputs.settings.splatMode == gpu::kSplatModeGather) {
+        executeGather(inputs);
+        return;
+    }
     clear(inputs);
     mFramebuffer.bind();
     // Additive float accumulation. A flat disc covers a pixel once from either side; of a box,

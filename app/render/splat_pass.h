@@ -1,6 +1,7 @@
 // SplatPass: every result photon is drawn as an instanced flat square in its surface plane (or,
 // splat_shape box, a box squashed along its normal); the fragment stage adds BRDF x power x
-// kernel to the indirect-light buffer (additive RGBA32F).
+// kernel to the indirect-light buffer (additive RGBA32F). splat_mode gather bins the photons
+// into screen tiles instead, and each pixel sums its tile's photons (shared/gather_data.h).
 // The draw count comes from the GPU (glDrawArraysIndirect), split into `splat_passes` calls.
 // The buffer may be smaller than the image (`splat_resolution`): each of its pixels then shades
 // one viewer G-buffer pixel of the block it covers, and UpsamplePass brings it back.
@@ -46,13 +47,22 @@ class SplatPass final : public Pass {
     const char* getName() const override { return "splat"; }
     // The buffer follows the image size and `splat_resolution` at each execute.
     void execute(const FrameInputs& inputs) override;
-    void reloadPrograms(ShaderReloadReport& report) override { mProgram.reloadIfChanged(report); }
+    void reloadPrograms(ShaderReloadReport& report) override {
+        mProgram.reloadIfChanged(report);
+        mBinCount.reloadIfChanged(report);
+        mBinFill.reloadIfChanged(report);
+        mScan.reloadIfChanged(report);
+        mGather.reloadIfChanged(report);
+    }
+    // The tiled gather's buffers (they grow to the largest frame's need).
+    size_t getGpuBytes() const { return mTiles.getSize() + mList.getSize(); }
     const gl::Texture& getOutput() const { return mIndirect; }
     // No photons this frame: the buffer, sized as execute would, holds no light.
     void clear(const FrameInputs& inputs);
 
   private:
     void resizeBuffer(int width, int height);
+    void executeGather(const FrameInputs& inputs);
 
     const GBuffer& mViewer;
     const PhotonBuffers& mBuffers;
@@ -65,6 +75,14 @@ class SplatPass final : public Pass {
     ParamBlocks<gpu::SplatParams> mParams{"splat parameters"}; // one per draw
     gl::Texture mIndirect;
     gl::Framebuffer mFramebuffer;
+    // splat_mode gather: binning (count, then fill), the tiles' list offsets, the gather.
+    ReloadableProgram mBinCount;
+    ReloadableProgram mBinFill;
+    ReloadableProgram mScan;
+    ReloadableProgram mGather;
+    gl::Buffer mGatherParams; // gpu::GatherParams
+    gl::Buffer mTiles;        // header + gpu::GatherTile per tile
+    gl::Buffer mList;         // photon indices, tile by tile
 };
 
 } // namespace ispm

@@ -1,6 +1,7 @@
 // Resolving the settings table into FrameSettings, with the derived values.
 #include "scene/frame_settings.h"
 
+#include <shared/gather_data.h>
 #include <shared/photon_data.h>
 #include <shared/photon_scatter.h>
 #include <shared/scene_data.h>
@@ -22,6 +23,8 @@ static_assert(kRngGeneratorChoices[gpu::kRngPcg] == "pcg" &&
 static_assert(kRngModeChoices[gpu::kRngFixed] == "fixed" &&
               kRngModeChoices[gpu::kRngPerFrame] == "per_frame" &&
               kRngModeChoices[gpu::kRngObjectSpace] == "object_space");
+static_assert(kSplatModeChoices[gpu::kSplatModeRaster] == "raster" &&
+              kSplatModeChoices[gpu::kSplatModeGather] == "gather");
 static_assert(kSplatShapeChoices[gpu::kSplatShapeDisc] == "disc" &&
               kSplatShapeChoices[gpu::kSplatShapeBox] == "box");
 static_assert(kRadiusModeChoices[gpu::kRadiusTravel] == "travel");
@@ -129,6 +132,7 @@ FrameSettings resolveFrameSettings(const Settings& settings) {
     f.squash = settings.getFloat("squash");
     f.splatPasses = settings.getInt("splat_passes");
     f.splatShape = getChoice(settings, "splat_shape");
+    f.splatMode = getChoice(settings, "splat_mode");
     f.splatDivisor = computeSplatDivisor(settings, f.width, f.height);
     f.splatSize = computeSplatSize(settings, f.width, f.height);
     f.denoiseIterations = computeDenoiseIterations(settings, f.splatSize.x, f.splatSize.y);

@@ -24,6 +24,7 @@ inline constexpr std::array<std::string_view, 3> kRngModeChoices = {"fixed", "pe
 inline constexpr std::array<std::string_view, 3> kRadiusModeChoices = {"travel", "path_density",
                                                                        "density"};
 inline constexpr std::array<std::string_view, 2> kSplatShapeChoices = {"disc", "box"};
+inline constexpr std::array<std::string_view, 2> kSplatModeChoices = {"raster", "gather"};
 inline constexpr std::array<std::string_view, 4> kSplatResolutionChoices = {"auto", "1", "1/2",
                                                                             "1/4"};
 
@@ -61,6 +62,7 @@ struct FrameSettings {
     float squash = 0.0f;
     int splatPasses = 1;
     uint32_t splatShape = 0;   // gpu::kSplatShape*
+    uint32_t splatMode = 0;    // gpu::kSplatMode*
     int splatDivisor = 1;      // image pixels per splat-buffer pixel along an axis (1, 2, 4)
     glm::ivec2 splatSize{0};   // the splat buffer: the image divided, rounded up
     int denoiseIterations = 0; // derived from the splat buffer's size

@@ -254,6 +254,13 @@ const std::vector<SettingDesc>& table() {
          "same surface shows, at most this many frames a pixel) and the direct light's restarts; "
          "a changed light or setting starts again; 0 = off (each frame alone)",
          {}},
+        {"splat_mode", SettingType::Enum, 0, 0, 1, "",
+         "how result photons reach the image: raster (each drawn as an instanced splat of "
+         "splat_shape, the thesis's method) or gather (binned on the GPU into 16x16-pixel tiles "
+         "by the projected box of their splat, each pixel summing its tile's photons with the "
+         "same kernel, normal and clip tests: the image of splat_shape box up to float "
+         "round-off)",
+         toChoices(kSplatModeChoices)},
         {"splat_shape", SettingType::Enum, 0, 0, 1, "",
          "what each photon's splat rasterises: disc (a flat square round its disc in its surface "
          "plane, cut where walls cut the disc) or box (the cube of the thesis, squashed along the "

@@ -1,7 +1,6 @@
 // Splat fragment stage: the viewer G-buffer point under the pixel receives the photon when it lies
-// inside the photon's ellipsoid and faces the same way; it gets BRDF x power x kernel, the kernel
-// 2 / (pi r^2) (1 - s^2 / r^2) over the in-plane distance s, which integrates to 1 over the disc
-// of radius r: one photon's power is conserved on a flat surface.
+// inside the photon's ellipsoid, on its side of every clip line, and faces the same way; it gets
+// BRDF x power x the splat's weight (lib/splat_kernel.glsl).
 #include "lib/frame_constants.glsl"
 #include "lib/brdf.glsl"
 #include "shared/photon_data.h"
@@ -11,6 +10,10 @@
 layout(std140, binding = kBindingPassParams) uniform SplatParamsBlock { SplatParams params; };
 
 #include "lib/viewer_gbuffer.glsl"
+
+// The kernel alone: splat.frag reads no photon buffer.
+#define ISPM_SPLAT_WEIGHT_ONLY
+#include "lib/splat_kernel.glsl"
 
 flat in vec4 vCentre;
 flat in vec3 vNormal;
@@ -28,28 +31,12 @@ void main() {
     ivec2 pixel = getBlockGBufferPixel(ivec2(gl_FragCoord.xy), int(params.shape.y));
     vec4 position = texelFetch(uPosition, pixel, 0);
     if (position.w < 0.5) discard;
-    vec3 pn = vNormal;
     vec3 n = texelFetch(uNormal, pixel, 0).xyz;
-    if (dot(n, pn) <= 0.0) discard; // the surface faces away from where the photon arrived
-    float radius = vCentre.w;
-    vec3 d = position.xyz - vCentre.xyz;
-    float along = dot(d, pn);
-    vec3 inPlane = d - along * pn;
-    float s2 = dot(inPlane, inPlane) / (radius * radius);
-    float z = along / (radius * params.shape.x);
-    if (s2 + z * z > 1.0) discard;
-    // Beyond a clip line lies another surface (a wall the disc would climb or pass through).
-    vec2 x = vec2(dot(inPlane, vTangent), dot(inPlane, vBitangent));
-    // Gather-style renormalisation: the pixel's own disc (radius r, centred on it) is cut by the
-    // same lines; dividing by the part of it that lies on the surface keeps a uniform irradiance
-    // uniform up to the wall, and the photon's power on the surfaces it reached.
-    for (uint i = 0u; i < vLines; ++i) {
-        if (isBeyondLine(x, vPoles[i])) discard;
-    }
-    float keptMass = computeKeptMass(x, vPoles, radius);
-    float kernel = 2.0 * kInvPi / (radius * radius) * (1.0 - s2);
+    float weight = computeSplatWeight(vCentre, vNormal, vTangent, vBitangent, vLines, vPoles,
+                                      params.shape.x, position.xyz, n);
+    if (weight < 0.0) discard;
     vec3 wi = -vIncoming;
     vec3 wo = normalize(frame.cameraPosition.xyz - position.xyz);
     vec3 f = evaluateBrdf(texelFetch(uDiffuse, pixel, 0).rgb, texelFetch(uSpecular, pixel, 0), n, wi, wo);
-    outRadiance = vec4(f * vPower * (kernel / keptMass), 1.0);
+    outRadiance = vec4(f * vPower * weight, 1.0);
 }

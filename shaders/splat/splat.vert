@@ -13,6 +13,8 @@ layout(std430, binding = kBindingPhotonCounters) readonly buffer CounterBuffer {
 layout(std430, binding = kBindingSplatClip) readonly buffer SplatClip { vec4 splatClip[]; };
 layout(std140, binding = kBindingPassParams) uniform SplatParamsBlock { SplatParams params; };
 
+#include "lib/splat_kernel.glsl"
+
 // Everything the fragment stage needs of the photon, constant over its box: read and derived once
 // per corner here rather than once per covered pixel.
 flat out vec4 vCentre;   // xyz = position (m), w = radius (m)
@@ -37,21 +39,14 @@ void main() {
     vec3 b;
     buildSplatBasis(n, t, b);
     // Every radius mode's radius, from the density pass; 0 for a photon whose disc cannot reach
-    // the view: it collapses to a point and draws nothing.
-    float radius = photon.power.w;
-    // Density radii come with clip lines: the box or square shrinks to the lines across the basis
-    // axes (a box scene's walls), and the fragment stage drops what lies beyond any line.
-    vec4 extent = vec4(radius); // along +t, -t, +b, -b
-    vLines = 0u;
-    for (uint i = 0u; i < kClipRays; ++i) vPoles[i] = vec2(0.0);
-    if (params.control.x == kRadiusDensity && radius > 0.0) {
-        extent = splatClip[id * kClipVec4s + kClipRays / 2u];
-        for (uint i = 0u; i < kClipRays / 2u; ++i) {
-            vec4 two = splatClip[id * kClipVec4s + i];
-            if (dot(two.xy, two.xy) > 0.0) vPoles[vLines++] = two.xy;
-            if (dot(two.zw, two.zw) > 0.0) vPoles[vLines++] = two.zw;
-        }
-    }
+    // the view: it collapses to a point and draws nothing. Density radii come with clip lines:
+    // the box or square shrinks to the lines across the basis axes (a box scene's walls), and
+    // the fragment stage drops what lies beyond any line.
+    SplatShape shape = loadSplatShape(id, params.control.x);
+    float radius = shape.radius;
+    vec4 extent = shape.extent; // along +t, -t, +b, -b
+    vLines = shape.lines;
+    vPoles = shape.poles;
     vec3 c = vec3((gl_VertexID & 1) != 0 ? 1.0 : -1.0, (gl_VertexID & 2) != 0 ? 1.0 : -1.0,
                   (gl_VertexID & 4) != 0 ? 1.0 : -1.0);
     float alongT = c.x > 0.0 ? extent.x : extent.y;

@@ -101,8 +101,8 @@ double computePixelArea(const Scene& scene, int x, int y, int size) {
     return 0.5 * glm::length(glm::cross(c11 - c00, c01 - c10));
 }
 
-// Both splat shapes: the flat square and the thesis's squashed box shade the same pixels of a
-// plane, so each conserves the photon's power there.
+// Both splat shapes and the tiled gather: the flat square, the thesis's squashed box and the
+// gather's tiles shade the same pixels of a plane, so each conserves the photon's power there.
 class SplatShapeEnergyTest : public PhotonEnergyTest,
                              public ::testing::WithParamInterface<const char*> {};
 
@@ -125,7 +125,11 @@ TEST_P(SplatShapeEnergyTest, OneSplatOnAPlaneIntegratesToBrdfTimesPower) {
     settings.set("radius_min", kRadiusM, "test");
     settings.set("radius_max", kRadiusM, "test");
     settings.setEnum("radius_mode", "travel", "test"); // the radius set above, not the density's
-    settings.setEnum("splat_shape", GetParam(), "test");
+    if (std::string(GetParam()) == "gather") {
+        settings.setEnum("splat_mode", "gather", "test");
+    } else {
+        settings.setEnum("splat_shape", GetParam(), "test");
+    }
     FrameRunner runner(scene, settings, gl::TimingMethod::CpuFinish);
     runner.renderFrame();
 
@@ -175,7 +179,7 @@ TEST_P(SplatShapeEnergyTest, OneSplatOnAPlaneIntegratesToBrdfTimesPower) {
         EXPECT_NEAR(flux[c] / expected[c], 1.0, 0.01) << "channel " << c;
 }
 
-INSTANTIATE_TEST_SUITE_P(Shapes, SplatShapeEnergyTest, ::testing::Values("disc", "box"));
+INSTANTIATE_TEST_SUITE_P(Shapes, SplatShapeEnergyTest, ::testing::Values("disc", "box", "gather"));
 
 } // namespace
 } // namespace ispm::test

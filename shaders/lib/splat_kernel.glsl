@@ -1,0 +1,62 @@
+// A result photon's splat, shared by the instanced splats (splat.vert, splat.frag) and the tiled
+// gather (gather_bin.comp, gather.comp): its extents and clip lines, and the weight it gives a
+// viewer G-buffer point. The includer declares `photons` (ResultPhoton[]) and `splatClip`
+// (vec4[], kClipVec4s per photon) first, or defines ISPM_SPLAT_WEIGHT_ONLY for the weight alone.
+#include "constants.glsl"
+#include "../shared/splat_clip.h"
+
+#ifndef ISPM_SPLAT_WEIGHT_ONLY
+// The splat of result photon `id`: its radius (photon.power.w, set by the density pass; 0 when
+// its disc cannot reach the view), extents along +t, -t, +b, -b (the radius, or with density
+// radii cut to the clip lines across the basis axes) and clip lines (the nonzero poles first).
+struct SplatShape {
+    float radius;
+    vec4 extent;
+    uint lines;
+    vec2 poles[kClipRays];
+};
+
+SplatShape loadSplatShape(uint id, uint radiusMode) {
+    SplatShape s;
+    s.radius = photons[id].power.w;
+    s.extent = vec4(s.radius);
+    s.lines = 0u;
+    for (uint i = 0u; i < kClipRays; ++i) s.poles[i] = vec2(0.0);
+    if (radiusMode == kRadiusDensity && s.radius > 0.0) {
+        s.extent = splatClip[id * kClipVec4s + kClipRays / 2u];
+        for (uint i = 0u; i < kClipRays / 2u; ++i) {
+            vec4 two = splatClip[id * kClipVec4s + i];
+            if (dot(two.xy, two.xy) > 0.0) s.poles[s.lines++] = two.xy;
+            if (dot(two.zw, two.zw) > 0.0) s.poles[s.lines++] = two.zw;
+        }
+    }
+    return s;
+}
+#endif
+
+// The splat's kernel over the kept mass at G-buffer point `position` with normal `n`, or a
+// negative value when the point receives nothing: it faces away from where the photon arrived,
+// lies outside the photon's ellipsoid (radius in the plane, radius x squash along the normal
+// `pn`) or beyond a clip line. The kernel 2 / (pi r^2) (1 - s^2 / r^2) over the in-plane
+// distance s integrates to 1 over the disc of radius r: one photon's power is conserved on a
+// flat surface. Gather-style renormalisation: the pixel's own disc (radius r, centred on it) is
+// cut by the same lines; dividing by the part of it that lies on the surface keeps a uniform
+// irradiance uniform up to the wall, and the photon's power on the surfaces it reached.
+float computeSplatWeight(vec4 centre, vec3 pn, vec3 tangent, vec3 bitangent, uint lines,
+                         vec2 poles[kClipRays], float squash, vec3 position, vec3 n) {
+    if (dot(n, pn) <= 0.0) return -1.0;
+    float radius = centre.w;
+    vec3 d = position - centre.xyz;
+    float along = dot(d, pn);
+    vec3 inPlane = d - along * pn;
+    float s2 = dot(inPlane, inPlane) / (radius * radius);
+    float z = along / (radius * squash);
+    if (s2 + z * z > 1.0) return -1.0;
+    vec2 x = vec2(dot(inPlane, tangent), dot(inPlane, bitangent));
+    for (uint i = 0u; i < lines; ++i) {
+        if (isBeyondLine(x, poles[i])) return -1.0;
+    }
+    float keptMass = computeKeptMass(x, poles, radius);
+    float kernel = 2.0 * kInvPi / (radius * radius) * (1.0 - s2);
+    return kernel / keptMass;
+}
