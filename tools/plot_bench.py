@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 # Draws a `ispm bench --sweep` CSV as error against time per frame (log-log): the ispm
-# configurations labelled by photon count with their Pareto front, and the path tracer's curve.
+# configurations labelled by photon count, one series per swept mode (radius_mode, splat_mode,
+# ...), with their Pareto front, and the path tracer's curve.
 # Usage: tools/plot_bench.py CSV OUT.png [--title T]   (Debian's matplotlib: /usr/bin/python3)
 import argparse
 import sys
@@ -12,10 +13,15 @@ from csv_input import read_rows as read_csv_rows
 matplotlib.use("Agg")  # headless: no display on the test machine
 import matplotlib.pyplot as plt  # noqa: E402
 
-FIGURE_SIZE_IN = (7.0, 5.0)
+FIGURE_SIZE_IN = (10.0, 5.0)  # room right of the axes for the legend
 DPI = 120
 LABEL_OFFSET_PT = (5, 4)  # photon-count labels sit just above and right of their point
 REQUIRED_COLUMNS = ("kind", "spp", "photons", "total_ms", "relmse_total")
+# Choice settings a sweep may vary: each combination of their values is a series of its own.
+MODE_COLUMNS = ("radius_mode", "splat_mode", "splat_shape", "splat_resolution", "radius_scale")
+SERIES_COLOURS = ("tab:blue", "tab:green", "tab:red", "tab:purple", "tab:brown", "tab:cyan",
+                  "tab:olive", "tab:pink")
+SERIES_MARKERS = ("o", "^", "s", "D", "v", "P", "X", "*")
 
 
 def read_rows(path):
@@ -60,11 +66,21 @@ def main():
 
     if ispm:
         points = [(float(r["total_ms"]), float(r["relmse_total"]), r["photons"]) for r in ispm]
-        ax.scatter([p[0] for p in points], [p[1] for p in points], color="tab:blue", zorder=3,
-                   label="ispm configurations (median frame time)")
-        for time_ms, error, photons in points:
-            ax.annotate(f"{int(float(photons)):,}", (time_ms, error), textcoords="offset points",
-                        xytext=LABEL_OFFSET_PT, fontsize=7, color="tab:blue")
+        # One series per mode (the swept choice settings' values), photon counts as labels.
+        modes = [c for c in MODE_COLUMNS if c in ispm[0] and len({r[c] for r in ispm}) > 1]
+        groups = {}
+        for r, point in zip(ispm, points):
+            key = " ".join(f"{c}={r[c]}" for c in modes) or "ispm configurations"
+            groups.setdefault(key, []).append(point)
+        for i, (key, group) in enumerate(groups.items()):
+            colour = SERIES_COLOURS[i % len(SERIES_COLOURS)]
+            ax.scatter([p[0] for p in group], [p[1] for p in group], color=colour, zorder=3,
+                       marker=SERIES_MARKERS[i % len(SERIES_MARKERS)],
+                       label=f"{key} (median frame time)")
+            for time_ms, error, photons in group:
+                ax.annotate(f"{int(float(photons)):,}", (time_ms, error),
+                            textcoords="offset points", xytext=LABEL_OFFSET_PT, fontsize=6,
+                            color=colour)
         front = compute_pareto_front(points)
         ax.plot([p[0] for p in front], [p[1] for p in front], "-", color="tab:orange", zorder=2,
                 label="ispm Pareto front")
@@ -75,7 +91,7 @@ def main():
     ax.set_ylabel("relMSE of total radiance against the reference")
     ax.set_title(args.title)
     ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=8)
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     fig.tight_layout()
     try:
         fig.savefig(args.out, dpi=DPI)
