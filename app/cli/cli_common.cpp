@@ -4,6 +4,7 @@
 #include "core/input_error.h"
 #include "core/strings.h"
 #include "gl/debug.h"
+#include "render/frame_constants.h"
 #include "render/splat_pass.h"
 
 #include <CLI/CLI.hpp>
@@ -67,6 +68,8 @@ void warnIfLightFades(const FrameRunner& runner) {
         describeOversizedSplats(scene.getSurfaceArea(), glm::length(scene.getBounds().getExtent()),
                                 runner.getFrameSettings());
     if (!warning.empty()) std::fprintf(stderr, "ispm: warning: %s\n", warning.c_str());
+    const std::string near = describeRaisedNearPlane(runner.getScene().camera, scene.getBounds());
+    if (!near.empty()) std::fprintf(stderr, "ispm: warning: %s\n", near.c_str());
 }
 
 void printTimings(const FrameRunner& runner, const gl::ContextInfo& info) {

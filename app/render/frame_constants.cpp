@@ -1,6 +1,9 @@
 // The per-frame constants of a camera: view and projection, image size, lights, tone map.
 #include "render/frame_constants.h"
 
+#include "core/strings.h"
+#include "scene/json_reader.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -12,8 +15,20 @@ void computeCameraRange(const Camera& camera, const Aabb& bounds, float& nearM, 
     // The viewer's frustum corners reach further than its axis: grow far for the widest ray.
     const float halfDiagonal = glm::length(bounds.getExtent());
     farM = std::max(farM, glm::length(bounds.getCenter() - camera.position) + halfDiagonal);
-    if (camera.nearM > 0.0f) nearM = camera.nearM;
-    if (camera.farM > 0.0f) farM = camera.farM;
+    if (camera.farM > 0.0f) farM = std::min(camera.farM, farM);
+    if (camera.nearM > 0.0f) nearM = std::max(camera.nearM, farM * kMinNearToFar);
+    nearM = std::min(nearM, farM * 0.5f); // a near plane set past the scene still leaves a range
+}
+
+std::string describeRaisedNearPlane(const Camera& camera, const Aabb& bounds) {
+    if (!(camera.nearM > 0.0f)) return "";
+    float nearM = 0.0f;
+    float farM = 0.0f;
+    computeCameraRange(camera, bounds, nearM, farM);
+    if (nearM == camera.nearM) return "";
+    return strCat("the camera's near plane (", formatFloat(camera.nearM), " m) is ", "raised to ",
+                  formatFloat(nearM), " m, 1e-5 of the far plane (", formatFloat(farM),
+                  " m): a 32-bit depth buffer cannot order depths over a wider range");
 }
 
 namespace {

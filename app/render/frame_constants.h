@@ -8,10 +8,18 @@
 
 #include <shared/scene_data.h>
 
+#include <string>
+
 namespace ispm {
 
-// Camera clip planes when the scene does not set them: enclose the scene bounds.
+// The camera's clip planes: where the scene does not set them, they enclose the scene bounds. A
+// far plane set beyond those is brought in to them (nothing lies further), and a near plane
+// under kMinNearToFar of the far one is raised to it: a 32-bit depth buffer cannot tell depths
+// apart over a wider range, and everything would land on the far plane (a black image).
+inline constexpr float kMinNearToFar = 1e-5f;
 void computeCameraRange(const Camera& camera, const Aabb& bounds, float& nearM, float& farM);
+// One line for stderr when computeCameraRange raised the scene's near plane; "" otherwise.
+std::string describeRaisedNearPlane(const Camera& camera, const Aabb& bounds);
 
 // The per-frame constants of the scene's camera at width x height (shared by the photon mapper
 // and the reference path tracer, so both see the same camera).

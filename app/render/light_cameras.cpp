@@ -15,7 +15,11 @@ namespace ispm {
 namespace {
 
 constexpr float kNearFraction = 1e-4f; // near plane as a fraction of far: depth is 32-bit float
-constexpr float kMinNearM = 1e-4f;     // never put the near plane on the eye
+// Far planes are at least this fraction of the bounds' diagonal (an eye beyond the scene, looking
+// away from it), so the near plane follows the scene's size: a scene a micrometre across keeps
+// its depth range (a floor in metres would clip it away) and never lies on the eye.
+constexpr float kMinFarFraction = 1e-3f;
+constexpr float kMinFootprintM = 1e-30f; // a sun's footprint even over a scene of one point
 constexpr float kBoundsMargin = 1.01f; // grow fitted volumes so border texels are inside
 constexpr float kPointFaceFovDeg = 90.0f;
 // A fitted sun view is kept when its texels are at least this many times smaller.
@@ -130,9 +134,11 @@ void computeDepthRange(const Aabb& bounds, const glm::vec3& eye, const glm::vec3
     float maxDepth = 0.0f;
     for (const glm::vec3& c : getCorners(bounds))
         maxDepth = std::max(maxDepth, glm::dot(c - eye, axis));
-    farM = std::max(maxDepth * kBoundsMargin, 2.0f * kMinNearM);
+    const float diagonal = 2.0f * glm::length(bounds.getExtent());
+    farM = std::max({maxDepth * kBoundsMargin, diagonal * kMinFarFraction,
+                     std::numeric_limits<float>::min() / kNearFraction});
     // The near plane must not clip anything in front of the eye: keep it small.
-    nearM = std::max(kMinNearM, farM * kNearFraction);
+    nearM = farM * kNearFraction;
 }
 
 std::vector<LightCamera> computeLightCameras(const Scene& scene, int resolution) {
@@ -172,7 +178,8 @@ std::vector<LightCamera> computeLightCameras(const Scene& scene, int resolution)
                 const glm::vec4 v = cam.viewFromWorld * glm::vec4(c, 1.0f);
                 halfSize = std::max({halfSize, std::abs(v.x), std::abs(v.y)});
             }
-            halfSize = std::max(halfSize * kBoundsMargin, kMinNearM);
+            // A footprint however small the scene (a floor in metres would outgrow a tiny one).
+            halfSize = std::max(halfSize * kBoundsMargin, kMinFootprintM);
             cam.clipFromView =
                 glm::ortho(-halfSize, halfSize, -halfSize, halfSize, 0.0f, 2.0f * radius);
             cam.origin = eye;

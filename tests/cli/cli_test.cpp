@@ -143,6 +143,24 @@ TEST_F(CliTest, RendersSequencesAlongACameraPath) {
     expectBadInput("render " + scene + out + " --set eye_adaptation_s=-1", {"eye_adaptation_s"});
 }
 
+TEST_F(CliTest, ClipPlanesPastTheDepthRangeStillRenderWithAWarning) {
+    // near 1e-8 m, far 3e38 m: every depth rounded onto the far plane and the image was black.
+    std::string text = kGoodScene;
+    const std::string fov = "\"fov_y_deg\": 50";
+    text.replace(text.find(fov), fov.size(), fov + ", \"near\": 1e-8, \"far\": 3e38");
+    const std::string scene = writeScene("planes.json", text);
+    const std::string png = (mDir / "planes.png").string();
+    const RunResult r = run("render " + scene + " -o " + png + " --width 32 --height 24 -q");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("ispm: warning: the camera's near plane (1e-08 m) is raised"),
+              std::string::npos)
+        << r.output;
+    float maxValue = 0.0f;
+    for (const glm::vec3& p : readImage(png).pixels)
+        maxValue = std::max(maxValue, p.x);
+    EXPECT_GT(maxValue, 0.5f) << "not a black image";
+}
+
 TEST_F(CliTest, SplatsWiderThanTheSceneAreWarnedAbout) {
     // Travel radii 30 times their derived size are wider than this 2.8 m scene: the render
     // still runs (exit 0) but says why its indirect light fades. The default radii say nothing.
