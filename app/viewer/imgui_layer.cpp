@@ -40,7 +40,8 @@ ImGuiLayer::~ImGuiLayer() {
 
 void ImGuiLayer::beginFrame(const FrameInput& input) {
     ImGui_ImplOpenGL3_NewFrame();
-    ImGui_ImplGlfw_NewFrame(); // display size, time step, cursor shape; its polled mouse is replaced
+    ImGui_ImplGlfw_NewFrame(); // display size, time step, cursor shape; its polled mouse is
+                               // replaced
     ImGuiIO& io = ImGui::GetIO();
     io.MousePos = ImVec2(static_cast<float>(input.cursor.x), static_cast<float>(input.cursor.y));
     for (int i = 0; i < kMouseButtonCount; ++i)

@@ -133,8 +133,9 @@ ScriptCommand parseLine(const std::string& command, std::istringstream& in,
             c.text = c.text.substr(5);
         }
         if (!isScriptKeyName(c.text)) {
-            throw InputError(strCat(where, ": expected a key (A-Z, 0-9, F1-F12, Escape, Enter, "
-                                           "Tab, Backspace, optionally ctrl+), got '",
+            throw InputError(strCat(where,
+                                    ": expected a key (A-Z, 0-9, F1-F12, Escape, Enter, "
+                                    "Tab, Backspace, optionally ctrl+), got '",
                                     c.text, "'"));
         }
     } else if (command == "type") {

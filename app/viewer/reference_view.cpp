@@ -118,7 +118,8 @@ void ReferenceView::update(const Scene& scene, const FrameRunner& runner) {
         }
         mFrameTiming = PassTiming{kTracerTimingName, mLastTracedMs};
     }
-    if (mAutoMetrics && hasReference(runner.getWidth(), runner.getHeight()) && ++mFramesSinceMetrics >= kAutoMetricsFrames) {
+    if (mAutoMetrics && hasReference(runner.getWidth(), runner.getHeight()) &&
+        ++mFramesSinceMetrics >= kAutoMetricsFrames) {
         computeMetrics(runner);
     }
 }
@@ -132,7 +133,8 @@ const gl::Texture* ReferenceView::getSource(int width, int height) const {
 std::string ReferenceView::describeSizeMismatch(int width, int height) const {
     if (mLoadedImage.width == width && mLoadedImage.height == height) return {};
     return strCat("the reference is ", mLoadedImage.width, "x", mLoadedImage.height,
-                  ", the render ", width, "x", height, ": not shown or compared (resize the "
+                  ", the render ", width, "x", height,
+                  ": not shown or compared (resize the "
                   "window or load one of the render's size)");
 }
 

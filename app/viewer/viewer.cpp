@@ -19,13 +19,11 @@
 #include "viewer/fly_camera.h"
 #include "viewer/imgui_layer.h"
 #include "viewer/reference_view.h"
-#include "viewer/screenshot.h"
 
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
 #include <cstdio>
-#include <filesystem>
 #include <memory>
 
 namespace ispm {
@@ -176,48 +174,6 @@ CameraInput Viewer::readUserInput(const FrameInput& in) {
     return input;
 }
 
-void Viewer::takeScreenshot(const std::string& path) {
-    writeScreenshot(path, mWindowWidth, mWindowHeight);
-    setStatus(strCat("wrote ", std::filesystem::absolute(path).string(), " (", mWindowWidth, "x",
-                     mWindowHeight, " window)"),
-              false);
-}
-
-// The panel's "save": an unwritable path is reported, the viewer goes on.
-void Viewer::saveSettings(const std::string& path) {
-    try {
-        saveRenderBlock(path, mRunner->getSettings());
-        setStatus(strCat("wrote the settings (a render block) to ",
-                         std::filesystem::absolute(path).string()),
-                  false);
-    } catch (const std::runtime_error& e) {
-        setStatus(e.what(), true);
-    }
-}
-
-// F12: numbered past the files already there; a folder that cannot take it is reported.
-void Viewer::takeNumberedScreenshot() {
-    std::string path;
-    std::error_code error;
-    do {
-        path = strCat("ispm_screenshot_", mScreenshotCount++, ".png");
-    } while (std::filesystem::exists(path, error));
-    try {
-        takeScreenshot(path);
-    } catch (const std::runtime_error& e) {
-        setStatus(e.what(), true);
-    }
-}
-
-// Shown at the top of the panel and printed (the viewer runs long: said now, not at exit).
-void Viewer::setStatus(const std::string& text, bool isError) {
-    mStatus = text;
-    mStatusIsError = isError;
-    std::FILE* out = isError ? stderr : stdout;
-    std::fprintf(out, "%s\n", text.c_str());
-    std::fflush(out);
-}
-
 // Loads another scene with the command line's settings on top and the window's size; a bad file
 // is reported in the panel and the current scene stays.
 void Viewer::switchScene(const std::string& path) {
@@ -262,7 +218,8 @@ void Viewer::drawFrame() {
     drawPanels();
     if (mShowFrameRate) drawFrameRateOverlay();
     if (mShowHelp) drawHelp();
-    if (view.referenceMode == ReferenceMode::HeatMap && mReference.hasReference(mRunner->getWidth(), mRunner->getHeight())) {
+    if (view.referenceMode == ReferenceMode::HeatMap &&
+        mReference.hasReference(mRunner->getWidth(), mRunner->getHeight())) {
         mReference.drawLegendLabels(mRunner->getHeight());
     }
     mImGui.endFrame();
@@ -285,8 +242,7 @@ int Viewer::run() {
         CameraInput scripted;
         std::vector<const ScriptCommand*> afterFrame;
         // Said the frame after the last command's, so that its outputs saw the panel before.
-        if (!mScriptDone && !mOptions.script.empty() && mScript.isFinished() &&
-            mInput.isEmpty()) {
+        if (!mScriptDone && !mOptions.script.empty() && mScript.isFinished() && mInput.isEmpty()) {
             mScriptDone = true;
             setStatus(strCat("script finished (", mOptions.script.size(), " commands)"), false);
         }

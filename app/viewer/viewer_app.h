@@ -77,8 +77,8 @@ class Viewer {
     void handleKeys(const FrameInput& input); // F1, F5, F12, Ctrl+Q
     void pushScriptInput(const ScriptCommand& c);
     void recordItem(const std::string& name); // the last widget, for `click_item`
-    void printPanel();                         // `print_panel`
-    void drawHelp();                           // the F1 window: keys and mouse
+    void printPanel();                        // `print_panel`
+    void drawHelp();                          // the F1 window: keys and mouse
     void drawFrameRateOverlay();
     void syncRenderSize();
     void applySettings(const Settings& settings);
@@ -88,8 +88,8 @@ class Viewer {
     CameraInput readUserInput(const FrameInput& input);
     void drawPanels();
     void takeScreenshot(const std::string& path); // throws when the file cannot be written
-    void takeNumberedScreenshot();                 // F12
-    void saveSettings(const std::string& path);    // the panel's "save"
+    void takeNumberedScreenshot();                // F12
+    void saveSettings(const std::string& path);   // the panel's "save"
     void setStatus(const std::string& text, bool isError);
     void drawScenePicker();
     void drawPointColourLegend() const; // what the photon points' colours mean
@@ -109,7 +109,7 @@ class Viewer {
     PhotonPointsDrawer mPointsDrawer;
     PhotonPoints mPoints = PhotonPoints::None;
     PhotonColour mPointsColour = PhotonColour::Kind;
-    ReferenceView mReference; // after mTiming
+    ReferenceView mReference;      // after mTiming
     bool mReloadRequested = false; // F5
     std::string mShaderStatus;     // the last reload's result (its errors stay until fixed)
     bool mShaderError = false;

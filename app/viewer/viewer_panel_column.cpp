@@ -21,7 +21,7 @@ namespace {
 
 constexpr float kMaxExposureStops = 20.0f; // the debug view's exposure slider
 constexpr float kOverlayMarginPx = 4.0f;
-constexpr float kOverlayAlpha = 0.6f;     // the frame-rate overlay's backing
+constexpr float kOverlayAlpha = 0.6f; // the frame-rate overlay's backing
 constexpr size_t kOverlayTextSize = 64;
 constexpr float kHelpKeyColumnEm = 8.0f; // where the help window's descriptions start
 constexpr std::array<std::pair<const char*, const char*>, 12> kHelpLines = {{

@@ -216,7 +216,10 @@ void Viewer::writeScriptOutput(const ScriptCommand& c) {
         return;
     }
     if (c.kind == ScriptCommand::Kind::SaveSettings) {
-        saveRenderBlock(c.path, mRunner->getSettings());
+        saveRenderBlock(c.path, mRunner->getSettings()); // a script's bad path ends the run
+        setStatus(strCat("wrote the settings (a render block) to ",
+                         std::filesystem::absolute(c.path).string()),
+                  false);
         return;
     }
     const Aov aov = c.text == "display" ? Aov::Display : parseAov(c.text, c.where);

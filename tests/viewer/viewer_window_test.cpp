@@ -94,9 +94,9 @@ class ViewerWindowTest : public ::testing::Test {
 
 TEST_F(ViewerWindowTest, ScreenshotShowsSceneAndPanels) {
     // F2 hides the frame-rate overlay: the scene region is then the frame alone.
-    const RunResult view = runIspm("view " + kCornell + sizeArgs() + " --script " +
-                                   writeScript("press f2\n") + " --frames 30 --screenshot " +
-                                   path("ui.png"));
+    const RunResult view =
+        runIspm("view " + kCornell + sizeArgs() + " --script " + writeScript("press f2\n") +
+                " --frames 30 --screenshot " + path("ui.png"));
     expectClean(view, "view");
     const RunResult render =
         runIspm("render " + kCornell + sizeArgs() + " -q -o " + path("scene.png"));
@@ -240,8 +240,8 @@ TEST_F(ViewerWindowTest, LightImportanceViewShowsWhereThePhotonsGo) {
     // From inside the courtyard's room, the sun's map is bright where the door lets its light
     // in and dim elsewhere (the floor that keeps every texel a share).
     const std::string courtyard = std::string(ISPM_ASSET_DIR) + "/scenes/courtyard.json";
-    const std::string script =
-        writeScript("press f2\nframes 1\nview light importance\nscreenshot " + path("importance.png") + "\n");
+    const std::string script = writeScript(
+        "press f2\nframes 1\nview light importance\nscreenshot " + path("importance.png") + "\n");
     expectClean(runIspm("view " + courtyard + " --camera room" + sizeArgs() +
                         " --set photons=10000 --set shadow_map_size=256 --frames 5 --script " +
                         script),
