@@ -22,7 +22,7 @@
 //   click X Y            window events, as the mouse gives them: move to X, Y (window pixels),
 //                        press and release the left button
 //   click_item NAME      the same on a panel widget as last drawn ("save", "save path",
-//                        "view stops")
+//                        "view stops", "view stops help": the "(?)" on display)
 //   mouse_move X Y       move the pointer to X, Y
 //   press KEY            press and release KEY (A-Z, 0-9, F1-F12, Escape, Enter, Tab,
 //                        Backspace), "ctrl+KEY" with Control held

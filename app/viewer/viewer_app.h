@@ -80,6 +80,7 @@ class Viewer {
     void printPanel();                        // `print_panel`
     void drawHelp();                          // the F1 window: keys and mouse
     void drawFrameRateOverlay();
+    float computeStatusFooterHeight() const;
     void syncRenderSize();
     void applySettings(const Settings& settings);
     void runScriptCommand(const ScriptCommand& c, CameraInput& input,

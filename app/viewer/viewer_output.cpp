@@ -1,5 +1,5 @@
 // The viewer's files and its message line: screenshots (F12, --screenshot, scripts), the
-// settings' "save", and the line at the top of the panel that says what was written, and where.
+// settings' "save", and the footer line under the panels that says what was written, and where.
 #include "viewer/viewer_app.h"
 
 #include "core/strings.h"
@@ -44,7 +44,7 @@ void Viewer::takeNumberedScreenshot() {
     }
 }
 
-// Shown at the top of the panel and printed (the viewer runs long: said now, not at exit).
+// Shown in the panel's footer and printed (the viewer runs long: said now, not at exit).
 void Viewer::setStatus(const std::string& text, bool isError) {
     mStatus = text;
     mStatusIsError = isError;

@@ -38,6 +38,7 @@ constexpr std::array<std::pair<const char*, const char*>, 12> kHelpLines = {{
     {"hover", "a setting's help, unit and range"},
     {"Esc", "leave a text field without applying it"},
 }};
+constexpr float kMaxStatusLines = 4.0f; // the message footer's height at most
 const ImVec4 kErrorColour(1.0f, 0.4f, 0.4f, 1.0f);
 const ImVec4 kOkColour(0.6f, 0.9f, 0.6f, 1.0f);
 
@@ -92,14 +93,12 @@ void Viewer::drawPanels() {
     ImGui::Begin("ispm", nullptr,
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                      ImGuiWindowFlags_NoSavedSettings);
+    // The message line (a file written, a path refused, the script's end) is a footer: visible
+    // without scrolling, and its coming and going moves no widget above it.
+    const float footerHeight = computeStatusFooterHeight();
+    ImGui::BeginChild("panels", ImVec2(0.0f, -footerHeight));
     // Widgets leave room for the widest label on their right: none is cut at the panel's edge.
     ImGui::PushItemWidth(-computeSettingsLabelWidth());
-    // Messages first (a file written, a path refused, the script's end): visible without scrolling.
-    if (!mStatus.empty()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, mStatusIsError ? kErrorColour : kOkColour);
-        ImGui::TextWrapped("%s", mStatus.c_str());
-        ImGui::PopStyleColor();
-    }
     drawScenePicker();
     if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) {
         const DebugView& current = mViews[static_cast<size_t>(mViewIndex)];
@@ -121,6 +120,7 @@ void Viewer::drawPanels() {
         if (!stops) {
             ImGui::SameLine();
             ImGui::TextDisabled("(?)");
+            recordItem("view stops help");
             if (ImGui::IsItemHovered()) {
                 showWrappedTooltip("view stops scale the linear views; display is tone mapped: "
                                    "set its brightness with the exposure setting");
@@ -191,7 +191,26 @@ void Viewer::drawPanels() {
                        mRunner->getAccumulatedFrames());
     }
     ImGui::PopItemWidth();
+    ImGui::EndChild();
+    if (!mStatus.empty()) {
+        ImGui::Separator();
+        ImGui::BeginChild("message");
+        ImGui::PushStyleColor(ImGuiCol_Text, mStatusIsError ? kErrorColour : kOkColour);
+        ImGui::TextWrapped("%s", mStatus.c_str());
+        ImGui::PopStyleColor();
+        ImGui::EndChild();
+    }
     ImGui::End();
+}
+
+// The message's wrapped height, a few lines at most (a longer one scrolls), with the separator.
+float Viewer::computeStatusFooterHeight() const {
+    if (mStatus.empty()) return 0.0f;
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float width = ImGui::GetContentRegionAvail().x;
+    const float textHeight = ImGui::CalcTextSize(mStatus.c_str(), nullptr, false, width).y;
+    const float maxHeight = kMaxStatusLines * ImGui::GetTextLineHeightWithSpacing();
+    return std::min(textHeight, maxHeight) + 2.0f * style.ItemSpacing.y + style.WindowPadding.y;
 }
 
 void Viewer::recordItem(const std::string& name) {

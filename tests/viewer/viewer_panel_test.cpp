@@ -179,27 +179,50 @@ TEST_F(ViewerPanelTest, FrameTimeCountsTheInViewerPathTracer) {
     EXPECT_NEAR(std::stod(findPanelLine(r.output, "frame ms")), sum, 1e-3) << r.output;
 }
 
-TEST_F(ViewerPanelTest, LabelsStayInsideThePanel) {
-    const RunResult r = view("frames 1\nscreenshot " + path("ui.png") + "\npress ctrl+q\n");
-    ASSERT_EQ(r.exitCode, 0) << r.output;
-    const Image ui = readImage(path("ui.png"));
-    // ImGui 1.86's dark style: the scroll bar (14 px; the settings run past the window's foot)
-    // and the window padding (8 px) at the right; text is light grey to white. A label cut at
-    // the panel's edge ("eye_adaptation_s" at the default widget width) shows text up to the
-    // clip rectangle, half the padding from the scroll bar.
-    constexpr int kScrollbarPx = 14;
-    constexpr int kPaddingPx = 8;
+// The rightmost column of `image` right of the scene region with light text (ImGui 1.86's dark
+// style draws text light grey to white, nothing else that light on the panel), or 0.
+int findRightmostText(const Image& image) {
     constexpr float kTextLevel = 0.47f;
-    int rightmostText = 0;
-    for (int y = 0; y < ui.height; ++y) {
-        for (int x = kWidth; x < ui.width; ++x) {
-            const glm::vec3 c = ui.at(x, y);
-            if (glm::min(c.r, glm::min(c.g, c.b)) > kTextLevel)
-                rightmostText = std::max(rightmostText, x);
+    int rightmost = 0;
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = kWidth; x < image.width; ++x) {
+            const glm::vec3 c = image.at(x, y);
+            if (glm::min(c.r, glm::min(c.g, c.b)) > kTextLevel) rightmost = std::max(rightmost, x);
         }
     }
-    EXPECT_LT(rightmostText, ui.width - kScrollbarPx - kPaddingPx);
-    EXPECT_GT(rightmostText, ui.width / 2); // the labels were found
+    return rightmost;
+}
+
+TEST_F(ViewerPanelTest, LabelsAndTooltipsStayInsideThePanel) {
+    // The display view's "(?)" beside the greyed-out view stops has a long tooltip: hovering it
+    // (a click on text does nothing else) shows it.
+    const RunResult r = view("frames 1\nscreenshot " + path("ui.png") +
+                             "\nclick_item view stops help\nframes 2\nscreenshot " +
+                             path("tooltip.png") + "\npress ctrl+q\n");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const Image ui = readImage(path("ui.png"));
+    // At the right: the window padding (8 px), then the panels' scroll bar (14 px; the settings
+    // run past the footer). A label cut at the panel's edge ("eye_adaptation_s" at ImGui's
+    // default widget width) shows text up to the scroll bar; the labels shown here end well
+    // before it (the widest setting name, further down, would just reach it).
+    constexpr int kScrollbarPx = 14;
+    constexpr int kPaddingPx = 8;
+    constexpr int kGapPx = 4;
+    const int rightmostLabel = findRightmostText(ui);
+    EXPECT_LT(rightmostLabel, ui.width - kPaddingPx - kScrollbarPx - kGapPx);
+    EXPECT_GT(rightmostLabel, ui.width / 2); // the labels were found
+    // A tooltip wider than the window would run to its edge; wrapped, it keeps its padding.
+    const Image tooltip = readImage(path("tooltip.png"));
+    EXPECT_LT(findRightmostText(tooltip), tooltip.width - kPaddingPx);
+    int changed = 0;
+    for (int y = 0; y < ui.height; ++y) {
+        for (int x = kWidth; x < ui.width; ++x) {
+            const glm::vec3 d = glm::abs(ui.at(x, y) - tooltip.at(x, y));
+            changed += glm::max(d.r, glm::max(d.g, d.b)) > 0.1f ? 1 : 0;
+        }
+    }
+    constexpr int kMinTooltipPixels = 1000; // a few lines of text on a box
+    EXPECT_GT(changed, kMinTooltipPixels);
 }
 
 TEST_F(ViewerPanelTest, HelpOpensWithF1AndCtrlQQuits) {
