@@ -94,6 +94,9 @@ ScriptCommand parseLine(const std::string& command, std::istringstream& in,
     } else if (command == "wait_file") {
         c.kind = Kind::WaitFile;
         c.path = parseWord(in, where, "a file to wait for");
+    } else if (command == "load_scene") {
+        c.kind = Kind::LoadScene;
+        c.path = parseWord(in, where, "a scene file (.json)");
     } else if (command == "load_reference") {
         c.kind = Kind::LoadReference;
         c.path = parseWord(in, where, "a reference image (.pfm or .exr)");
@@ -156,7 +159,8 @@ ScriptCommand parseLine(const std::string& command, std::istringstream& in,
         throw InputError(strCat(
             where, ": unknown command '", command,
             "' (expected key, mouse_drag, wheel, set, view, points, reset_camera, reload_shaders, "
-            "wait_file, load_reference, render_reference, write_aov, screenshot, save_settings, "
+            "wait_file, load_scene, load_reference, render_reference, write_aov, screenshot, "
+            "save_settings, "
             "compute_metrics, print_panel, click, click_item, mouse_move, press, type or "
             "frames)"));
     }

@@ -12,13 +12,15 @@
 //   reload_shaders       what F5 does: rebuild the programs whose shader files changed
 //   wait_file F          stop until file F exists (another process, e.g. a test, edits shaders
 //                        meanwhile); gives up with an error after a minute
+//   load_scene F         switch to scene file F, as the scene picker does
 //   load_reference F     load a reference image (.pfm or .exr), as --reference does
 //   render_reference on|off  path-trace the reference progressively inside the viewer
 //   write_aov AOV F      write the current frame's AOV (direct, indirect, total, display) to F
 //   screenshot F         write the window (UI included) as PNG to F
 //   save_settings F      write the current settings as a scene `render` block (the panel's "save")
 //   compute_metrics      compare the total AOV with the reference (relMSE, SSIM) and print them
-//   print_panel          print the panel's messages and the Stats frame time ("panel ...")
+//   print_panel          print the panel's messages, the window title, the camera and the
+//                        Stats frame time ("panel NAME: VALUE" lines)
 //   click X Y            window events, as the mouse gives them: move to X, Y (window pixels),
 //                        press and release the left button
 //   click_item NAME      the same on a panel widget as last drawn ("save", "save path",
@@ -51,6 +53,7 @@ struct ScriptCommand {
         ResetCamera,
         ReloadShaders,
         WaitFile,
+        LoadScene,
         LoadReference,
         RenderReference,
         WriteAov,
@@ -68,7 +71,8 @@ struct ScriptCommand {
     Kind kind = Kind::Frames;
     std::string text;   // key, setting assignment, view, points choice, AOV name, on/off,
                         // item name, key name (upper case), typed text
-    std::string path;   // write_aov, screenshot, save_settings, load_reference, wait_file
+    std::string path;   // write_aov, screenshot, save_settings, load_scene, load_reference,
+                        // wait_file
     std::string option; // points: the colouring; press: "ctrl" or empty
     float x = 0.0f;     // drag dx, wheel steps, click and move x
     float y = 0.0f;     // drag dy, click and move y

@@ -101,6 +101,7 @@ void Viewer::pushScriptInput(const ScriptCommand& c) {
 // What the panel shows, for scripts and tests: its message lines and the Stats frame time.
 void Viewer::printPanel() {
     std::printf("panel status: %s\n", mStatus.c_str());
+    std::printf("panel title: %s\n", mContext.getTitle().c_str());
     std::printf("panel metrics: %s\n", mReference.getMetricsText().c_str());
     std::printf("panel reference: %s\n", mReference.getStatus().c_str());
     const glm::vec3& p = mScene.camera.position;
@@ -162,6 +163,9 @@ void Viewer::runScriptCommand(const ScriptCommand& c, CameraInput& input,
         break;
     case Kind::WaitFile:
         waitForFile(c);
+        break;
+    case Kind::LoadScene:
+        mPendingScenePath = c.path; // as the picker: switched at the start of the next frame
         break;
     case Kind::LoadReference:
         mReference.load(c.path);

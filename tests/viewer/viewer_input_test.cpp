@@ -52,6 +52,10 @@ TEST(InputScript, ParsesReloadAndReferenceCommands) {
     EXPECT_EQ(commands[3].text, "on");
     EXPECT_EQ(commands[4].kind, Kind::ComputeMetrics);
     EXPECT_THROW(parseInputScript("render_reference maybe\n", "s.txt"), InputError);
+    const auto scene = parseInputScript("load_scene other.json\n", "s.txt");
+    ASSERT_EQ(scene.size(), 1u);
+    EXPECT_EQ(scene[0].kind, Kind::LoadScene);
+    EXPECT_EQ(scene[0].path, "other.json");
     const auto points = parseInputScript("points result\npoints bounce power\n", "s.txt");
     ASSERT_EQ(points.size(), 2u);
     EXPECT_EQ(points[0].option, "kind"); // the colouring defaults to the kind's tint

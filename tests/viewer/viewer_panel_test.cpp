@@ -138,6 +138,22 @@ TEST_F(ViewerPanelTest, MetricsGoWhenTheCameraOrASettingChanges) {
     EXPECT_EQ(findPanelLine(r.output, "metrics", 2), "") << r.output; // a setting changed
 }
 
+TEST_F(ViewerPanelTest, TitleAndMetricsFollowTheScene) {
+    const std::string reference = path("same.pfm");
+    ASSERT_EQ(runIspm("render " + kCornell + kArgs + " -q --aov total -o " + reference).exitCode,
+              0);
+    fs::copy_file(kCornell, path("other.json"));
+    const RunResult r = view("frames 1\ncompute_metrics\nprint_panel\nload_scene " +
+                                 path("other.json") + "\nframes 1\nprint_panel\npress ctrl+q\n",
+                             " --reference " + reference);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_EQ(findPanelLine(r.output, "title", 0), "ispm view " + kCornell) << r.output;
+    EXPECT_NE(findPanelLine(r.output, "metrics", 0).find("relMSE"), std::string::npos) << r.output;
+    EXPECT_EQ(findPanelLine(r.output, "title", 1), "ispm view " + path("other.json")) << r.output;
+    EXPECT_EQ(findPanelLine(r.output, "metrics", 1), "") << r.output; // of the other scene
+    EXPECT_NE(findPanelLine(r.output, "status", 1).find("loaded"), std::string::npos) << r.output;
+}
+
 TEST_F(ViewerPanelTest, ReferenceOfAnotherSizeIsRefusedNotStretched) {
     const std::string reference = path("small.pfm");
     ASSERT_EQ(
