@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include <array>
+#include <cstdint>
 #include <deque>
 #include <set>
 #include <vector>
@@ -48,7 +49,10 @@ struct FrameInput {
 
 class InputQueue {
   public:
-    void push(const InputEvent& event) { mPending.push_back(event); }
+    void push(const InputEvent& event) {
+        mPending.push_back(event);
+        ++mPushedCount;
+    }
     // Where the pointer is before any event (the window's cursor at start-up).
     void setCursor(glm::dvec2 cursor) { mCursor = cursor; }
     // The next frame's events: in order, stopping before one that a per-frame reader would see
@@ -57,11 +61,15 @@ class InputQueue {
     // whether it focused a text field before the keys arrive), a second change of one key.
     FrameInput takeFrame();
     bool isEmpty() const { return mPending.empty(); }
+    // Events pushed and handed out so far: whether a given event has reached a frame yet.
+    uint64_t getPushedCount() const { return mPushedCount; }
+    uint64_t getTakenCount() const { return mPushedCount - mPending.size(); }
 
   private:
     std::deque<InputEvent> mPending;
     glm::dvec2 mCursor{0.0};
     std::array<bool, kMouseButtonCount> mButtons{};
+    uint64_t mPushedCount = 0;
 };
 
 // The keys held for the fly camera. A key pressed while ImGui wants the keyboard (a text field

@@ -242,13 +242,14 @@ int Viewer::run() {
         CameraInput scripted;
         std::vector<const ScriptCommand*> afterFrame;
         // Said the frame after the last command's, so that its outputs saw the panel before.
-        if (!mScriptDone && !mOptions.script.empty() && mScript.isFinished() && mInput.isEmpty()) {
+        const bool scriptInputSeen = mInput.getTakenCount() >= mScriptInputEnd;
+        if (!mScriptDone && !mOptions.script.empty() && mScript.isFinished() && scriptInputSeen) {
             mScriptDone = true;
             setStatus(strCat("script finished (", mOptions.script.size(), " commands)"), false);
         }
         // A script's clicks and keys go through the queue as the window's do; the script goes on
-        // once they have all been seen.
-        if (mInput.isEmpty()) {
+        // once they have all reached a frame (the user's own events do not hold it up).
+        if (scriptInputSeen) {
             for (const ScriptCommand* c : mScript.advanceFrame())
                 runScriptCommand(*c, scripted, afterFrame);
         }

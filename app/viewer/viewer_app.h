@@ -130,6 +130,7 @@ class Viewer {
     double mLastTime = 0.0;
     InputQueue mInput; // the window's events (and a script's stand-ins), in order
     CameraKeys mCameraKeys;
+    uint64_t mScriptInputEnd = 0; // the queue's count after the script's last event
     glm::dvec2 mLastCursor{0.0};
     bool mDragging = false;
     bool mShowHelp = false;            // F1

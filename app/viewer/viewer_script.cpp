@@ -96,6 +96,7 @@ void Viewer::pushScriptInput(const ScriptCommand& c) {
     default:
         break;
     }
+    mScriptInputEnd = mInput.getPushedCount();
 }
 
 // What the panel shows, for scripts and tests: its message lines and the Stats frame time.

@@ -27,9 +27,11 @@ TEST(InputQueue, ClickThenMoveReachesTheFramesInOrder) {
     const FrameInput release = queue.takeFrame();
     EXPECT_EQ(release.cursor, button); // released over the button: ImGui's click
     EXPECT_FALSE(release.buttons[kMouseLeft]);
+    EXPECT_EQ(queue.getTakenCount(), 3u);
     const FrameInput moved = queue.takeFrame();
     EXPECT_EQ(moved.cursor, away);
     EXPECT_TRUE(queue.isEmpty());
+    EXPECT_EQ(queue.getTakenCount(), queue.getPushedCount());
     // An idle frame keeps the last state.
     EXPECT_EQ(queue.takeFrame().cursor, away);
 }
