@@ -37,9 +37,9 @@ constexpr int kMaxSamplesPerFrame = 64;
 // would halve the frame rate.
 constexpr int kAutoMetricsFrames = 30;
 constexpr float kMinHeatMax = 0.01f;
-constexpr const char* kTracerTimingName = "reference (path tracer)";
-const ImVec4 kWarningColour(1.0f, 0.4f, 0.4f, 1.0f);
 constexpr float kMaxHeatMax = 10.0f;
+constexpr const char* kTracerTimingName = "reference (path tracer)"; // its Stats row
+const ImVec4 kWarningColour(1.0f, 0.4f, 0.4f, 1.0f);
 
 uint32_t toGpuMode(ReferenceMode mode) {
     switch (mode) {
@@ -130,6 +130,12 @@ const gl::Texture* ReferenceView::getSource(int width, int height) const {
     return &mLoaded;
 }
 
+std::string ReferenceView::describeMissing(int width, int height) const {
+    if (mRendering) return mPass ? "" : "no reference yet: the path tracer waits for the camera";
+    if (mLoadedImage.isEmpty()) return "no reference: load one or render it";
+    return describeSizeMismatch(width, height);
+}
+
 std::string ReferenceView::describeSizeMismatch(int width, int height) const {
     if (mLoadedImage.width == width && mLoadedImage.height == height) return {};
     return strCat("the reference is ", mLoadedImage.width, "x", mLoadedImage.height,
@@ -140,11 +146,9 @@ std::string ReferenceView::describeSizeMismatch(int width, int height) const {
 
 std::string ReferenceView::computeMetrics(const FrameRunner& runner) {
     mFramesSinceMetrics = 0;
-    if (!mRendering && !mLoadedImage.isEmpty() &&
-        !describeSizeMismatch(runner.getWidth(), runner.getHeight()).empty()) {
-        mMetricsText = describeSizeMismatch(runner.getWidth(), runner.getHeight());
-    } else if (!hasReference(runner.getWidth(), runner.getHeight())) {
-        mMetricsText = "no reference: load one or render it";
+    const std::string missing = describeMissing(runner.getWidth(), runner.getHeight());
+    if (!missing.empty()) {
+        mMetricsText = missing;
     } else {
         const Image total = readTextureImage(runner.getAov(Aov::Total));
         const Image reference = mRendering ? mPass->readMean() : mLoadedImage;

@@ -36,6 +36,8 @@ class ReferenceView {
     // A reference to show and compare: rendered, or loaded at the render's size (`width` x
     // `height`); one of another size is refused with a message, never stretched.
     bool hasReference(int width, int height) const { return getSource(width, height) != nullptr; }
+    // Why there is no reference to show or compare at that size (empty when there is one).
+    std::string describeMissing(int width, int height) const;
     // The path tracer's time this frame (by the timing method given), when it added samples.
     std::optional<PassTiming> getFrameTiming() const { return mFrameTiming; }
     const std::string& getMetricsText() const { return mMetricsText; }

@@ -126,6 +126,17 @@ void Viewer::drawPanels() {
                                    "set its brightness with the exposure setting");
             }
         }
+        if (current.source == DebugView::Source::Reference) {
+            // The region stays black without a reference: say why here, not only under the
+            // (collapsed) Reference header.
+            const std::string missing =
+                mReference.describeMissing(mRunner->getWidth(), mRunner->getHeight());
+            if (!missing.empty()) {
+                ImGui::PushStyleColor(ImGuiCol_Text, kErrorColour);
+                ImGui::TextWrapped("%s", missing.c_str());
+                ImGui::PopStyleColor();
+            }
+        }
         int points = static_cast<int>(mPoints);
         if (ImGui::Combo("photon points", &points, kPhotonPointsNames.data(),
                          static_cast<int>(kPhotonPointsNames.size()))) {
@@ -144,8 +155,8 @@ void Viewer::drawPanels() {
             const int layers = mRunner->getLightGBuffer().getLayers();
             ImGui::SliderInt("light camera", &mTransform.lightLayer, 0, std::max(0, layers - 1));
         }
-        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
         ImGui::Checkbox("frame rate overlay (F2)", &mShowFrameRate);
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
         ImGui::TextWrapped("F1: keys   F12: screenshot   F5: reload shaders   Ctrl+Q: quit");
         ImGui::PopStyleColor();
         if (!mShaderStatus.empty()) {
