@@ -71,11 +71,14 @@ class WindowContext final : public Context {
     ~WindowContext() override;
     GLFWwindow* getWindow() const { return mWindow; }
     void setTitle(const std::string& title);
+    // What the window's title bar says (GLFW 3.3 cannot read it back).
+    const std::string& getTitle() const { return mTitle; }
 
   private:
     void bindCurrent() override;
     void loadFunctions() override;
     GLFWwindow* mWindow = nullptr;
+    std::string mTitle;
 };
 
 } // namespace gl

@@ -6,7 +6,7 @@
 
 namespace gl {
 
-WindowContext::WindowContext(const WindowOptions& options) {
+WindowContext::WindowContext(const WindowOptions& options) : mTitle(options.title) {
     if (!glfwInit()) throw Error("GLFW: cannot initialise (is there a display? try xvfb-run)");
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
@@ -36,6 +36,7 @@ WindowContext::~WindowContext() {
 
 void WindowContext::setTitle(const std::string& title) {
     glfwSetWindowTitle(mWindow, title.c_str());
+    mTitle = title;
 }
 
 void WindowContext::bindCurrent() {

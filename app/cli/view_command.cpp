@@ -26,13 +26,14 @@ void addViewCommand(CLI::App& app, ViewOptions& options) {
         ->check(CLI::NonNegativeNumber);
     cmd->add_option("--screenshot", options.screenshotPath,
                     "with --frames: write the last frame's window (UI included) as PNG");
-    cmd->add_option("--script", options.scriptPath,
-                    "replay input from a file (key, mouse_drag, wheel, set, view, frames ...)");
+    cmd->add_option(
+        "--script", options.scriptPath,
+        "replay input from a file (key, mouse_drag, click, type, set, view, frames ...)");
     cmd->add_option("--reference", options.referencePath,
                     "reference image (.pfm or .exr) for the side-by-side and error views");
     cmd->footer(
-        "Keys: WASD/QE fly, left drag looks, wheel sets the speed, F5 reloads changed shaders, F12 "
-        "writes a screenshot.");
+        "Keys: WASD/QE fly, left drag looks, wheel sets the speed, F1 lists the keys, F2 hides the "
+        "frame-rate overlay, F5 reloads changed shaders, F12 writes a screenshot, Ctrl+Q quits.");
 }
 
 int runView(const ViewOptions& options) {

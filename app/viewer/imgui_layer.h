@@ -2,6 +2,8 @@
 // RAII: the constructor installs the backends, the destructor removes them.
 #pragma once
 
+#include "viewer/input_queue.h"
+
 struct GLFWwindow;
 
 namespace ispm {
@@ -13,11 +15,13 @@ class ImGuiLayer {
     ImGuiLayer(const ImGuiLayer&) = delete;
     ImGuiLayer& operator=(const ImGuiLayer&) = delete;
 
-    void beginFrame();
+    // Starts an ImGui frame with this frame's share of the window's events (InputQueue).
+    void beginFrame(const FrameInput& input);
     // Renders the UI into the bound default framebuffer (the backend restores the GL state it
     // changes; the passes set their own state anyway).
     void endFrame();
-    // True while ImGui uses the mouse or keyboard: the fly camera must not react then.
+    // True while ImGui uses the mouse or keyboard (as of beginFrame): the fly camera must not
+    // react then.
     bool isCapturingMouse() const;
     bool isCapturingKeyboard() const;
 };

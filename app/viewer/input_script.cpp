@@ -33,6 +33,17 @@ std::string parseWord(std::istringstream& in, const std::string& where, const ch
     return word;
 }
 
+std::string toUpper(std::string text) {
+    for (char& ch : text)
+        ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+    return text;
+}
+
+bool isTypable(char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) != 0 ||
+           std::string(" ._/-").find(c) != std::string::npos;
+}
+
 ScriptCommand parseLine(const std::string& command, std::istringstream& in,
                         const std::string& where) {
     using Kind = ScriptCommand::Kind;
@@ -83,6 +94,9 @@ ScriptCommand parseLine(const std::string& command, std::istringstream& in,
     } else if (command == "wait_file") {
         c.kind = Kind::WaitFile;
         c.path = parseWord(in, where, "a file to wait for");
+    } else if (command == "load_scene") {
+        c.kind = Kind::LoadScene;
+        c.path = parseWord(in, where, "a scene file (.json)");
     } else if (command == "load_reference") {
         c.kind = Kind::LoadReference;
         c.path = parseWord(in, where, "a reference image (.pfm or .exr)");
@@ -104,6 +118,40 @@ ScriptCommand parseLine(const std::string& command, std::istringstream& in,
     } else if (command == "save_settings") {
         c.kind = Kind::SaveSettings;
         c.path = parseWord(in, where, "an output .json file");
+    } else if (command == "print_panel") {
+        c.kind = Kind::PrintPanel;
+    } else if (command == "click" || command == "mouse_move") {
+        c.kind = command == "click" ? Kind::Click : Kind::MouseMove;
+        c.x = parseFloat(in, where, "x in window pixels");
+        c.y = parseFloat(in, where, "y in window pixels");
+    } else if (command == "click_item") {
+        c.kind = Kind::ClickItem;
+        std::getline(in >> std::ws, c.text);
+        if (c.text.empty()) throw InputError(strCat(where, ": expected a panel item's name"));
+    } else if (command == "press") {
+        c.kind = Kind::Press;
+        c.text = toUpper(parseWord(in, where, "a key"));
+        if (c.text.starts_with("CTRL+")) {
+            c.option = "ctrl";
+            c.text = c.text.substr(5);
+        }
+        if (!isScriptKeyName(c.text)) {
+            throw InputError(strCat(where,
+                                    ": expected a key (A-Z, 0-9, F1-F12, Escape, Enter, "
+                                    "Tab, Backspace, optionally ctrl+), got '",
+                                    c.text, "'"));
+        }
+    } else if (command == "type") {
+        c.kind = Kind::Type;
+        std::getline(in, c.text);
+        if (!c.text.empty() && c.text[0] == ' ') c.text.erase(0, 1); // the separator
+        if (c.text.empty()) throw InputError(strCat(where, ": expected the text to type"));
+        for (char ch : c.text) {
+            if (!isTypable(ch)) {
+                throw InputError(strCat(where, ": cannot type '", std::string(1, ch),
+                                        "' (letters, digits, spaces and . _ / - only)"));
+            }
+        }
     } else if (command == "frames") {
         c.kind = Kind::Frames;
         c.frames = parseCount(in, where, "the frames to wait");
@@ -111,11 +159,13 @@ ScriptCommand parseLine(const std::string& command, std::istringstream& in,
         throw InputError(strCat(
             where, ": unknown command '", command,
             "' (expected key, mouse_drag, wheel, set, view, points, reset_camera, reload_shaders, "
-            "wait_file, load_reference, render_reference, write_aov, screenshot, save_settings, "
-            "compute_metrics or frames)"));
+            "wait_file, load_scene, load_reference, render_reference, write_aov, screenshot, "
+            "save_settings, "
+            "compute_metrics, print_panel, click, click_item, mouse_move, press, type or "
+            "frames)"));
     }
     std::string extra;
-    if (c.kind != Kind::View && in >> extra) {
+    if (c.kind != Kind::View && c.kind != Kind::ClickItem && c.kind != Kind::Type && in >> extra) {
         throw InputError(strCat(where, ": unexpected '", extra, "' after the command"));
     }
     return c;
@@ -124,10 +174,23 @@ ScriptCommand parseLine(const std::string& command, std::istringstream& in,
 bool isOutput(const ScriptCommand& c) {
     using Kind = ScriptCommand::Kind;
     return c.kind == Kind::WriteAov || c.kind == Kind::Screenshot || c.kind == Kind::SaveSettings ||
-           c.kind == Kind::ComputeMetrics;
+           c.kind == Kind::ComputeMetrics || c.kind == Kind::PrintPanel;
 }
 
 } // namespace
+
+bool isScriptKeyName(const std::string& name) {
+    if (name.size() == 1) return std::isalnum(static_cast<unsigned char>(name[0])) != 0;
+    if (name == "ESCAPE" || name == "ENTER" || name == "TAB" || name == "BACKSPACE") return true;
+    if (name.size() < 2 || name[0] != 'F') return false;
+    const std::string digits = name.substr(1);
+    if (digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 2) {
+        return false;
+    }
+    const int number = std::stoi(digits);
+    constexpr int kFunctionKeys = 12;
+    return number >= 1 && number <= kFunctionKeys;
+}
 
 std::vector<ScriptCommand> parseInputScript(const std::string& text,
                                             const std::string& sourceName) {

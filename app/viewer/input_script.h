@@ -12,13 +12,27 @@
 //   reload_shaders       what F5 does: rebuild the programs whose shader files changed
 //   wait_file F          stop until file F exists (another process, e.g. a test, edits shaders
 //                        meanwhile); gives up with an error after a minute
+//   load_scene F         switch to scene file F, as the scene picker does
 //   load_reference F     load a reference image (.pfm or .exr), as --reference does
 //   render_reference on|off  path-trace the reference progressively inside the viewer
 //   write_aov AOV F      write the current frame's AOV (direct, indirect, total, display) to F
 //   screenshot F         write the window (UI included) as PNG to F
 //   save_settings F      write the current settings as a scene `render` block (the panel's "save")
 //   compute_metrics      compare the total AOV with the reference (relMSE, SSIM) and print them
+//   print_panel          print the panel's messages, the window title, the camera and the
+//                        Stats frame time ("panel NAME: VALUE" lines)
+//   click X Y            window events, as the mouse gives them: move to X, Y (window pixels),
+//                        press and release the left button
+//   click_item NAME      the same on a panel widget as last drawn ("save", "save path",
+//                        "view stops", "view stops help": the "(?)" on display)
+//   mouse_move X Y       move the pointer to X, Y
+//   press KEY            press and release KEY (A-Z, 0-9, F1-F12, Escape, Enter, Tab,
+//                        Backspace), "ctrl+KEY" with Control held
+//   type TEXT            the key and character events of typing TEXT (letters, digits, spaces,
+//                        . _ / -)
 //   frames N             let N frames pass
+// Window events go through the viewer's event queue, as the real mouse and keyboard do; the
+// script goes on once they have all been handed to the frames.
 // Blank lines and lines starting with '#' are ignored.
 #pragma once
 
@@ -39,23 +53,35 @@ struct ScriptCommand {
         ResetCamera,
         ReloadShaders,
         WaitFile,
+        LoadScene,
         LoadReference,
         RenderReference,
         WriteAov,
         Screenshot,
         SaveSettings,
         ComputeMetrics,
+        PrintPanel,
+        Click,
+        ClickItem,
+        MouseMove,
+        Press,
+        Type,
         Frames
     };
     Kind kind = Kind::Frames;
-    std::string text;   // key, setting assignment, view, points choice, AOV name, on/off
-    std::string path;   // write_aov, screenshot, save_settings, load_reference, wait_file
-    std::string option; // points: the colouring
-    float x = 0.0f;     // drag dx, wheel steps
-    float y = 0.0f;     // drag dy
+    std::string text;   // key, setting assignment, view, points choice, AOV name, on/off,
+                        // item name, key name (upper case), typed text
+    std::string path;   // write_aov, screenshot, save_settings, load_scene, load_reference,
+                        // wait_file
+    std::string option; // points: the colouring; press: "ctrl" or empty
+    float x = 0.0f;     // drag dx, wheel steps, click and move x
+    float y = 0.0f;     // drag dy, click and move y
     int frames = 0;     // frames the command lasts; 0 for instantaneous commands
     std::string where;  // "file:line" for messages
 };
+
+// Whether `name` (upper case: "F12", "ESCAPE", "W") is a key `press` knows.
+bool isScriptKeyName(const std::string& name);
 
 // Throws InputError naming file and line for an unknown command or a malformed argument.
 std::vector<ScriptCommand> parseInputScript(const std::string& text, const std::string& sourceName);

@@ -38,6 +38,8 @@ constexpr int kMaxSamplesPerFrame = 64;
 constexpr int kAutoMetricsFrames = 30;
 constexpr float kMinHeatMax = 0.01f;
 constexpr float kMaxHeatMax = 10.0f;
+constexpr const char* kTracerTimingName = "reference (path tracer)"; // its Stats row
+const ImVec4 kWarningColour(1.0f, 0.4f, 0.4f, 1.0f);
 
 uint32_t toGpuMode(ReferenceMode mode) {
     switch (mode) {
@@ -53,13 +55,14 @@ uint32_t toGpuMode(ReferenceMode mode) {
 
 } // namespace
 
-ReferenceView::ReferenceView()
+ReferenceView::ReferenceView(gl::TimingMethod timing)
     : mProgram({.label = "viewer reference",
                 .stages = {{gl::ShaderStage::Vertex, "lib/fullscreen.vert"},
                            {gl::ShaderStage::Fragment, "viewer/reference_view.frag"}}}),
       mParams("viewer reference parameters", sizeof(gpu::ReferenceViewParams)),
       mVertexArray("viewer reference vao"),
-      mSampler("viewer reference sampler", gl::Filter::Nearest, gl::Wrap::ClampToEdge) {}
+      mSampler("viewer reference sampler", gl::Filter::Nearest, gl::Wrap::ClampToEdge),
+      mTimer(timing) {}
 
 void ReferenceView::load(const std::string& path) {
     Image image = readImage(path); // throws InputError naming the file
@@ -87,9 +90,11 @@ void ReferenceView::setRendering(bool rendering) {
 void ReferenceView::restart() {
     mPass.reset();
     mStillFrames = 0;
+    mMetricsText.clear();
 }
 
 void ReferenceView::update(const Scene& scene, const FrameRunner& runner) {
+    mFrameTiming.reset();
     if (mRendering && (mPass || ++mStillFrames >= kStillFramesBeforeRestart)) {
         if (!mPass) {
             try {
@@ -103,23 +108,47 @@ void ReferenceView::update(const Scene& scene, const FrameRunner& runner) {
                 return;
             }
         }
+        mTimer.begin(kTracerTimingName);
         for (int i = 0; i < mSamplesPerFrame; ++i)
             mPass->addSample();
+        mTimer.end();
+        if (const auto samples = mTimer.collect()) {
+            for (const gl::PassTimer::Sample& sample : *samples)
+                mLastTracedMs = sample.ms;
+        }
+        mFrameTiming = PassTiming{kTracerTimingName, mLastTracedMs};
     }
-    if (mAutoMetrics && hasReference() && ++mFramesSinceMetrics >= kAutoMetricsFrames) {
+    if (mAutoMetrics && hasReference(runner.getWidth(), runner.getHeight()) &&
+        ++mFramesSinceMetrics >= kAutoMetricsFrames) {
         computeMetrics(runner);
     }
 }
 
-const gl::Texture* ReferenceView::getSource() const {
+const gl::Texture* ReferenceView::getSource(int width, int height) const {
     if (mRendering) return mPass ? &mPass->getAccumulation() : nullptr;
-    return mLoadedImage.isEmpty() ? nullptr : &mLoaded;
+    if (mLoadedImage.isEmpty() || !describeSizeMismatch(width, height).empty()) return nullptr;
+    return &mLoaded;
+}
+
+std::string ReferenceView::describeMissing(int width, int height) const {
+    if (mRendering) return mPass ? "" : "no reference yet: the path tracer waits for the camera";
+    if (mLoadedImage.isEmpty()) return "no reference: load one or render it";
+    return describeSizeMismatch(width, height);
+}
+
+std::string ReferenceView::describeSizeMismatch(int width, int height) const {
+    if (mLoadedImage.width == width && mLoadedImage.height == height) return {};
+    return strCat("the reference is ", mLoadedImage.width, "x", mLoadedImage.height,
+                  ", the render ", width, "x", height,
+                  ": not shown or compared (resize the "
+                  "window or load one of the render's size)");
 }
 
 std::string ReferenceView::computeMetrics(const FrameRunner& runner) {
     mFramesSinceMetrics = 0;
-    if (!hasReference()) {
-        mMetricsText = "no reference: load one or render it";
+    const std::string missing = describeMissing(runner.getWidth(), runner.getHeight());
+    if (!missing.empty()) {
+        mMetricsText = missing;
     } else {
         const Image total = readTextureImage(runner.getAov(Aov::Total));
         const Image reference = mRendering ? mPass->readMean() : mLoadedImage;
@@ -136,7 +165,7 @@ std::string ReferenceView::computeMetrics(const FrameRunner& runner) {
 
 void ReferenceView::draw(const FrameRunner& runner, ReferenceMode mode, float exposureStops,
                          int width, int height) const {
-    const gl::Texture* source = getSource();
+    const gl::Texture* source = getSource(width, height);
     if (source == nullptr) return; // the panel says why the region is black
     gl::applyState({});
     gl::bindDefaultFramebuffer(width, height);
@@ -185,7 +214,13 @@ void ReferenceView::drawPanel(const FrameRunner& runner) {
         ImGui::Text("%d samples per pixel%s", mPass ? mPass->getSampleCount() : 0,
                     mPass ? "" : " (waiting for the camera to stop)");
     } else if (!mLoadedPath.empty()) {
-        ImGui::Text("file: %s", mLoadedPath.c_str());
+        ImGui::TextWrapped("file: %s", mLoadedPath.c_str());
+        const std::string mismatch = describeSizeMismatch(runner.getWidth(), runner.getHeight());
+        if (!mismatch.empty()) {
+            ImGui::PushStyleColor(ImGuiCol_Text, kWarningColour);
+            ImGui::TextWrapped("%s", mismatch.c_str());
+            ImGui::PopStyleColor();
+        }
     } else {
         ImGui::TextDisabled("no reference: load a .pfm/.exr or render one");
     }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "gl/objects.h"
+#include "gl/timer.h"
 #include "image/image.h"
 #include "render/frame.h"
 #include "render/reference_pass.h"
@@ -12,24 +13,35 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace ispm {
 
 class ReferenceView {
   public:
-    ReferenceView();
+    // `timing`: how the path tracer's samples are timed for the Stats panel (as the passes).
+    explicit ReferenceView(gl::TimingMethod timing);
 
     // Throws InputError naming the file when it cannot be read as an image.
     void load(const std::string& path);
     void setRendering(bool rendering);
-    // The camera, the settings or the lights changed: the rendered reference starts over (once
-    // the camera has been still for a moment, so flying does not rebuild it every frame).
+    // The scene, the camera, the settings or the lights changed: the rendered reference starts
+    // over (once the camera has been still for a moment, so flying does not rebuild it every
+    // frame), and the metrics shown, which describe the old view, go.
     void restart();
     // After the frame: adds this frame's samples to the rendered reference (built from `scene`
     // and the runner's settings) and refreshes the metrics when they are set to follow.
     void update(const Scene& scene, const FrameRunner& runner);
-    bool hasReference() const { return getSource() != nullptr; }
+    // A reference to show and compare: rendered, or loaded at the render's size (`width` x
+    // `height`); one of another size is refused with a message, never stretched.
+    bool hasReference(int width, int height) const { return getSource(width, height) != nullptr; }
+    // Why there is no reference to show or compare at that size (empty when there is one).
+    std::string describeMissing(int width, int height) const;
+    // The path tracer's time this frame (by the timing method given), when it added samples.
+    std::optional<PassTiming> getFrameTiming() const { return mFrameTiming; }
+    const std::string& getMetricsText() const { return mMetricsText; }
+    const std::string& getStatus() const { return mStatus; }
 
     // relMSE and SSIM of the runner's total against the reference, read back now; the text also
     // shows in the panel. Size mismatches and a missing reference give a message, not a throw.
@@ -45,7 +57,9 @@ class ReferenceView {
     void reloadPrograms(ShaderReloadReport& report) { mProgram.reloadIfChanged(report); }
 
   private:
-    const gl::Texture* getSource() const;
+    const gl::Texture* getSource(int width, int height) const;
+    // The loaded image's size against the render's, as the panel says it (empty when it fits).
+    std::string describeSizeMismatch(int width, int height) const;
 
     ReloadableProgram mProgram;
     gl::Buffer mParams; // gpu::ReferenceViewParams
@@ -64,6 +78,9 @@ class ReferenceView {
     int mFramesSinceMetrics = 0;
     std::string mMetricsText;
     std::string mStatus;
+    gl::PassTimer mTimer;
+    std::optional<PassTiming> mFrameTiming;
+    double mLastTracedMs = 0.0; // the newest time the timer gave (a few frames late on GPUs)
 };
 
 } // namespace ispm

@@ -21,14 +21,14 @@ constexpr double kDragFraction = 0.005; // of the current value per pixel dragge
 constexpr double kMinFloatSpeed = 1e-4; // so a zero value can still be dragged away
 constexpr float kMinIntSpeed = 0.2f;    // five pixels per step for small integers
 constexpr int kJsonIndent = 2;
+constexpr float kTooltipWidthEm = 28.0f; // tooltips wrap here: they fit beside the panel
 
 const char* kWhere = "viewer settings panel";
 
 void showHelp(const SettingDesc& d) {
     if (!ImGui::IsItemHovered()) return;
     const std::string unit = d.unit.empty() ? std::string() : strCat(" [", d.unit, "]");
-    ImGui::SetTooltip("%s%s\nrange %g .. %g", std::string(d.help).c_str(), unit.c_str(), d.minValue,
-                      d.maxValue);
+    showWrappedTooltip(strCat(d.help, unit, "\nrange ", d.minValue, " .. ", d.maxValue));
 }
 
 bool drawValue(const SettingDesc& d, Settings& settings) {
@@ -78,6 +78,23 @@ bool drawValue(const SettingDesc& d, Settings& settings) {
 
 } // namespace
 
+void showWrappedTooltip(const std::string& text) {
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * kTooltipWidthEm);
+    ImGui::TextUnformatted(text.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+}
+
+float computeSettingsLabelWidth() {
+    float width = 0.0f;
+    for (const SettingDesc& d : getSettingTable()) {
+        const std::string name(d.name);
+        width = std::max(width, ImGui::CalcTextSize(name.c_str()).x);
+    }
+    return width + ImGui::GetStyle().ItemInnerSpacing.x;
+}
+
 bool isWindowSetting(std::string_view name) {
     return name == "width" || name == "height";
 }
@@ -114,12 +131,16 @@ bool drawSettingsPanel(Settings& settings, const DerivedValues& derived) {
             }
             ImGui::SameLine();
             if (isAuto) {
+                // Wrapped: a long unit must not run past the panel's edge.
+                ImGui::PushStyleColor(ImGuiCol_Text,
+                                      ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
                 if (value) {
-                    ImGui::TextDisabled("%s = %.4g %s (derived)", std::string(d.name).c_str(),
-                                        *value, std::string(d.unit).c_str());
+                    ImGui::TextWrapped("%s = %.4g %s (derived)", std::string(d.name).c_str(),
+                                       *value, std::string(d.unit).c_str());
                 } else {
-                    ImGui::TextDisabled("%s (derived)", std::string(d.name).c_str());
+                    ImGui::TextWrapped("%s (derived)", std::string(d.name).c_str());
                 }
+                ImGui::PopStyleColor();
                 showHelp(d);
             } else {
                 changed |= drawValue(d, settings);

@@ -12,6 +12,13 @@
 
 namespace ispm {
 
+// A tooltip whose text wraps at a readable width instead of running off the window's edge.
+void showWrappedTooltip(const std::string& text);
+
+// The widest setting name in the current font, with the gap before it: the room the panels keep
+// right of their widgets for labels (the other panels' labels are shorter).
+float computeSettingsLabelWidth();
+
 // Settings the panel shows but does not edit: the window size decides them.
 bool isWindowSetting(std::string_view name);
 

@@ -19,13 +19,11 @@
 #include "viewer/fly_camera.h"
 #include "viewer/imgui_layer.h"
 #include "viewer/reference_view.h"
-#include "viewer/screenshot.h"
 
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
 #include <cstdio>
-#include <filesystem>
 #include <memory>
 
 namespace ispm {
@@ -62,40 +60,59 @@ Viewer::Viewer(Scene scene, const ViewerOptions& options)
     : mScene(std::move(scene)), mOptions(options), mContext(makeWindowOptions(mScene, options)),
       mWindow(mContext.getWindow()), mTiming(chooseTiming(mContext)),
       mRunner(std::make_unique<FrameRunner>(mScene, mScene.settings, mTiming)),
-      mImGui(installCallbacks()),
+      mImGui(installCallbacks()), mReference(mTiming),
       mFly(mScene.camera, glm::length(mScene.computeWorldBounds().getExtent())),
       mScript(options.script) {
     if (!options.referencePath.empty()) mReference.load(options.referencePath);
     mScenePaths = listScenesBeside(mScene.sourcePath);
     mLastTime = glfwGetTime();
     glfwGetCursorPos(mWindow, &mLastCursor.x, &mLastCursor.y);
+    mInput.setCursor(mLastCursor);
 }
 
-// The callbacks go in before ImGui's backend, which chains them. Events, not polled state: a
-// key tapped between two slow frames (a software renderer) must still count.
+Viewer& Viewer::getViewer(GLFWwindow* window) {
+    return *static_cast<Viewer*>(glfwGetWindowUserPointer(window));
+}
+
+// Events, not polled state: a click, a key tapped or a character typed between two slow frames
+// (a software renderer) reaches ImGui and the camera in its order (InputQueue).
 GLFWwindow* Viewer::installCallbacks() {
     glfwSetWindowUserPointer(mWindow, this);
-    glfwSetScrollCallback(mWindow, onScroll);
-    glfwSetKeyCallback(mWindow, onKey);
-    // Held keys are polled; sticky keys keep a short press visible until the next poll.
-    glfwSetInputMode(mWindow, GLFW_STICKY_KEYS, GLFW_TRUE);
+    glfwSetCursorPosCallback(mWindow, [](GLFWwindow* w, double x, double y) {
+        getViewer(w).mInput.push(InputEvent::move({x, y}));
+    });
+    glfwSetMouseButtonCallback(mWindow, [](GLFWwindow* w, int button, int action, int mods) {
+        (void)mods;
+        getViewer(w).mInput.push(InputEvent::button(button, action == GLFW_PRESS));
+    });
+    glfwSetScrollCallback(mWindow, [](GLFWwindow* w, double dx, double dy) {
+        (void)dx;
+        getViewer(w).mInput.push(InputEvent::wheel(dy));
+    });
+    glfwSetKeyCallback(mWindow, [](GLFWwindow* w, int key, int scancode, int action, int mods) {
+        (void)scancode;
+        if (action == GLFW_REPEAT) return; // held keys stay down until released
+        getViewer(w).mInput.push(InputEvent::key(key, action == GLFW_PRESS, mods));
+    });
+    glfwSetCharCallback(mWindow, [](GLFWwindow* w, unsigned int c) {
+        getViewer(w).mInput.push(InputEvent::character(c));
+    });
     return mWindow;
 }
 
-void Viewer::onKey(GLFWwindow* window, int key, int scancode, int action, int mods) {
-    (void)scancode;
-    (void)mods;
-    if (key == GLFW_KEY_F12 && action == GLFW_PRESS) {
-        static_cast<Viewer*>(glfwGetWindowUserPointer(window))->mScreenshotRequested = true;
+// F5 and F12 act whatever has the keyboard; F1, F2 and Ctrl+Q (quit) unless a text field has it.
+void Viewer::handleKeys(const FrameInput& input) {
+    const bool typing = mImGui.isCapturingKeyboard();
+    for (const InputEvent& e : input.events) {
+        if (e.kind != InputEvent::Kind::Key || !e.down) continue;
+        if (e.code == GLFW_KEY_F12) mScreenshotRequested = true;
+        if (e.code == GLFW_KEY_F5) mReloadRequested = true;
+        if (e.code == GLFW_KEY_F1 && !typing) mShowHelp = !mShowHelp;
+        if (e.code == GLFW_KEY_F2 && !typing) mShowFrameRate = !mShowFrameRate;
+        if (e.code == GLFW_KEY_Q && (e.mods & GLFW_MOD_CONTROL) != 0 && !typing) {
+            glfwSetWindowShouldClose(mWindow, GLFW_TRUE);
+        }
     }
-    if (key == GLFW_KEY_F5 && action == GLFW_PRESS) {
-        static_cast<Viewer*>(glfwGetWindowUserPointer(window))->mReloadRequested = true;
-    }
-}
-
-void Viewer::onScroll(GLFWwindow* window, double dx, double dy) {
-    (void)dx;
-    static_cast<Viewer*>(glfwGetWindowUserPointer(window))->mPendingWheel += dy;
 }
 
 void Viewer::applySettings(const Settings& settings) {
@@ -132,31 +149,29 @@ void Viewer::syncRenderSize() {
     applySettings(next);
 }
 
-CameraInput Viewer::readUserInput() {
+// The camera's share of this frame's events: ImGui has seen them (beginFrame), so its capture
+// flags are those of this frame, not the last one.
+CameraInput Viewer::readUserInput(const FrameInput& in) {
     CameraInput input;
-    glm::dvec2 cursor;
-    glfwGetCursorPos(mWindow, &cursor.x, &cursor.y);
-    const bool leftDown = glfwGetMouseButton(mWindow, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
-    // A drag belongs to the camera only if it started outside the panels.
-    if (leftDown && !mDragging && !mImGui.isCapturingMouse()) mDragging = true;
-    if (!leftDown) mDragging = false;
-    if (mDragging) input.dragPx = glm::vec2(cursor - mLastCursor);
-    mLastCursor = cursor;
-    if (!mImGui.isCapturingMouse()) input.wheel = static_cast<float>(mPendingWheel);
-    mPendingWheel = 0.0;
-    if (!mImGui.isCapturingKeyboard()) {
-        for (const KeyAxis& k : kMoveKeys) {
-            if (glfwGetKey(mWindow, k.key) == GLFW_PRESS) input.move += k.move;
+    const bool panelHasMouse = mImGui.isCapturingMouse();
+    for (const InputEvent& e : in.events) {
+        // A drag belongs to the camera only if it started outside the panels.
+        if (e.kind == InputEvent::Kind::Button && e.code == kMouseLeft) {
+            mDragging = e.down && !panelHasMouse;
+        }
+        if (e.kind == InputEvent::Kind::Move) {
+            if (mDragging) input.dragPx += glm::vec2(e.cursor - mLastCursor);
+            mLastCursor = e.cursor;
+        }
+        if (e.kind == InputEvent::Kind::Scroll && !panelHasMouse) {
+            input.wheel += static_cast<float>(e.scroll);
         }
     }
+    mCameraKeys.apply(in, mImGui.isCapturingKeyboard());
+    for (const KeyAxis& k : kMoveKeys) {
+        if (mCameraKeys.isHeld(k.key)) input.move += k.move;
+    }
     return input;
-}
-
-void Viewer::takeScreenshot(const std::string& path) {
-    writeScreenshot(path, mWindowWidth, mWindowHeight);
-    mStatus = strCat("wrote ", path);
-    std::printf("wrote %s (%dx%d window)\n", path.c_str(), mWindowWidth, mWindowHeight);
-    std::fflush(stdout); // the viewer runs long: say so now, not at exit
 }
 
 // Loads another scene with the command line's settings on top and the window's size; a bad file
@@ -166,7 +181,7 @@ void Viewer::switchScene(const std::string& path) {
     try {
         next = loadScene(path);
     } catch (const InputError& e) {
-        mStatus = e.what();
+        setStatus(e.what(), true);
         return;
     }
     next.settings.merge(mOptions.commandLine);
@@ -179,7 +194,7 @@ void Viewer::switchScene(const std::string& path) {
     mRunner = std::make_unique<FrameRunner>(mScene, mScene.settings, mTiming);
     mFly = FlyCamera(mScene.camera, glm::length(mScene.computeWorldBounds().getExtent()));
     mLightEdit = LightEdit::None;
-    mStatus = strCat("loaded ", path);
+    setStatus(strCat("loaded ", path), false);
 }
 
 void Viewer::drawFrame() {
@@ -200,9 +215,11 @@ void Viewer::drawFrame() {
         mPointsDrawer.draw(*mRunner, mPoints, mPointsColour);
     }
     gl::bindDefaultFramebuffer(mWindowWidth, mWindowHeight);
-    mImGui.beginFrame();
     drawPanels();
-    if (view.referenceMode == ReferenceMode::HeatMap && mReference.hasReference()) {
+    if (mShowFrameRate) drawFrameRateOverlay();
+    if (mShowHelp) drawHelp();
+    if (view.referenceMode == ReferenceMode::HeatMap &&
+        mReference.hasReference(mRunner->getWidth(), mRunner->getHeight())) {
         mReference.drawLegendLabels(mRunner->getHeight());
     }
     mImGui.endFrame();
@@ -224,13 +241,26 @@ int Viewer::run() {
 
         CameraInput scripted;
         std::vector<const ScriptCommand*> afterFrame;
-        for (const ScriptCommand* c : mScript.advanceFrame())
-            runScriptCommand(*c, scripted, afterFrame);
+        // Said the frame after the last command's, so that its outputs saw the panel before.
+        const bool scriptInputSeen = mInput.getTakenCount() >= mScriptInputEnd;
+        if (!mScriptDone && !mOptions.script.empty() && mScript.isFinished() && scriptInputSeen) {
+            mScriptDone = true;
+            setStatus(strCat("script finished (", mOptions.script.size(), " commands)"), false);
+        }
+        // A script's clicks and keys go through the queue as the window's do; the script goes on
+        // once they have all reached a frame (the user's own events do not hold it up).
+        if (scriptInputSeen) {
+            for (const ScriptCommand* c : mScript.advanceFrame())
+                runScriptCommand(*c, scripted, afterFrame);
+        }
+        const FrameInput input = mInput.takeFrame();
+        mImGui.beginFrame(input);
+        handleKeys(input);
         if (mReloadRequested) reloadShaders();
         mReloadRequested = false;
         const Camera before = mScene.camera;
         mFly.update(scripted, kScriptFrameSeconds, mScene.camera);
-        mFly.update(readUserInput(), seconds, mScene.camera);
+        mFly.update(readUserInput(input), seconds, mScene.camera);
         if (!isSameCamera(before, mScene.camera) || mLightEdit != LightEdit::None) {
             mReference.restart();
         }
@@ -245,7 +275,6 @@ int Viewer::run() {
 
         mRunner->setTimeStep(seconds); // eye adaptation follows the wall clock
         mRunner->renderFrame();
-        mTimings.record(mRunner->getLastTimings());
         // Counts and the white point are read back for the Stats panel only, every few frames:
         // a read-back waits for the GPU to finish the frame.
         if (mFrameIndex++ % kStatsReadbackFrames == 0) {
@@ -253,26 +282,19 @@ int Viewer::run() {
             mLuminanceMax = mRunner->readLuminanceMax();
         }
         mReference.update(mScene, *mRunner);
+        // The frame row counts the in-viewer path tracer too, when it ran this frame.
+        std::vector<PassTiming> timings = mRunner->getLastTimings();
+        if (const std::optional<PassTiming> traced = mReference.getFrameTiming()) {
+            timings.push_back(*traced);
+        }
+        mTimings.record(timings);
 
         drawFrame();
 
         for (const ScriptCommand* c : afterFrame)
             writeScriptOutput(*c);
-        if (mScreenshotRequested) {
-            // F12: numbered past the files already there, reported in the panel when the folder
-            // cannot take it.
-            std::string path;
-            std::error_code error;
-            do {
-                path = strCat("ispm_screenshot_", mScreenshotCount++, ".png");
-            } while (std::filesystem::exists(path, error));
-            try {
-                takeScreenshot(path);
-            } catch (const std::runtime_error& e) {
-                mStatus = e.what();
-            }
-            mScreenshotRequested = false;
-        }
+        if (mScreenshotRequested) takeNumberedScreenshot();
+        mScreenshotRequested = false;
         ++frame;
         if (frame == mOptions.maxFrames && !mOptions.screenshotPath.empty()) {
             takeScreenshot(mOptions.screenshotPath);

@@ -13,6 +13,7 @@
 #include "viewer/debug_view.h"
 #include "viewer/fly_camera.h"
 #include "viewer/imgui_layer.h"
+#include "viewer/input_queue.h"
 #include "viewer/input_script.h"
 #include "viewer/reference_view.h"
 #include "viewer/settings_panel.h"
@@ -22,6 +23,7 @@
 #include <GLFW/glfw3.h>
 
 #include <array>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -54,23 +56,42 @@ inline constexpr std::array<KeyAxis, 6> kMoveKeys = {{
     {GLFW_KEY_Q, 'Q', {0, -1, 0}},
 }};
 
+// Whether the debug view's "view stops" scale applies to `view`: not to display, which is the
+// tone-mapped frame (its brightness is the `exposure` setting, before the tone map).
+bool usesViewStops(const DebugView& view);
+
+// A widget's place on the panel as last drawn, for scripts that click it (`click_item`).
+struct ItemRect {
+    glm::vec2 min{0.0f};
+    glm::vec2 max{0.0f};
+};
+
 class Viewer {
   public:
     Viewer(Scene scene, const ViewerOptions& options);
     int run();
 
   private:
-    static void onScroll(GLFWwindow* window, double dx, double dy);
-    static void onKey(GLFWwindow* window, int key, int scancode, int action, int mods);
+    static Viewer& getViewer(GLFWwindow* window);
     GLFWwindow* installCallbacks();
+    void handleKeys(const FrameInput& input); // F1, F5, F12, Ctrl+Q
+    void pushScriptInput(const ScriptCommand& c);
+    void recordItem(const std::string& name); // the last widget, for `click_item`
+    void printPanel();                        // `print_panel`
+    void drawHelp();                          // the F1 window: keys and mouse
+    void drawFrameRateOverlay();
+    float computeStatusFooterHeight() const;
     void syncRenderSize();
     void applySettings(const Settings& settings);
     void runScriptCommand(const ScriptCommand& c, CameraInput& input,
                           std::vector<const ScriptCommand*>& afterFrame);
     void writeScriptOutput(const ScriptCommand& c);
-    CameraInput readUserInput();
+    CameraInput readUserInput(const FrameInput& input);
     void drawPanels();
-    void takeScreenshot(const std::string& path);
+    void takeScreenshot(const std::string& path); // throws when the file cannot be written
+    void takeNumberedScreenshot();                // F12
+    void saveSettings(const std::string& path);   // the panel's "save"
+    void setStatus(const std::string& text, bool isError);
     void drawScenePicker();
     void drawPointColourLegend() const; // what the photon points' colours mean
     void switchScene(const std::string& path);
@@ -89,7 +110,7 @@ class Viewer {
     PhotonPointsDrawer mPointsDrawer;
     PhotonPoints mPoints = PhotonPoints::None;
     PhotonColour mPointsColour = PhotonColour::Kind;
-    ReferenceView mReference;
+    ReferenceView mReference;      // after mTiming
     bool mReloadRequested = false; // F5
     std::string mShaderStatus;     // the last reload's result (its errors stay until fixed)
     bool mShaderError = false;
@@ -107,15 +128,22 @@ class Viewer {
     int mWindowWidth = 0;
     int mWindowHeight = 0;
     double mLastTime = 0.0;
-    double mPendingWheel = 0.0;
+    InputQueue mInput; // the window's events (and a script's stand-ins), in order
+    CameraKeys mCameraKeys;
+    uint64_t mScriptInputEnd = 0; // the queue's count after the script's last event
     glm::dvec2 mLastCursor{0.0};
     bool mDragging = false;
+    bool mShowHelp = false;            // F1
+    bool mShowFrameRate = true;        // F2: the frame-rate overlay
     bool mScreenshotRequested = false; // F12
+    bool mScriptDone = false;          // said so in the panel once
+    std::map<std::string, ItemRect> mItems;
     int mScreenshotCount = 0;
     LightEdit mLightEdit = LightEdit::None;
     AnimationClock mClock;
     std::array<char, kPathCapacity> mSavePath{"settings.json"};
-    std::string mStatus;
+    std::string mStatus; // the panel's message line (a file written, a path refused ...)
+    bool mStatusIsError = false;
 };
 
 } // namespace ispm

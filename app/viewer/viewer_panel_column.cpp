@@ -11,12 +11,36 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <array>
+#include <cstdio>
 #include <filesystem>
+#include <utility>
 
 namespace ispm {
 namespace {
 
 constexpr float kMaxExposureStops = 20.0f; // the debug view's exposure slider
+constexpr float kOverlayMarginPx = 4.0f;
+constexpr float kOverlayAlpha = 0.6f; // the frame-rate overlay's backing
+constexpr size_t kOverlayTextSize = 64;
+constexpr float kHelpKeyColumnEm = 8.0f; // where the help window's descriptions start
+constexpr std::array<std::pair<const char*, const char*>, 12> kHelpLines = {{
+    {"W A S D", "fly forward, left, back, right"},
+    {"Q / E", "fly down / up"},
+    {"left drag", "look around (in the scene region)"},
+    {"wheel", "flying speed (in the scene region)"},
+    {"F1", "this help"},
+    {"F2", "frame rate overlay on/off"},
+    {"F5", "reload the shaders that changed on disk"},
+    {"F12", "screenshot (ispm_screenshot_N.png, this folder)"},
+    {"Ctrl+Q", "quit"},
+    {"Ctrl+click", "type a value into a slider or drag field"},
+    {"hover", "a setting's help, unit and range"},
+    {"Esc", "leave a text field without applying it"},
+}};
+constexpr float kMaxStatusLines = 4.0f; // the message footer's height at most
+const ImVec4 kErrorColour(1.0f, 0.4f, 0.4f, 1.0f);
+const ImVec4 kOkColour(0.6f, 0.9f, 0.6f, 1.0f);
 
 } // namespace
 
@@ -57,6 +81,10 @@ std::vector<std::string> listScenesBeside(const std::string& scenePath) {
     return paths;
 }
 
+bool usesViewStops(const DebugView& view) {
+    return !(view.source == DebugView::Source::Aov && view.aov == Aov::Display);
+}
+
 void Viewer::drawPanels() {
     const int renderWidth = mRunner->getWidth();
     ImGui::SetNextWindowPos(ImVec2(static_cast<float>(renderWidth), 0.0f));
@@ -65,6 +93,12 @@ void Viewer::drawPanels() {
     ImGui::Begin("ispm", nullptr,
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                      ImGuiWindowFlags_NoSavedSettings);
+    // The message line (a file written, a path refused, the script's end) is a footer: visible
+    // without scrolling, and its coming and going moves no widget above it.
+    const float footerHeight = computeStatusFooterHeight();
+    ImGui::BeginChild("panels", ImVec2(0.0f, -footerHeight));
+    // Widgets leave room for the widest label on their right: none is cut at the panel's edge.
+    ImGui::PushItemWidth(-computeSettingsLabelWidth());
     drawScenePicker();
     if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) {
         const DebugView& current = mViews[static_cast<size_t>(mViewIndex)];
@@ -76,8 +110,33 @@ void Viewer::drawPanels() {
             }
             ImGui::EndCombo();
         }
+        // Display is the tone-mapped frame: its brightness is the exposure setting.
+        const bool stops = usesViewStops(current);
+        ImGui::BeginDisabled(!stops);
         ImGui::SliderFloat("view stops", &mTransform.exposureStops, -kMaxExposureStops,
                            kMaxExposureStops);
+        ImGui::EndDisabled();
+        recordItem("view stops");
+        if (!stops) {
+            ImGui::SameLine();
+            ImGui::TextDisabled("(?)");
+            recordItem("view stops help");
+            if (ImGui::IsItemHovered()) {
+                showWrappedTooltip("view stops scale the linear views; display is tone mapped: "
+                                   "set its brightness with the exposure setting");
+            }
+        }
+        if (current.source == DebugView::Source::Reference) {
+            // The region stays black without a reference: say why here, not only under the
+            // (collapsed) Reference header.
+            const std::string missing =
+                mReference.describeMissing(mRunner->getWidth(), mRunner->getHeight());
+            if (!missing.empty()) {
+                ImGui::PushStyleColor(ImGuiCol_Text, kErrorColour);
+                ImGui::TextWrapped("%s", missing.c_str());
+                ImGui::PopStyleColor();
+            }
+        }
         int points = static_cast<int>(mPoints);
         if (ImGui::Combo("photon points", &points, kPhotonPointsNames.data(),
                          static_cast<int>(kPhotonPointsNames.size()))) {
@@ -96,13 +155,11 @@ void Viewer::drawPanels() {
             const int layers = mRunner->getLightGBuffer().getLayers();
             ImGui::SliderInt("light camera", &mTransform.lightLayer, 0, std::max(0, layers - 1));
         }
+        ImGui::Checkbox("frame rate overlay (F2)", &mShowFrameRate);
         ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-        ImGui::TextWrapped("F12: screenshot   F5: reload shaders   drag: look   WASD/QE: fly   "
-                           "wheel: speed");
+        ImGui::TextWrapped("F1: keys   F12: screenshot   F5: reload shaders   Ctrl+Q: quit");
         ImGui::PopStyleColor();
         if (!mShaderStatus.empty()) {
-            const ImVec4 kErrorColour(1.0f, 0.4f, 0.4f, 1.0f);
-            const ImVec4 kOkColour(0.6f, 0.9f, 0.6f, 1.0f);
             ImGui::PushStyleColor(ImGuiCol_Text, mShaderError ? kErrorColour : kOkColour);
             ImGui::TextWrapped("%s", mShaderStatus.c_str());
             ImGui::PopStyleColor();
@@ -120,21 +177,17 @@ void Viewer::drawPanels() {
         if (ImGui::Button("reset camera")) mFly.reset(mScene.camera);
     }
     if (ImGui::CollapsingHeader("Settings", ImGuiTreeNodeFlags_DefaultOpen)) {
+        // "save" first: the table is long.
+        ImGui::InputText("##savepath", mSavePath.data(), mSavePath.size());
+        recordItem("save path");
+        ImGui::SameLine();
+        if (ImGui::Button("save")) saveSettings(mSavePath.data());
+        recordItem("save");
         Settings edited = mRunner->getSettings();
         const auto derived = [&](std::string_view name) {
             return findDerivedValue(*mRunner, mLuminanceMax, name);
         };
         if (drawSettingsPanel(edited, derived)) applySettings(edited);
-        ImGui::InputText("##savepath", mSavePath.data(), mSavePath.size());
-        ImGui::SameLine();
-        if (ImGui::Button("save")) {
-            try { // an unwritable path is reported here, the viewer goes on
-                saveRenderBlock(mSavePath.data(), mRunner->getSettings());
-                mStatus = strCat("saved the render block to ", mSavePath.data());
-            } catch (const std::runtime_error& e) {
-                mStatus = e.what();
-            }
-        }
     }
     if (ImGui::CollapsingHeader("Lights")) {
         const LightEdit edit =
@@ -148,7 +201,72 @@ void Viewer::drawPanels() {
                        gl::getTimingMethodName(mRunner->getTimingMethod()), mLuminanceMax,
                        mRunner->getAccumulatedFrames());
     }
-    if (!mStatus.empty()) ImGui::TextWrapped("%s", mStatus.c_str());
+    ImGui::PopItemWidth();
+    ImGui::EndChild();
+    if (!mStatus.empty()) {
+        ImGui::Separator();
+        ImGui::BeginChild("message");
+        ImGui::PushStyleColor(ImGuiCol_Text, mStatusIsError ? kErrorColour : kOkColour);
+        ImGui::TextWrapped("%s", mStatus.c_str());
+        ImGui::PopStyleColor();
+        ImGui::EndChild();
+    }
+    ImGui::End();
+}
+
+// The message's wrapped height, a few lines at most (a longer one scrolls), with the separator.
+float Viewer::computeStatusFooterHeight() const {
+    if (mStatus.empty()) return 0.0f;
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float width = ImGui::GetContentRegionAvail().x;
+    const float textHeight = ImGui::CalcTextSize(mStatus.c_str(), nullptr, false, width).y;
+    const float maxHeight = kMaxStatusLines * ImGui::GetTextLineHeightWithSpacing();
+    return std::min(textHeight, maxHeight) + 2.0f * style.ItemSpacing.y + style.WindowPadding.y;
+}
+
+void Viewer::recordItem(const std::string& name) {
+    const ImVec2 min = ImGui::GetItemRectMin();
+    const ImVec2 max = ImGui::GetItemRectMax();
+    mItems[name] = {{min.x, min.y}, {max.x, max.y}};
+}
+
+// Frame rate and time in the scene region's top-left corner, over the image (two lines: narrow
+// regions too show both).
+void Viewer::drawFrameRateOverlay() {
+    const std::vector<float> totals = mTimings.getFrameTotals();
+    if (totals.empty()) return;
+    const float ms = totals.back();
+    std::array<char, kOverlayTextSize> text{};
+    std::snprintf(text.data(), text.size(), "%.1f fps\n%.1f ms",
+                  ms > 0.0f ? 1000.0 / static_cast<double>(ms) : 0.0, static_cast<double>(ms));
+    ImDrawList* list = ImGui::GetForegroundDrawList();
+    list->PushClipRect(ImVec2(0.0f, 0.0f), ImVec2(static_cast<float>(mRunner->getWidth()),
+                                                  static_cast<float>(mWindowHeight)));
+    const ImVec2 at(kOverlayMarginPx, kOverlayMarginPx);
+    const ImVec2 size = ImGui::CalcTextSize(text.data());
+    list->AddRectFilled(ImVec2(0.0f, 0.0f),
+                        ImVec2(at.x + size.x + kOverlayMarginPx, at.y + size.y + kOverlayMarginPx),
+                        ImGui::GetColorU32(ImVec4(0.0f, 0.0f, 0.0f, kOverlayAlpha)));
+    list->AddText(at, IM_COL32_WHITE, text.data());
+    list->PopClipRect();
+}
+
+// F1: what the keys and the mouse do.
+void Viewer::drawHelp() {
+    const ImVec2 centre(static_cast<float>(mWindowWidth) * 0.5f,
+                        static_cast<float>(mWindowHeight) * 0.5f);
+    ImGui::SetNextWindowPos(centre, ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    if (!ImGui::Begin("keys (F1 closes)", &mShowHelp,
+                      ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
+                          ImGuiWindowFlags_NoCollapse)) {
+        ImGui::End();
+        return;
+    }
+    for (const auto& [key, what] : kHelpLines) {
+        ImGui::TextUnformatted(key);
+        ImGui::SameLine(ImGui::GetFontSize() * kHelpKeyColumnEm);
+        ImGui::TextUnformatted(what);
+    }
     ImGui::End();
 }
 

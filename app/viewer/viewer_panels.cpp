@@ -37,6 +37,13 @@ void TimingHistory::record(const std::vector<PassTiming>& timings) {
         mTotals.pop_front();
 }
 
+double TimingHistory::getLastTotalMs() const {
+    double total = 0.0;
+    for (const PassTiming& t : mLast)
+        total += t.ms;
+    return total;
+}
+
 void drawStatsPanel(const TimingHistory& timings, const PhotonCounts& counts,
                     const std::string& renderer, const char* timingMethod, float luminanceMax,
                     uint32_t accumulatedFrames) {
@@ -46,20 +53,18 @@ void drawStatsPanel(const TimingHistory& timings, const PhotonCounts& counts,
         ImGui::TableSetupColumn("pass");
         ImGui::TableSetupColumn("ms");
         ImGui::TableHeadersRow();
-        double total = 0.0;
         for (const PassTiming& t : timings.getLast()) {
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
             ImGui::TextUnformatted(t.name.c_str());
             ImGui::TableNextColumn();
             ImGui::Text("%8.2f", t.ms);
-            total += t.ms;
         }
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
         ImGui::TextUnformatted("frame");
         ImGui::TableNextColumn();
-        ImGui::Text("%8.2f", total);
+        ImGui::Text("%8.2f", timings.getLastTotalMs());
         ImGui::EndTable();
     }
     const std::vector<float> totals = timings.getFrameTotals();

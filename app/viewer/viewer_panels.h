@@ -16,6 +16,8 @@ class TimingHistory {
   public:
     void record(const std::vector<PassTiming>& timings);
     const std::vector<PassTiming>& getLast() const { return mLast; }
+    // The Stats table's "frame" row: the last frame's passes added up.
+    double getLastTotalMs() const;
     std::vector<float> getFrameTotals() const { return {mTotals.begin(), mTotals.end()}; }
 
   private:

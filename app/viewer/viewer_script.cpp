@@ -12,6 +12,7 @@
 
 #include <GLFW/glfw3.h>
 
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 
@@ -21,7 +22,99 @@ namespace {
 constexpr double kWaitFileSeconds = 60.0; // wait_file: the other side is surely stuck by then
 constexpr double kWaitPollSeconds = 0.01;
 
+// GLFW's key for a name isScriptKeyName accepts (letters and digits are their ASCII codes).
+int findGlfwKey(const std::string& name) {
+    if (name.size() == 1) return static_cast<unsigned char>(name[0]); // 'A'..'Z', '0'..'9'
+    if (name == "ESCAPE") return GLFW_KEY_ESCAPE;
+    if (name == "ENTER") return GLFW_KEY_ENTER;
+    if (name == "TAB") return GLFW_KEY_TAB;
+    if (name == "BACKSPACE") return GLFW_KEY_BACKSPACE;
+    return GLFW_KEY_F1 + std::stoi(name.substr(1)) - 1;
+}
+
+// The key that types `c` on a US layout ('_' is Shift and minus; Shift is left out: ImGui
+// takes the character from the char event).
+int findTypingKey(char c) {
+    if (std::isalpha(static_cast<unsigned char>(c)) != 0) {
+        return std::toupper(static_cast<unsigned char>(c));
+    }
+    if (std::isdigit(static_cast<unsigned char>(c)) != 0) return c;
+    switch (c) {
+    case ' ':
+        return GLFW_KEY_SPACE;
+    case '.':
+        return GLFW_KEY_PERIOD;
+    case '/':
+        return GLFW_KEY_SLASH;
+    default:
+        return GLFW_KEY_MINUS; // '-' and '_'
+    }
+}
+
 } // namespace
+
+// Click, move, press and type: window events into the queue, in the order GLFW gives them.
+void Viewer::pushScriptInput(const ScriptCommand& c) {
+    using Kind = ScriptCommand::Kind;
+    glm::dvec2 at(c.x, c.y);
+    if (c.kind == Kind::ClickItem) {
+        const auto item = mItems.find(c.text);
+        if (item == mItems.end()) {
+            throw InputError(strCat(c.where, ": no panel item '", c.text,
+                                    "' was drawn (see input_script.h for the names)"));
+        }
+        at = glm::dvec2((item->second.min + item->second.max) * 0.5f);
+    }
+    switch (c.kind) {
+    case Kind::Click:
+    case Kind::ClickItem:
+        mInput.push(InputEvent::move(at));
+        mInput.push(InputEvent::button(kMouseLeft, true));
+        mInput.push(InputEvent::button(kMouseLeft, false));
+        break;
+    case Kind::MouseMove:
+        mInput.push(InputEvent::move(at));
+        break;
+    case Kind::Press: {
+        const int key = findGlfwKey(c.text);
+        const bool ctrl = c.option == "ctrl";
+        const int mods = ctrl ? GLFW_MOD_CONTROL : 0;
+        if (ctrl) mInput.push(InputEvent::key(GLFW_KEY_LEFT_CONTROL, true, mods));
+        mInput.push(InputEvent::key(key, true, mods));
+        mInput.push(InputEvent::key(key, false, mods));
+        if (ctrl) mInput.push(InputEvent::key(GLFW_KEY_LEFT_CONTROL, false));
+        break;
+    }
+    case Kind::Type:
+        for (char ch : c.text) {
+            const int key = findTypingKey(ch);
+            mInput.push(InputEvent::key(key, true));
+            mInput.push(InputEvent::character(static_cast<unsigned char>(ch)));
+            mInput.push(InputEvent::key(key, false));
+        }
+        break;
+    default:
+        break;
+    }
+    mScriptInputEnd = mInput.getPushedCount();
+}
+
+// What the panel shows, for scripts and tests: its message lines and the Stats frame time.
+void Viewer::printPanel() {
+    std::printf("panel status: %s\n", mStatus.c_str());
+    std::printf("panel title: %s\n", mContext.getTitle().c_str());
+    std::printf("panel metrics: %s\n", mReference.getMetricsText().c_str());
+    std::printf("panel reference: %s\n", mReference.getStatus().c_str());
+    const glm::vec3& p = mScene.camera.position;
+    std::printf("panel camera: %.6f %.6f %.6f\n", static_cast<double>(p.x),
+                static_cast<double>(p.y), static_cast<double>(p.z));
+    std::printf("panel frame ms: %.6f\n", mTimings.getLastTotalMs());
+    for (const PassTiming& t : mTimings.getLast())
+        std::printf("panel pass ms: %s = %.6f\n", t.name.c_str(), t.ms);
+    std::printf("panel view stops: %s\n",
+                usesViewStops(mViews[static_cast<size_t>(mViewIndex)]) ? "on" : "off");
+    std::fflush(stdout);
+}
 
 void Viewer::runScriptCommand(const ScriptCommand& c, CameraInput& input,
                               std::vector<const ScriptCommand*>& afterFrame) {
@@ -72,6 +165,9 @@ void Viewer::runScriptCommand(const ScriptCommand& c, CameraInput& input,
     case Kind::WaitFile:
         waitForFile(c);
         break;
+    case Kind::LoadScene:
+        mPendingScenePath = c.path; // as the picker: switched at the start of the next frame
+        break;
     case Kind::LoadReference:
         mReference.load(c.path);
         break;
@@ -83,6 +179,16 @@ void Viewer::runScriptCommand(const ScriptCommand& c, CameraInput& input,
     case Kind::Screenshot:
     case Kind::SaveSettings:
         afterFrame.push_back(&c);
+        break;
+    case Kind::PrintPanel:
+        afterFrame.push_back(&c);
+        break;
+    case Kind::Click:
+    case Kind::ClickItem:
+    case Kind::MouseMove:
+    case Kind::Press:
+    case Kind::Type:
+        pushScriptInput(c);
         break;
     case Kind::Frames:
         break;
@@ -110,8 +216,15 @@ void Viewer::writeScriptOutput(const ScriptCommand& c) {
         std::fflush(stdout);
         return;
     }
+    if (c.kind == ScriptCommand::Kind::PrintPanel) {
+        printPanel();
+        return;
+    }
     if (c.kind == ScriptCommand::Kind::SaveSettings) {
-        saveRenderBlock(c.path, mRunner->getSettings());
+        saveRenderBlock(c.path, mRunner->getSettings()); // a script's bad path ends the run
+        setStatus(strCat("wrote the settings (a render block) to ",
+                         std::filesystem::absolute(c.path).string()),
+                  false);
         return;
     }
     const Aov aov = c.text == "display" ? Aov::Display : parseAov(c.text, c.where);

@@ -52,6 +52,10 @@ TEST(InputScript, ParsesReloadAndReferenceCommands) {
     EXPECT_EQ(commands[3].text, "on");
     EXPECT_EQ(commands[4].kind, Kind::ComputeMetrics);
     EXPECT_THROW(parseInputScript("render_reference maybe\n", "s.txt"), InputError);
+    const auto scene = parseInputScript("load_scene other.json\n", "s.txt");
+    ASSERT_EQ(scene.size(), 1u);
+    EXPECT_EQ(scene[0].kind, Kind::LoadScene);
+    EXPECT_EQ(scene[0].path, "other.json");
     const auto points = parseInputScript("points result\npoints bounce power\n", "s.txt");
     ASSERT_EQ(points.size(), 2u);
     EXPECT_EQ(points[0].option, "kind"); // the colouring defaults to the kind's tint
@@ -61,6 +65,32 @@ TEST(InputScript, ParsesReloadAndReferenceCommands) {
     ScriptPlayer player(parseInputScript("compute_metrics\nreset_camera\n", "s.txt"));
     EXPECT_EQ(player.advanceFrame().size(), 1u);
     EXPECT_EQ(player.advanceFrame().size(), 1u);
+}
+
+TEST(InputScript, ParsesWindowEventCommands) {
+    const auto commands = parseInputScript("click 300 40\nclick_item save path\nmouse_move 5 6\n"
+                                           "press f12\npress ctrl+q\ntype my file.json\n"
+                                           "print_panel\n",
+                                           "s.txt");
+    ASSERT_EQ(commands.size(), 7u);
+    EXPECT_EQ(commands[0].kind, Kind::Click);
+    EXPECT_FLOAT_EQ(commands[0].x, 300.0f);
+    EXPECT_FLOAT_EQ(commands[0].y, 40.0f);
+    EXPECT_EQ(commands[1].kind, Kind::ClickItem);
+    EXPECT_EQ(commands[1].text, "save path");
+    EXPECT_EQ(commands[2].kind, Kind::MouseMove);
+    EXPECT_EQ(commands[3].kind, Kind::Press);
+    EXPECT_EQ(commands[3].text, "F12");
+    EXPECT_EQ(commands[3].option, "");
+    EXPECT_EQ(commands[4].text, "Q");
+    EXPECT_EQ(commands[4].option, "ctrl");
+    EXPECT_EQ(commands[5].kind, Kind::Type);
+    EXPECT_EQ(commands[5].text, "my file.json");
+    EXPECT_EQ(commands[6].kind, Kind::PrintPanel);
+    for (const char* key : {"A", "7", "F1", "F12", "ESCAPE", "ENTER"})
+        EXPECT_TRUE(isScriptKeyName(key)) << key;
+    for (const char* key : {"F0", "F13", "FX", "", "SHIFT"})
+        EXPECT_FALSE(isScriptKeyName(key)) << key;
 }
 
 TEST(InputScript, NamesFileAndLineOnErrors) {
@@ -73,7 +103,14 @@ TEST(InputScript, NamesFileAndLineOnErrors) {
                          "write_aov total",
                          "points sideways",
                          "points result sideways",
-                         "points result power 2"};
+                         "points result power 2",
+                         "click 1",
+                         "click_item",
+                         "press F13",
+                         "press",
+                         "type",
+                         "type a*b",
+                         "print_panel now"};
     for (const char* line : bad) {
         try {
             parseInputScript(std::string("frames 1\n") + line + "\n", "in.txt");

@@ -161,14 +161,15 @@ TEST_F(ViewerReloadReferenceTest, ReferenceViewsCompareWithTheTotal) {
         p *= 2.0f;
     writeImage(path("bright.pfm"), bright);
     const std::string script = writeScript(
-        "view error heat map\nframes 1\ncompute_metrics\nscreenshot " + path("heat_same.png") +
-        "\nload_reference " + path("bright.pfm") + "\ncompute_metrics\nscreenshot " +
-        path("heat_bright.png") + "\nview side by side\nscreenshot " + path("split.png") +
-        "\nview total\nscreenshot " + path("total.png") +
+        "press f2\nview error heat map\nframes 1\ncompute_metrics\nscreenshot " +
+        path("heat_same.png") + "\nload_reference " + path("bright.pfm") +
+        "\ncompute_metrics\nscreenshot " + path("heat_bright.png") +
+        "\nview side by side\nscreenshot " + path("split.png") + "\nview total\nscreenshot " +
+        path("total.png") +
         "\nrender_reference on\nview reference\nframes 4\ncompute_metrics\nscreenshot " +
         path("traced.png") + "\n");
     const RunResult r = runIspm("view " + kCornell + sizeArgs() + " --reference " +
-                                path("same.pfm") + " --frames 12 --script " + script);
+                                path("same.pfm") + " --frames 14 --script " + script);
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_EQ(r.output.find("OpenGL errors"), std::string::npos) << r.output;
     const auto metrics = parseMetrics(r.output);

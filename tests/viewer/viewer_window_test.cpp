@@ -93,8 +93,10 @@ class ViewerWindowTest : public ::testing::Test {
 };
 
 TEST_F(ViewerWindowTest, ScreenshotShowsSceneAndPanels) {
+    // F2 hides the frame-rate overlay: the scene region is then the frame alone.
     const RunResult view =
-        runIspm("view " + kCornell + sizeArgs() + " --frames 30 --screenshot " + path("ui.png"));
+        runIspm("view " + kCornell + sizeArgs() + " --script " + writeScript("press f2\n") +
+                " --frames 30 --screenshot " + path("ui.png"));
     expectClean(view, "view");
     const RunResult render =
         runIspm("render " + kCornell + sizeArgs() + " -q -o " + path("scene.png"));
@@ -204,7 +206,7 @@ TEST_F(ViewerWindowTest, ScriptedSettingRendersAsRenderSet) {
 }
 
 TEST_F(ViewerWindowTest, DebugViewsAndPhotonPointsChangeTheSceneRegion) {
-    const std::string script = writeScript("frames 1\n"
+    const std::string script = writeScript("press f2\nframes 1\n"
                                            "screenshot " +
                                            path("display.png") +
                                            "\n"
@@ -220,7 +222,7 @@ TEST_F(ViewerWindowTest, DebugViewsAndPhotonPointsChangeTheSceneRegion) {
                                            "view gbuffer normal\n"
                                            "screenshot " +
                                            path("normal.png") + "\n");
-    expectClean(runIspm("view " + kCornell + sizeArgs() + " --frames 5 --script " + script),
+    expectClean(runIspm("view " + kCornell + sizeArgs() + " --frames 7 --script " + script),
                 "view");
     const Image display = readImage(path("display.png"));
     // Points cover a good part of the box (20k+ result photons over 128 x 128 pixels) ...
@@ -238,10 +240,10 @@ TEST_F(ViewerWindowTest, LightImportanceViewShowsWhereThePhotonsGo) {
     // From inside the courtyard's room, the sun's map is bright where the door lets its light
     // in and dim elsewhere (the floor that keeps every texel a share).
     const std::string courtyard = std::string(ISPM_ASSET_DIR) + "/scenes/courtyard.json";
-    const std::string script =
-        writeScript("frames 1\nview light importance\nscreenshot " + path("importance.png") + "\n");
+    const std::string script = writeScript(
+        "press f2\nframes 1\nview light importance\nscreenshot " + path("importance.png") + "\n");
     expectClean(runIspm("view " + courtyard + " --camera room" + sizeArgs() +
-                        " --set photons=10000 --set shadow_map_size=256 --frames 3 --script " +
+                        " --set photons=10000 --set shadow_map_size=256 --frames 5 --script " +
                         script),
                 "view");
     const Image map = readImage(path("importance.png"));
