@@ -20,7 +20,7 @@ constexpr float kNearFraction = 1e-4f; // near plane as a fraction of far: depth
 // its depth range (a floor in metres would clip it away) and never lies on the eye.
 constexpr float kMinFarFraction = 1e-3f;
 constexpr float kMinFootprintM = 1e-30f; // a sun's footprint even over a scene of one point
-constexpr float kBoundsMargin = 1.01f; // grow fitted volumes so border texels are inside
+constexpr float kBoundsMargin = 1.01f;   // grow fitted volumes so border texels are inside
 constexpr float kPointFaceFovDeg = 90.0f;
 // A fitted sun view is kept when its texels are at least this many times smaller.
 constexpr float kMinSunRefinement = 1.5f;
