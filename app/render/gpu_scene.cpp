@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <span>
 
 namespace ispm {
@@ -112,9 +113,14 @@ void GpuScene::uploadTopLevel() {
 }
 
 float GpuScene::getRayEpsilon() const {
-    constexpr float kRelativeEpsilon = 1e-5f; // ~100x float precision at the scene's extent
-    constexpr float kMinEpsilonM = 1e-6f;
-    return std::max(kMinEpsilonM, kRelativeEpsilon * glm::length(mBounds.getExtent()));
+    // ~100x float precision at the scene's extent or at its coordinates' magnitude, whichever is
+    // larger (a small scene far from the origin has coarse coordinates), at any scale: a floor
+    // in metres would be wider than a scene micrometres across and let every ray escape.
+    constexpr float kRelativeEpsilon = 1e-5f;
+    const glm::vec3 magnitude = glm::max(glm::abs(mBounds.lo), glm::abs(mBounds.hi));
+    const float scale = std::max({glm::length(mBounds.getExtent()), magnitude.x, magnitude.y,
+                                  magnitude.z, std::numeric_limits<float>::min()});
+    return kRelativeEpsilon * scale;
 }
 
 void GpuScene::updateDynamic(const Scene& scene) {

@@ -18,7 +18,7 @@ LightSample sampleLight(GpuLight light, vec3 positionW) {
         return s;
     }
     vec3 toLight = light.position.xyz - positionW;
-    float d2 = max(dot(toLight, toLight), 1e-12);
+    float d2 = max(dot(toLight, toLight), 1e-30); // a point on the light: finite, not 1/0
     s.distanceM = sqrt(d2);
     s.wi = toLight / s.distanceM;
     float falloff = 1.0;
