@@ -68,7 +68,8 @@ void warnIfLightFades(const FrameRunner& runner) {
         describeOversizedSplats(scene.getSurfaceArea(), glm::length(scene.getBounds().getExtent()),
                                 runner.getFrameSettings());
     if (!warning.empty()) std::fprintf(stderr, "ispm: warning: %s\n", warning.c_str());
-    const std::string near = describeRaisedNearPlane(runner.getScene().camera, scene.getBounds());
+    const std::string near = describeRaisedNearPlane(runner.getScene().camera, scene.getBounds(),
+                                                     scene.getInstanceBounds());
     if (!near.empty()) std::fprintf(stderr, "ispm: warning: %s\n", near.c_str());
 }
 

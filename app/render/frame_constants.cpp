@@ -9,9 +9,10 @@
 
 namespace ispm {
 
-void computeCameraRange(const Camera& camera, const Aabb& bounds, float& nearM, float& farM) {
+void computeCameraRange(const Camera& camera, const Aabb& bounds, std::span<const Aabb> parts,
+                        float& nearM, float& farM) {
     const glm::vec3 axis = glm::normalize(camera.target - camera.position);
-    computeDepthRange(bounds, camera.position, axis, nearM, farM);
+    computeDepthRange(bounds, parts, camera.position, axis, nearM, farM);
     // The viewer's frustum corners reach further than its axis: grow far for the widest ray.
     const float halfDiagonal = glm::length(bounds.getExtent());
     farM = std::max(farM, glm::length(bounds.getCenter() - camera.position) + halfDiagonal);
@@ -20,11 +21,12 @@ void computeCameraRange(const Camera& camera, const Aabb& bounds, float& nearM, 
     nearM = std::min(nearM, farM * 0.5f); // a near plane set past the scene still leaves a range
 }
 
-std::string describeRaisedNearPlane(const Camera& camera, const Aabb& bounds) {
+std::string describeRaisedNearPlane(const Camera& camera, const Aabb& bounds,
+                                    std::span<const Aabb> parts) {
     if (!(camera.nearM > 0.0f)) return "";
     float nearM = 0.0f;
     float farM = 0.0f;
-    computeCameraRange(camera, bounds, nearM, farM);
+    computeCameraRange(camera, bounds, parts, nearM, farM);
     if (nearM == camera.nearM) return "";
     return strCat("the camera's near plane (", formatFloat(camera.nearM), " m) is ", "raised to ",
                   formatFloat(nearM), " m, 1e-5 of the far plane (", formatFloat(farM),
@@ -70,7 +72,7 @@ gpu::FrameConstants computeFrameConstants(const Scene& scene, const GpuScene& gp
     const Camera& cam = scene.camera;
     float nearM = 0.0f;
     float farM = 0.0f;
-    computeCameraRange(cam, gpuScene.getBounds(), nearM, farM);
+    computeCameraRange(cam, gpuScene.getBounds(), gpuScene.getInstanceBounds(), nearM, farM);
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
     gpu::FrameConstants fc{};
     fc.clipFromWorld = computeClipShift(jitterPx, glm::vec2(width, height)) *

@@ -8,6 +8,7 @@
 
 #include <shared/scene_data.h>
 
+#include <span>
 #include <string>
 
 namespace ispm {
@@ -17,9 +18,12 @@ namespace ispm {
 // under kMinNearToFar of the far one is raised to it: a 32-bit depth buffer cannot tell depths
 // apart over a wider range, and everything would land on the far plane (a black image).
 inline constexpr float kMinNearToFar = 1e-5f;
-void computeCameraRange(const Camera& camera, const Aabb& bounds, float& nearM, float& farM);
+// `parts`: the instances' boxes (computeDepthRange).
+void computeCameraRange(const Camera& camera, const Aabb& bounds, std::span<const Aabb> parts,
+                        float& nearM, float& farM);
 // One line for stderr when computeCameraRange raised the scene's near plane; "" otherwise.
-std::string describeRaisedNearPlane(const Camera& camera, const Aabb& bounds);
+std::string describeRaisedNearPlane(const Camera& camera, const Aabb& bounds,
+                                    std::span<const Aabb> parts);
 
 // The per-frame constants of the scene's camera at width x height (shared by the photon mapper
 // and the reference path tracer, so both see the same camera).

@@ -136,6 +136,7 @@ void GpuScene::updateDynamic(const Scene& scene) {
 
 void GpuScene::uploadLights(const Scene& scene) {
     mBounds = scene.computeWorldBounds();
+    mInstanceBounds = scene.computeInstanceBounds();
     mLightCameras = computeLightCameras(scene, mLightResolution);
     // Shadow-only views after every light's own, so the emitting views keep their indices.
     std::vector<uint32_t> fittedView(scene.lights.size(), 0u);

@@ -49,6 +49,8 @@ class GpuScene {
     uint64_t getLightViewsVersion() const { return mLightViewsVersion; }
     int getLightResolution() const { return mLightResolution; }
     const Aabb& getBounds() const { return mBounds; }
+    // Each instance's world box (Scene::computeInstanceBounds), kept with getBounds.
+    const std::vector<Aabb>& getInstanceBounds() const { return mInstanceBounds; }
     // Total area of every instance's triangles in world space (m^2), for derived splat radii.
     double getSurfaceArea() const { return mSurfaceAreaM2; }
     size_t getGpuBytes() const;
@@ -75,6 +77,7 @@ class GpuScene {
     uint32_t mLightCount = 0;
     int mLightResolution = 0;
     Aabb mBounds;
+    std::vector<Aabb> mInstanceBounds;
     double mSurfaceAreaM2 = 0.0;
     gl::Buffer mPositions;
     gl::Buffer mTriangles;

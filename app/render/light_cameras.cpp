@@ -48,7 +48,7 @@ std::array<glm::vec3, kAabbCornerCount> getCorners(const Aabb& b) {
 
 LightCamera makePerspective(uint32_t lightIndex, const glm::vec3& eye, const glm::vec3& axis,
                             const glm::vec3& up, float fovYDeg, const Aabb& bounds,
-                            int resolution) {
+                            std::span<const Aabb> parts, int resolution) {
     LightCamera cam;
     cam.lightIndex = lightIndex;
     cam.origin = eye;
@@ -56,7 +56,7 @@ LightCamera makePerspective(uint32_t lightIndex, const glm::vec3& eye, const glm
     cam.viewFromWorld = glm::lookAt(eye, eye + cam.axis, up);
     float nearM = 0.0f;
     float farM = 0.0f;
-    computeDepthRange(bounds, eye, cam.axis, nearM, farM);
+    computeDepthRange(bounds, parts, eye, cam.axis, nearM, farM);
     cam.clipFromView = glm::perspective(glm::radians(fovYDeg), 1.0f, nearM, farM);
     cam.texelPerDepth =
         2.0f * std::tan(glm::radians(fovYDeg) * 0.5f) / static_cast<float>(resolution);
@@ -129,8 +129,8 @@ std::optional<LightCamera> fitSunView(const LightCamera& sun, const std::vector<
     return fine;
 }
 
-void computeDepthRange(const Aabb& bounds, const glm::vec3& eye, const glm::vec3& axis,
-                       float& nearM, float& farM) {
+void computeDepthRange(const Aabb& bounds, std::span<const Aabb> parts, const glm::vec3& eye,
+                       const glm::vec3& axis, float& nearM, float& farM) {
     float maxDepth = 0.0f;
     for (const glm::vec3& c : getCorners(bounds))
         maxDepth = std::max(maxDepth, glm::dot(c - eye, axis));
@@ -139,10 +139,20 @@ void computeDepthRange(const Aabb& bounds, const glm::vec3& eye, const glm::vec3
                      std::numeric_limits<float>::min() / kNearFraction});
     // The near plane must not clip anything in front of the eye: keep it small.
     nearM = farM * kNearFraction;
+    for (const Aabb& part : parts) {
+        float partFar = 0.0f;
+        for (const glm::vec3& c : getCorners(part))
+            partFar = std::max(partFar, glm::dot(c - eye, axis) * kBoundsMargin);
+        if (!(partFar > 0.0f)) continue; // wholly behind the eye
+        const glm::vec3 nearest = glm::clamp(eye, part.lo, part.hi);
+        const float distance = glm::length(nearest - eye); // 0 inside
+        nearM = std::min(nearM, std::max(0.5f * distance, partFar * kNearFraction));
+    }
 }
 
 std::vector<LightCamera> computeLightCameras(const Scene& scene, int resolution) {
     const Aabb bounds = scene.computeWorldBounds();
+    const std::vector<Aabb> parts = scene.computeInstanceBounds();
     std::vector<LightCamera> cameras;
     for (uint32_t i = 0; i < scene.lights.size(); ++i) {
         const Light& light = scene.lights[i];
@@ -150,7 +160,7 @@ std::vector<LightCamera> computeLightCameras(const Scene& scene, int resolution)
         case LightType::Spot: {
             const glm::vec3 axis = glm::normalize(light.direction);
             cameras.push_back(makePerspective(i, light.position, axis, pickUp(axis),
-                                              2.0f * light.outerDeg, bounds, resolution));
+                                              2.0f * light.outerDeg, bounds, parts, resolution));
             break;
         }
         case LightType::Point: {
@@ -159,7 +169,7 @@ std::vector<LightCamera> computeLightCameras(const Scene& scene, int resolution)
                                        {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
             for (const glm::vec3& axis : axes) {
                 cameras.push_back(makePerspective(i, light.position, axis, pickUp(axis),
-                                                  kPointFaceFovDeg, bounds, resolution));
+                                                  kPointFaceFovDeg, bounds, parts, resolution));
             }
             break;
         }

@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace ispm {
@@ -44,8 +45,12 @@ std::vector<glm::vec3> sampleVisiblePoints(const BvhScene& bvh, const Scene& sce
 std::optional<LightCamera> fitSunView(const LightCamera& sun, const std::vector<glm::vec3>& visible,
                                       int resolution);
 
-// Near/far planes that enclose `bounds` as seen from `eye` along `axis`.
-void computeDepthRange(const Aabb& bounds, const glm::vec3& eye, const glm::vec3& axis,
-                       float& nearM, float& farM);
+// Near/far planes that enclose `bounds` as seen from `eye` along `axis`. The near plane is
+// kNearFraction of the far one, or nearer where one of `parts` (the instances' boxes) is: half
+// the distance to a part the eye is outside of, that fraction of a part's own depth when the eye
+// is inside it. A small room beside a huge distant object keeps a near plane fit for the room
+// (1e-4 of a far plane 7e6 m away would clip the whole room).
+void computeDepthRange(const Aabb& bounds, std::span<const Aabb> parts, const glm::vec3& eye,
+                       const glm::vec3& axis, float& nearM, float& farM);
 
 } // namespace ispm

@@ -55,6 +55,17 @@ Aabb Scene::computeWorldBounds() const {
     return bounds;
 }
 
+std::vector<Aabb> Scene::computeInstanceBounds() const {
+    std::vector<Aabb> boxes;
+    boxes.reserve(instances.size());
+    for (const Instance& instance : instances) {
+        const Aabb world = transformBounds(meshes.at(instance.meshIndex).computeBounds(),
+                                           instance.worldFromObject);
+        if (!world.isEmpty()) boxes.push_back(world);
+    }
+    return boxes;
+}
+
 size_t Scene::countTriangles() const {
     // What is drawn: a mesh placed twice counts twice.
     size_t count = 0;

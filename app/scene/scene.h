@@ -123,6 +123,8 @@ struct Scene {
     // the renderer (FrameRunner::updateScene). Defined in animation.cpp.
     void update(double timeS);
     Aabb computeWorldBounds() const;
+    // Each instance's world box (empty meshes left out): where the scene's parts lie.
+    std::vector<Aabb> computeInstanceBounds() const;
     size_t countTriangles() const;
 };
 

@@ -34,7 +34,8 @@ glm::dvec3 projectToGround(const Scene& scene, int width, int height, double px,
     // The same camera math the renderer uses.
     float nearM = 0.0f;
     float farM = 0.0f;
-    computeCameraRange(scene.camera, scene.computeWorldBounds(), nearM, farM);
+    computeCameraRange(scene.camera, scene.computeWorldBounds(), scene.computeInstanceBounds(),
+                       nearM, farM);
     const float aspect = float(width) / float(height);
     const glm::dmat4 worldFromClip =
         glm::inverse(glm::dmat4(computeClipFromView(scene.camera, aspect, nearM, farM) *

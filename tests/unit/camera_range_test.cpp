@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <vector>
+
 namespace ispm::test {
 namespace {
 
@@ -28,11 +30,11 @@ TEST(CameraRange, DerivedPlanesEncloseTheSceneAtAnyScale) {
         const Camera camera = makeCamera(3.0f * half);
         float nearM = 0.0f;
         float farM = 0.0f;
-        computeCameraRange(camera, makeCube(half), nearM, farM);
+        computeCameraRange(camera, makeCube(half), {}, nearM, farM);
         EXPECT_LT(nearM, 2.0f * half) << half << ": the nearest face is 2 half-sizes away";
         EXPECT_GT(farM, 4.0f * half) << half << ": the farthest corner is past 4 half-sizes";
         EXPECT_GT(nearM, 0.0f) << half;
-        EXPECT_EQ(describeRaisedNearPlane(camera, makeCube(half)), "") << half;
+        EXPECT_EQ(describeRaisedNearPlane(camera, makeCube(half), {}), "") << half;
     }
 }
 
@@ -42,22 +44,46 @@ TEST(CameraRange, PlanesBeyondTheDepthBuffersRangeAreBroughtIn) {
     camera.farM = 3e38f;
     float nearM = 0.0f;
     float farM = 0.0f;
-    computeCameraRange(camera, makeCube(1.0f), nearM, farM);
+    computeCameraRange(camera, makeCube(1.0f), {}, nearM, farM);
     // Far comes in to the derived plane (nothing lies further), near rises to 1e-5 of it.
     float derivedNear = 0.0f;
     float derivedFar = 0.0f;
-    computeCameraRange(makeCamera(3.0f), makeCube(1.0f), derivedNear, derivedFar);
+    computeCameraRange(makeCamera(3.0f), makeCube(1.0f), {}, derivedNear, derivedFar);
     EXPECT_EQ(farM, derivedFar);
     EXPECT_FLOAT_EQ(nearM, farM * kMinNearToFar);
-    const std::string warning = describeRaisedNearPlane(camera, makeCube(1.0f));
+    const std::string warning = describeRaisedNearPlane(camera, makeCube(1.0f), {});
     EXPECT_NE(warning.find("near plane (1e-08 m) is raised"), std::string::npos) << warning;
     // Planes within the range are kept as set.
     camera.nearM = 0.05f;
     camera.farM = 4.5f;
-    computeCameraRange(camera, makeCube(1.0f), nearM, farM);
+    computeCameraRange(camera, makeCube(1.0f), {}, nearM, farM);
     EXPECT_EQ(nearM, 0.05f);
     EXPECT_EQ(farM, 4.5f);
-    EXPECT_EQ(describeRaisedNearPlane(camera, makeCube(1.0f)), "");
+    EXPECT_EQ(describeRaisedNearPlane(camera, makeCube(1.0f), {}), "");
+}
+
+TEST(CameraRange, AHugeDistantPartLeavesTheNearPlaneToTheNearOne) {
+    // A 2 m room 3 m in front of the eye and a 1e6 m block 5e6 m away: the far plane reaches
+    // the block, and 1e-4 of it (700 m) would clip the room away; the room's half distance
+    // bounds the near plane instead.
+    const Camera camera = makeCamera(3.0f);
+    Aabb block;
+    block.extend(glm::vec3(-5e5f, -5e5f, -5.5e6f));
+    block.extend(glm::vec3(5e5f, 5e5f, -4.5e6f));
+    Aabb all = makeCube(1.0f);
+    all.extend(block.lo);
+    all.extend(block.hi);
+    const std::vector<Aabb> parts = {makeCube(1.0f), block};
+    float nearM = 0.0f;
+    float farM = 0.0f;
+    computeCameraRange(camera, all, parts, nearM, farM);
+    EXPECT_GT(farM, 5.5e6f);
+    EXPECT_LT(nearM, 2.0f) << "the room's nearest face";
+    EXPECT_GT(nearM, 0.0f);
+    // Inside a part, its own depth bounds the near plane.
+    computeCameraRange(makeCamera(0.5f), all, parts, nearM, farM);
+    EXPECT_LT(nearM, 1e-3f);
+    EXPECT_GT(nearM, 0.0f);
 }
 
 } // namespace
