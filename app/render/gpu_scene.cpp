@@ -113,14 +113,15 @@ void GpuScene::uploadTopLevel() {
 }
 
 float GpuScene::getRayEpsilon() const {
-    // ~100x float precision at the scene's extent or at its coordinates' magnitude, whichever is
-    // larger (a small scene far from the origin has coarse coordinates), at any scale: a floor
-    // in metres would be wider than a scene micrometres across and let every ray escape.
+    // The floor of the shaders' ray offsets (computeRayOffset in lib/scene_buffers.glsl, which
+    // grow with each point's coordinates): 1e-5 of the smallest part's size, so a scene at any
+    // scale, and the smallest object in a large one, keeps its rays on the right side of its
+    // surfaces.
     constexpr float kRelativeEpsilon = 1e-5f;
-    const glm::vec3 magnitude = glm::max(glm::abs(mBounds.lo), glm::abs(mBounds.hi));
-    const float scale = std::max({glm::length(mBounds.getExtent()), magnitude.x, magnitude.y,
-                                  magnitude.z, std::numeric_limits<float>::min()});
-    return kRelativeEpsilon * scale;
+    float smallest = glm::length(mBounds.getExtent());
+    for (const Aabb& part : mInstanceBounds)
+        smallest = std::min(smallest, glm::length(part.getExtent()));
+    return kRelativeEpsilon * std::max(smallest, std::numeric_limits<float>::min());
 }
 
 void GpuScene::updateDynamic(const Scene& scene) {

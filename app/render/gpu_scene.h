@@ -55,7 +55,8 @@ class GpuScene {
     double getSurfaceArea() const { return mSurfaceAreaM2; }
     size_t getGpuBytes() const;
     const BvhScene& getBvh() const { return mBvh; }
-    // A distance rays step off the surface they leave: relative to the scene's size, so float
+    // The smallest distance rays step off the surface they leave (m), relative to the scene's
+    // smallest part; the shaders grow it with the coordinates (computeRayOffset), so float
     // round-off of hit positions never makes a ray hit its own surface again.
     float getRayEpsilon() const;
 

@@ -68,7 +68,7 @@ void main() {
 
     // One bounce towards the surfaces that light this one.
     vec3 dir = sampleCosine(n, nextRandom(rng, kRngPcg), nextRandom(rng, kRngPcg));
-    vec3 origin = position.xyz + n * params.weights.w;
+    vec3 origin = position.xyz + n * computeRayOffset(position.xyz, params.weights.w);
     RayHit hit;
     if (!traceRay(origin, dir, kNoHitDistance, hit)) return;
     vec3 q = origin + dir * hit.t;

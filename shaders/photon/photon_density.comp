@@ -175,8 +175,8 @@ float getPhotonPower(uint index) { return max(computeMean(photons[index].power.r
 
 // Ray origins: above the surface by kClipLift of the radius (at least a few ray epsilons), and
 // just beneath it.
-vec3 getAboveOrigin(vec3 p, vec3 n, float radius) { return p + n * max(4.0 * params.scales.y, kClipLift * radius); }
-vec3 getBeneathOrigin(vec3 p, vec3 n) { return p - n * (4.0 * params.scales.y); }
+vec3 getAboveOrigin(vec3 p, vec3 n, float radius) { return p + n * max(4.0 * computeRayOffset(p, params.scales.y), kClipLift * radius); }
+vec3 getBeneathOrigin(vec3 p, vec3 n) { return p - n * (4.0 * computeRayOffset(p, params.scales.y)); }
 
 // The disc being clipped (one per invocation): its plane's basis and the two ray origins (0
 // above, 1 beneath). Per origin and ray the nearest surface met so far: its distance along the

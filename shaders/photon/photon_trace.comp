@@ -58,11 +58,12 @@ void main() {
     uint bounces = params.control.x;
     uint light = findPhotonLight(id);
     for (uint reflections = 1u; reflections <= bounces; ++reflections) {
-        vec3 origin = position + dir * params.ray.x;
+        float offset = computeRayOffset(position, params.ray.x);
+        vec3 origin = position + dir * offset;
         RayHit hit;
         if (!traceRay(origin, dir, kNoHitDistance, hit)) break;
         position = origin + dir * hit.t;
-        travelled += hit.t + params.ray.x;
+        travelled += hit.t + offset;
         vec3 geometric = computeHitNormal(hit);
         bool frontFace = dot(geometric, dir) < 0.0;
         vec3 n = frontFace ? geometric : -geometric;

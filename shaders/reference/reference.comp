@@ -46,12 +46,13 @@ vec3 traceCameraPath(vec2 pixel, inout uint rng) {
         GpuMaterial m = materials[triangles[hit.triangle].w];
         if (vertex == 1u) radiance += m.emission.rgb; // emission is seen, it lights nothing
         vec3 wo = -dir;
-        vec3 offsetOrigin = position + n * params.ray.x;
+        float offset = computeRayOffset(position, params.ray.x);
+        vec3 offsetOrigin = position + n * offset;
         for (uint i = 0u; i < frame.counts.x; ++i) {
             LightSample s = sampleLight(lights[i], position);
             float cosTheta = dot(n, s.wi);
             if (cosTheta <= 0.0 || all(equal(s.irradiance, vec3(0.0)))) continue;
-            if (isOccluded(offsetOrigin, s.wi, s.distanceM - 2.0 * params.ray.x)) continue;
+            if (isOccluded(offsetOrigin, s.wi, s.distanceM - 2.0 * offset)) continue;
             radiance += throughput * evaluateBrdf(m.diffuse.rgb, m.specular, n, s.wi, wo) *
                         s.irradiance * cosTheta;
         }
@@ -68,7 +69,7 @@ vec3 traceCameraPath(vec2 pixel, inout uint rng) {
             throughput /= survive;
         }
         // Leave on the side the new direction points to (refraction crosses the surface).
-        origin = position + (dot(dir, n) >= 0.0 ? n : -n) * params.ray.x;
+        origin = position + (dot(dir, n) >= 0.0 ? n : -n) * offset;
     }
     return radiance;
 }

@@ -54,5 +54,43 @@ TEST_F(SceneScaleTest, TheCornellBoxLooksTheSameAtAnySize) {
     }
 }
 
+TEST_F(SceneScaleTest, AHugeDistantObjectLeavesTheRoomAsItWas) {
+    // A 1e6 m block 5e6 m from the Cornell box: the derived near planes and the ray offsets once
+    // followed the whole scene's size (700 m and 70 m), which blackened the box and let every
+    // photon leave it. The splat radii are set: derived ones follow the scene's total area.
+    Scene scene = loadScene(std::string(ISPM_ASSET_DIR) + "/scenes/cornell.json");
+    const Scene plain = scene;
+    Mesh block;
+    block.name = "block";
+    for (int i = 0; i < 8; ++i) {
+        block.positions.push_back(
+            glm::vec3((i & 1) ? 5e6f : 4e6f, (i & 2) ? 1e5f : -1e5f, (i & 4) ? 5e6f : 4e6f));
+    }
+    block.triangles = {{0, 1, 3}, {0, 3, 2}, {4, 6, 7}, {4, 7, 5}};
+    block.triangleMaterials = {0, 0, 0, 0};
+    scene.instances.push_back({static_cast<uint32_t>(scene.meshes.size()), glm::mat4(1.0f)});
+    scene.meshes.push_back(std::move(block));
+    const auto render = [](const Scene& s, Aov aov) {
+        Settings settings = s.settings;
+        settings.set("width", kSize, "test");
+        settings.set("height", kSize, "test");
+        settings.set("photons", 20000, "test");
+        settings.set("shadow_map_size", 512, "test");
+        settings.set("radius_min", 0.005, "test");
+        settings.set("radius_max", 0.05, "test");
+        FrameRunner runner(s, settings, gl::TimingMethod::CpuFinish);
+        runner.renderFrame();
+        return readTextureImage(runner.getAov(aov));
+    };
+    for (Aov aov : {Aov::Direct, Aov::Indirect}) {
+        const Image expected = render(plain, aov);
+        const Image actual = render(scene, aov);
+        // The block takes a share of the spot's photons and of the light cameras' depth range:
+        // 5% of the energy; lost photons or a clipped room miss by 100%.
+        EXPECT_NEAR(computeEnergyRatio(actual, expected), 1.0, 0.05) << int(aov);
+        EXPECT_LT(computeRelRmse(actual, expected, 4), 0.1) << int(aov);
+    }
+}
+
 } // namespace
 } // namespace ispm::test
