@@ -166,16 +166,30 @@ std::string formatFramePath(const std::string& pattern, int index, const std::st
 
 namespace {
 
-// The image `render` writes of the runner's last frame.
-Image readOutputImage(const FrameRunner& runner, OutputKind kind, Aov aov,
-                      const std::optional<PhotonAov>& photonAov) {
-    if (photonAov) return PhotonPointsDrawer().renderAov(runner, *photonAov);
-    return readTextureImage(runner.getAov(kind == OutputKind::Png ? Aov::Display : aov));
-}
+// What `render` writes of the runner's last frame: the photon-buffer image (drawn by the
+// command's one drawer, its programs built once), the tone-mapped frame or a linear AOV.
+struct OutputImage {
+    OutputKind kind;
+    Aov aov;
+    std::optional<PhotonAov> photonAov;
+    std::string aovName;
+    std::optional<PhotonPointsDrawer> drawer;
+
+    Image read(const FrameRunner& runner) {
+        if (photonAov) {
+            if (!drawer) drawer.emplace();
+            return drawer->renderAov(runner, *photonAov);
+        }
+        return readTextureImage(runner.getAov(kind == OutputKind::Png ? Aov::Display : aov));
+    }
+    const char* describe() const {
+        return !photonAov && kind == OutputKind::Png ? "tone mapped" : aovName.c_str();
+    }
+};
 
 // --frames N: the animation from --time on, a frame every 1/fps s, each written as it is done.
-int runSequence(const RenderOptions& options, Scene& scene, FrameRunner& runner, OutputKind kind,
-                Aov aov, const std::optional<PhotonAov>& photonAov, const gl::ContextInfo& info,
+int runSequence(const RenderOptions& options, Scene& scene, FrameRunner& runner,
+                OutputImage& output, const gl::ContextInfo& info,
                 std::chrono::steady_clock::time_point start) {
     const bool progress = !options.quiet && isTerminal();
     const auto sequenceStart = std::chrono::steady_clock::now();
@@ -189,8 +203,7 @@ int runSequence(const RenderOptions& options, Scene& scene, FrameRunner& runner,
         // The first frame has no predecessor: its white point is its own.
         runner.setTimeStep(i == 0 ? -1.0 : 1.0 / options.fps);
         runner.renderFrame();
-        writeImage(formatFramePath(options.outputPath, i, "--output"),
-                   readOutputImage(runner, kind, aov, photonAov));
+        writeImage(formatFramePath(options.outputPath, i, "--output"), output.read(runner));
         frameMs.push_back(
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart)
                 .count());
@@ -206,12 +219,8 @@ int runSequence(const RenderOptions& options, Scene& scene, FrameRunner& runner,
         std::printf("wrote %d frames, %s to %s (%dx%d, %s; %g s to %g s at %g frames/s)\n",
                     options.frames, formatFramePath(options.outputPath, 0, "--output").c_str(),
                     formatFramePath(options.outputPath, options.frames - 1, "--output").c_str(),
-                    runner.getWidth(), runner.getHeight(),
-                    photonAov                 ? options.aov.c_str()
-                    : kind == OutputKind::Png ? "tone mapped"
-                                              : options.aov.c_str(),
-                    options.timeS, options.timeS + double(options.frames - 1) / options.fps,
-                    options.fps);
+                    runner.getWidth(), runner.getHeight(), output.describe(), options.timeS,
+                    options.timeS + double(options.frames - 1) / options.fps, options.fps);
         // The first frame builds the shaders: the median of the others is what a frame costs.
         std::vector<double> later(frameMs.begin() + (frameMs.size() > 1 ? 1 : 0), frameMs.end());
         std::nth_element(later.begin(), later.begin() + long(later.size() / 2), later.end());
@@ -294,9 +303,8 @@ int runRender(const RenderOptions& options) {
                                 "must be > 0)"));
     }
     warnIfLightFades(runner);
-    if (isSequence) {
-        return runSequence(options, scene, runner, kind, aov, photonAov, context->getInfo(), start);
-    }
+    OutputImage output{kind, aov, photonAov, options.aov, std::nullopt};
+    if (isSequence) return runSequence(options, scene, runner, output, context->getInfo(), start);
     // The first frame compiles shaders in the driver and touches every resource once; time the
     // second, which is what every later frame costs. Accumulating, every frame counts: the image
     // is the average of `accumulate` frames.
@@ -318,16 +326,13 @@ int runRender(const RenderOptions& options) {
         runner.renderFrame();
     }
     runner.waitForTimings(); // one frame to report: the frame is over, waiting costs nothing
-    writeImage(options.outputPath, readOutputImage(runner, kind, aov, photonAov));
+    writeImage(options.outputPath, output.read(runner));
     if (!options.quiet) {
         const double totalMs =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                 .count();
         std::printf("wrote %s (%dx%d, %s)\n", options.outputPath.c_str(), runner.getWidth(),
-                    runner.getHeight(),
-                    photonAov                 ? options.aov.c_str()
-                    : kind == OutputKind::Png ? "tone mapped"
-                                              : options.aov.c_str());
+                    runner.getHeight(), output.describe());
         if (accumulate > 0) {
             std::printf("indirect light: %u frames accumulated (seeds %u to %u)\n",
                         runner.getAccumulatedFrames(), runner.getFrameSettings().seed,

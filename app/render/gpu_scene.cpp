@@ -66,6 +66,18 @@ double computeSceneSurfaceArea(const Scene& scene) {
     return area;
 }
 
+// The floor of the shaders' ray offsets (computeRayOffset in lib/scene_buffers.glsl, which
+// grow with each point's coordinates): 1e-5 of the smallest part's size, so a scene at any
+// scale, and the smallest object in a large one, keeps its rays on the right side of its
+// surfaces.
+float computeRayEpsilon(const Aabb& bounds, const std::vector<Aabb>& parts) {
+    constexpr float kRelativeEpsilon = 1e-5f;
+    float smallest = glm::length(bounds.getExtent());
+    for (const Aabb& part : parts)
+        smallest = std::min(smallest, glm::length(part.getExtent()));
+    return kRelativeEpsilon * std::max(smallest, std::numeric_limits<float>::min());
+}
+
 } // namespace
 
 GpuScene::GpuScene(const Scene& scene, int lightResolution) : mLightResolution(lightResolution) {
@@ -112,18 +124,6 @@ void GpuScene::uploadTopLevel() {
     }
 }
 
-float GpuScene::getRayEpsilon() const {
-    // The floor of the shaders' ray offsets (computeRayOffset in lib/scene_buffers.glsl, which
-    // grow with each point's coordinates): 1e-5 of the smallest part's size, so a scene at any
-    // scale, and the smallest object in a large one, keeps its rays on the right side of its
-    // surfaces.
-    constexpr float kRelativeEpsilon = 1e-5f;
-    float smallest = glm::length(mBounds.getExtent());
-    for (const Aabb& part : mInstanceBounds)
-        smallest = std::min(smallest, glm::length(part.getExtent()));
-    return kRelativeEpsilon * std::max(smallest, std::numeric_limits<float>::min());
-}
-
 void GpuScene::updateDynamic(const Scene& scene) {
     // Bottom levels stay; the top level follows the instances' new transforms.
     rebuildTopLevel(mBvh, scene);
@@ -136,8 +136,9 @@ void GpuScene::updateDynamic(const Scene& scene) {
 }
 
 void GpuScene::uploadLights(const Scene& scene) {
-    mBounds = scene.computeWorldBounds();
     mInstanceBounds = scene.computeInstanceBounds();
+    mBounds = computeUnion(mInstanceBounds);
+    mRayEpsilon = computeRayEpsilon(mBounds, mInstanceBounds);
     mLightCameras = computeLightCameras(scene, mLightResolution);
     // Shadow-only views after every light's own, so the emitting views keep their indices.
     std::vector<uint32_t> fittedView(scene.lights.size(), 0u);

@@ -58,7 +58,7 @@ class GpuScene {
     // The smallest distance rays step off the surface they leave (m), relative to the scene's
     // smallest part; the shaders grow it with the coordinates (computeRayOffset), so float
     // round-off of hit positions never makes a ray hit its own surface again.
-    float getRayEpsilon() const;
+    float getRayEpsilon() const { return mRayEpsilon; }
 
   private:
     void uploadLights(const Scene& scene);
@@ -79,6 +79,7 @@ class GpuScene {
     int mLightResolution = 0;
     Aabb mBounds;
     std::vector<Aabb> mInstanceBounds;
+    float mRayEpsilon = 0.0f; // with the bounds
     double mSurfaceAreaM2 = 0.0;
     gl::Buffer mPositions;
     gl::Buffer mTriangles;

@@ -151,8 +151,8 @@ void computeDepthRange(const Aabb& bounds, std::span<const Aabb> parts, const gl
 }
 
 std::vector<LightCamera> computeLightCameras(const Scene& scene, int resolution) {
-    const Aabb bounds = scene.computeWorldBounds();
     const std::vector<Aabb> parts = scene.computeInstanceBounds();
+    const Aabb bounds = computeUnion(parts);
     std::vector<LightCamera> cameras;
     for (uint32_t i = 0; i < scene.lights.size(); ++i) {
         const Light& light = scene.lights[i];

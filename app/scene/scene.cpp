@@ -44,18 +44,19 @@ Aabb transformBounds(const Aabb& box, const glm::mat4& m) {
     return out;
 }
 
-Aabb Scene::computeWorldBounds() const {
-    // Each mesh's box, transformed: cheap enough to call every frame.
+Aabb computeUnion(std::span<const Aabb> boxes) {
     Aabb bounds;
-    for (const Instance& instance : instances) {
-        const Aabb world = transformBounds(meshes.at(instance.meshIndex).computeBounds(),
-                                           instance.worldFromObject);
-        if (!world.isEmpty()) bounds.extend(world);
-    }
+    for (const Aabb& box : boxes)
+        bounds.extend(box);
     return bounds;
 }
 
+Aabb Scene::computeWorldBounds() const {
+    return computeUnion(computeInstanceBounds());
+}
+
 std::vector<Aabb> Scene::computeInstanceBounds() const {
+    // Each mesh's box, transformed: cheap enough to call every frame.
     std::vector<Aabb> boxes;
     boxes.reserve(instances.size());
     for (const Instance& instance : instances) {

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -37,6 +38,9 @@ struct Aabb {
 };
 
 inline constexpr int kAabbCornerCount = 8;
+
+// The box around every box of `boxes` (empty for none).
+Aabb computeUnion(std::span<const Aabb> boxes);
 
 // The box around `box`'s eight corners transformed by `m`: exact for translations and scales,
 // conservative under rotation. An empty box stays empty.
@@ -122,7 +126,7 @@ struct Scene {
     // (seconds); the same t always gives the same scene. Callers that rendered the scene tell
     // the renderer (FrameRunner::updateScene). Defined in animation.cpp.
     void update(double timeS);
-    Aabb computeWorldBounds() const;
+    Aabb computeWorldBounds() const; // computeUnion(computeInstanceBounds())
     // Each instance's world box (empty meshes left out): where the scene's parts lie.
     std::vector<Aabb> computeInstanceBounds() const;
     size_t countTriangles() const;
