@@ -43,6 +43,8 @@ class PassTimer {
     std::optional<std::vector<Sample>> collectLatest();
     // Ends the frame without reading any results (collect() does both).
     void endFrame();
+    // Forgets the passes timed since the last endFrame (a frame dropped half way).
+    void discardFrame() { recycle(mCurrent); }
     size_t getFramesInFlight() const { return mInFlight.size(); }
 
   private:

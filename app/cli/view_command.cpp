@@ -22,7 +22,8 @@ void addViewCommand(CLI::App& app, ViewOptions& options) {
     cmd->add_option("--width", options.width, "render width in pixels (the panel is added)");
     cmd->add_option("--height", options.height, "render height in pixels");
     cmd->add_option("--set", options.sets, "override a setting: name=value (repeatable)");
-    cmd->add_option("--frames", options.frames, "exit after N frames (default: when closed)")
+    cmd->add_option("--frames", options.frames,
+                    "exit after N finished frames (default: when closed)")
         ->check(CLI::NonNegativeNumber);
     cmd->add_option("--screenshot", options.screenshotPath,
                     "with --frames: write the last frame's window (UI included) as PNG");

@@ -6,10 +6,13 @@
 #include "core/strings.h"
 #include "gl/debug.h"
 
+#include <shared/gather_data.h>
 #include <shared/photon_data.h>
 #include <shared/scene_data.h>
 
 #include <algorithm>
+#include <cassert>
+#include <chrono>
 #include <cmath>
 
 namespace ispm {
@@ -83,6 +86,15 @@ ShaderReloadReport FrameRunner::reloadShaders() {
 }
 
 void FrameRunner::setSettings(const Settings& settings) {
+    if (isFrameInProgress()) {
+        mPendingSettings = settings; // the frame in progress keeps its own
+        return;
+    }
+    applySettings(settings);
+}
+
+void FrameRunner::applySettings(const Settings& settings) {
+    mPendingSettings.reset();
     mSettings = settings;
     mImportanceStale = true;
     mFrameSettings = resolveFrameSettings(settings);
@@ -134,7 +146,8 @@ FrameInputs FrameRunner::getFrameInputs() const {
             mPreviousClipFromWorld,
             getFrameSeed(),
             computeProgressiveStep(mFrameSettings.accumulate, mHistoryFrames,
-                                   mFrameSettings.denoiseIterations)};
+                                   mFrameSettings.denoiseIterations),
+            mSplatDraws};
 }
 
 uint32_t FrameRunner::getFrameSeed() const {
@@ -152,6 +165,15 @@ void FrameRunner::resetHistory() {
 }
 
 void FrameRunner::updateScene() {
+    if (isFrameInProgress()) {
+        mPendingSceneUpdate = true; // uploaded before the next frame
+        return;
+    }
+    applySceneUpdate();
+}
+
+void FrameRunner::applySceneUpdate() {
+    mPendingSceneUpdate = false;
     mGpuScene.updateDynamic(mScene);
     if (mGpuScene.getLightsVersion() != mHistoryLightsVersion) {
         resetHistory(); // the light itself changed: everything drawn before is stale
@@ -163,9 +185,21 @@ void FrameRunner::updateScene() {
 }
 
 void FrameRunner::rebuildScene() {
+    // Lights or instances were added or removed: the frame in progress has the old ones.
+    dropFrameInProgress();
+    mPendingSceneUpdate = false; // the new upload holds every edit
     mImportanceStale = true;
     mGpuScene = GpuScene(mScene, mGpuScene.getLightResolution());
     resetHistory();
+}
+
+void FrameRunner::dropFrameInProgress() {
+    if (!isFrameInProgress()) return;
+    // Steps up to the accumulation leave the history as it was; later ones only the display.
+    mSteps.clear();
+    mNextStep = 0;
+    mTimer.discardFrame();
+    if (mPendingSettings) applySettings(*mPendingSettings);
 }
 
 uint32_t FrameRunner::getAccumulatedFrames() const {
@@ -174,6 +208,16 @@ uint32_t FrameRunner::getAccumulatedFrames() const {
 }
 
 void FrameRunner::renderFrame() {
+    beginFrame();
+    continueFrame(kWholeFrameMs);
+}
+
+void FrameRunner::beginFrame(double sliceMs) {
+    assert(!isFrameInProgress());
+    if (mPendingSettings) applySettings(*mPendingSettings);
+    if (mPendingSceneUpdate) applySceneUpdate();
+    mSteps.clear();
+    mNextStep = 0;
     if (!isSameCamera(mScene.camera, mHistoryCamera)) {
         mHistoryFrames = 0;
         mMoved = true;
@@ -192,46 +236,144 @@ void FrameRunner::renderFrame() {
     mGpuScene.setLightJitter(mFrameSettings.accumulate > 0 ? computeShadowJitter(mHistoryFrames)
                                                            : glm::vec2(0.0f));
     updateFrameConstants();
-    const FrameInputs inputs = getFrameInputs();
-    runPass(*mGBuffer, inputs);
-    runPass(*mLightViews, inputs);
+    const auto splatPasses = static_cast<uint32_t>(mFrameSettings.splatPasses);
+    mSplatDraws = mFrameSettings.splatMode == gpu::kSplatModeGather
+                      ? splatPasses
+                      : chooseSlices(mSplat->getName(), sliceMs, splatPasses, gpu::kMaxSplatDraws);
+    mInputs.emplace(getFrameInputs());
+    addFrameSteps(sliceMs);
+}
+
+uint32_t FrameRunner::chooseSlices(const char* pass, double sliceMs, uint32_t fewest,
+                                   uint32_t most) const {
+    if (!std::isfinite(sliceMs)) return fewest;
+    // Until the pass was timed, a sixteenth a slice: a first slow frame stalls the UI less.
+    constexpr double kUntimedSlices = 16.0;
+    // Each slice about half the UI frame's render time: the frame's other steps fit beside it.
+    constexpr double kShareOfSlice = 0.5;
+    const auto last = mLastPassMs.find(pass);
+    const double wanted = last == mLastPassMs.end()
+                              ? kUntimedSlices
+                              : std::ceil(last->second / (kShareOfSlice * sliceMs));
+    return static_cast<uint32_t>(std::clamp(wanted, double(fewest), double(most)));
+}
+
+void FrameRunner::addPassStep(Pass& pass) {
+    mSteps.push_back({pass.getName(), [this, &pass] { runPass(pass, *mInputs); }});
+}
+
+void FrameRunner::addTimedStep(const char* costKey, const Pass& pass, std::function<void()> run) {
+    // Timed and labelled as the pass: its slices add up to one row (setTimings).
+    mSteps.push_back({costKey, [this, &pass, run = std::move(run)] {
+                          gl::DebugGroup group(pass.getName());
+                          mTimer.begin(pass.getName());
+                          run();
+                          mTimer.end();
+                      }});
+}
+
+void FrameRunner::addFrameSteps(double sliceMs) {
+    const FrameInputs& inputs = *mInputs;
+    addPassStep(*mGBuffer);
+    const size_t lightViews = LightViewPass::getViewCount(inputs);
+    if (std::isfinite(sliceMs) && lightViews > 1) {
+        for (size_t view = 0; view < lightViews; ++view) {
+            addTimedStep("light view", *mLightViews,
+                         [this, view] { mLightViews->executeViews(*mInputs, view, 1); });
+        }
+    } else {
+        addPassStep(*mLightViews);
+    }
     if (hasIndirect()) {
         // The maps are rebuilt when the view, the seed, a light view or a setting changed, not
         // when only objects moved: any map is an unbiased pdf, and a kept one keeps the photons'
         // first hits (and with rng fixed or object_space their paths) where nothing moved.
         const bool sameAim = !mImportanceStale && inputs.seed == mImportanceSeed &&
                              mGpuScene.getLightViewsVersion() == mImportanceLightViews;
-        mImportance->setKeepMaps(sameAim); // the pass still runs: its timer row reads ~0 ms
-        runPass(*mImportance, inputs);
-        mImportanceStale = false;
-        mImportanceSeed = inputs.seed;
-        mImportanceLightViews = mGpuScene.getLightViewsVersion();
-        runPass(*mEmit, inputs);
+        mSteps.push_back({mImportance->getName(), [this, sameAim] {
+                              mImportance->setKeepMaps(sameAim); // its timer row reads ~0 ms
+                              runPass(*mImportance, *mInputs);
+                              mImportanceStale = false;
+                              mImportanceSeed = mInputs->seed;
+                              mImportanceLightViews = mGpuScene.getLightViewsVersion();
+                          }});
+        addPassStep(*mEmit);
     }
-    runPass(*mDirect, inputs);
+    addPassStep(*mDirect);
     if (hasIndirect()) {
-        runPass(*mTrace, inputs);
-        runPass(*mDensity, inputs);
-        runPass(*mSplat, inputs);
+        const uint32_t traceSlices =
+            chooseSlices(mTrace->getName(), sliceMs, 1, gpu::kMaxComputeSlices);
+        for (uint32_t slice = 0; slice < traceSlices; ++slice) {
+            addTimedStep("trace slice", *mTrace, [this, slice, traceSlices] {
+                mTrace->executeSlice(*mInputs, slice, traceSlices);
+            });
+        }
+        const uint32_t stages = PhotonDensityPass::getStageCount(inputs.settings);
+        const uint32_t densitySlices =
+            chooseSlices(mDensity->getName(), sliceMs / stages, 1, gpu::kMaxComputeSlices);
+        for (uint32_t stage = 0; stage < stages; ++stage) {
+            for (uint32_t slice = 0; slice < densitySlices; ++slice) {
+                addTimedStep("density slice", *mDensity, [this, stage, slice, densitySlices] {
+                    mDensity->executeSlice(*mInputs, stage, slice, densitySlices);
+                });
+            }
+        }
+        if (inputs.settings.splatMode == gpu::kSplatModeGather) {
+            addPassStep(*mSplat);
+        } else {
+            for (uint32_t draw = 0; draw < inputs.splatDraws; ++draw) {
+                addTimedStep("splat draw", *mSplat,
+                             [this, draw] { mSplat->executeDraws(*mInputs, draw, 1); });
+            }
+        }
     } else {
         // bounces = 0 or no photons: the image is direct light only.
-        mSplat->clear(inputs);
+        mSteps.push_back({"splat clear", [this] { mSplat->clear(*mInputs); }});
     }
-    runPass(*mDenoise, inputs);
-    runPass(*mUpsample, inputs);
-    runPass(*mAccumulate, inputs);
-    mGpuScene.keepTransformsAsPrevious();
-    mPreviousClipFromWorld = mClipFromWorld;
-    mHistoryLightsVersion = mGpuScene.getLightsVersion();
-    mHistoryReset = false;
-    mMoved = false;
-    ++mHistoryFrames;
-    ++mSequenceFrames;
-    ++mFramesDrawn;
-    runPass(*mCompose, inputs);
-    mTotal = &runPostPasses(inputs);
-    mTonemap->setInput(*mTotal);
-    runPass(*mTonemap, inputs);
+    addPassStep(*mDenoise);
+    addPassStep(*mUpsample);
+    mSteps.push_back({mAccumulate->getName(), [this] {
+                          runPass(*mAccumulate, *mInputs);
+                          mGpuScene.keepTransformsAsPrevious();
+                          mPreviousClipFromWorld = mClipFromWorld;
+                          mHistoryLightsVersion = mGpuScene.getLightsVersion();
+                          mHistoryReset = false;
+                          mMoved = false;
+                          ++mHistoryFrames;
+                          ++mSequenceFrames;
+                          ++mFramesDrawn;
+                      }});
+    addPassStep(*mCompose);
+    mSteps.push_back({"post and tone map", [this] {
+                          mTotal = &runPostPasses(*mInputs);
+                          mTonemap->setInput(*mTotal);
+                          runPass(*mTonemap, *mInputs);
+                      }});
+    mSteps.push_back({"timings", [this] { finishFrame(); }});
+}
+
+bool FrameRunner::continueFrame(double budgetMs) {
+    using Clock = std::chrono::steady_clock;
+    const auto msSince = [](Clock::time_point t) {
+        return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+    };
+    const Clock::time_point start = Clock::now();
+    for (bool first = true; mNextStep < mSteps.size(); first = false) {
+        const std::string key = mSteps[mNextStep].costKey;
+        const auto cost = mStepCostMs.find(key);
+        const double expectedMs = cost == mStepCostMs.end() ? 0.0 : cost->second;
+        if (!first && msSince(start) + expectedMs > budgetMs) return false;
+        const Clock::time_point stepStart = Clock::now();
+        // Counted before it runs: the last step's settings change (finishFrame) applies at once.
+        mSteps[mNextStep++].run();
+        mStepCostMs[key] = msSince(stepStart);
+    }
+    mSteps.clear();
+    mNextStep = 0;
+    return true;
+}
+
+void FrameRunner::finishFrame() {
     if (auto samples = mTimer.collect()) {
         setTimings(*samples);
         adaptPhotonBudget();
@@ -300,9 +442,19 @@ void FrameRunner::waitForTimings() {
 }
 
 void FrameRunner::setTimings(const std::vector<gl::PassTimer::Sample>& samples) {
+    // A pass drawn in several slices (the splat's draws) is one row: their sum.
     mTimings.clear();
-    for (const gl::PassTimer::Sample& s : samples)
-        mTimings.push_back({s.name, s.ms});
+    for (const gl::PassTimer::Sample& s : samples) {
+        auto same = std::find_if(mTimings.begin(), mTimings.end(),
+                                 [&](const PassTiming& t) { return t.name == s.name; });
+        if (same == mTimings.end()) {
+            mTimings.push_back({s.name, s.ms});
+        } else {
+            same->ms += s.ms;
+        }
+    }
+    for (const PassTiming& t : mTimings)
+        mLastPassMs[t.name] = t.ms;
 }
 
 bool FrameRunner::hasIndirect() const {

@@ -22,8 +22,12 @@
 #include <shared/scene_data.h>
 
 #include <array>
+#include <functional>
+#include <limits>
 #include <memory>
+#include <optional>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace ispm {
@@ -47,7 +51,21 @@ class FrameRunner {
     // `settings` are the effective settings (scene overrides with the command line on top).
     FrameRunner(const Scene& scene, const Settings& settings, gl::TimingMethod timing);
 
+    // A whole frame, at once (render, bench, tests).
     void renderFrame();
+    // A frame in slices (the viewer: its UI keeps its own rate whatever a frame costs).
+    // beginFrame() takes the camera, the scene and the settings as they are and lists the frame's
+    // steps: a pass each, the trace, density and raster splat passes in slices of about half
+    // `sliceMs` each (from their last timed frame; at most kMaxComputeSlices, kMaxSplatDraws).
+    // continueFrame(budgetMs) runs steps until the next would pass `budgetMs` by the time it took
+    // last (at least one step) and says whether the frame is done. While a frame is in progress,
+    // setSettings and updateScene wait for the next beginFrame (getSettings says what comes);
+    // rebuildScene drops it. The images are those of renderFrame() up to the order in which photons
+    // are stored and added (float rounding).
+    static constexpr double kWholeFrameMs = std::numeric_limits<double>::infinity();
+    void beginFrame(double sliceMs = kWholeFrameMs);
+    bool continueFrame(double budgetMs);
+    bool isFrameInProgress() const { return mNextStep < mSteps.size(); }
     // Seconds since the previous frame, for eye adaptation (eye_adaptation_s); until set, every
     // frame adapts at once (a still render).
     void setTimeStep(double seconds) { mTimeStepS = seconds; }
@@ -67,7 +85,8 @@ class FrameRunner {
     // indirect history is reprojected and the direct light's restarts.
     void updateScene();
     void rebuildScene();
-    const Settings& getSettings() const { return mSettings; }
+    // The settings of the next frame (those set while a frame was in progress included).
+    const Settings& getSettings() const { return mPendingSettings ? *mPendingSettings : mSettings; }
     const FrameSettings& getFrameSettings() const { return mFrameSettings; }
     const Scene& getScene() const { return mScene; }
     // F5: rebuilds the passes' programs whose source files changed; failures keep the old ones.
@@ -105,6 +124,22 @@ class FrameRunner {
     size_t getGpuBytes() const;
 
   private:
+    // One step of a frame in progress; `costKey` names its measured time (mStepCostMs).
+    struct FrameStep {
+        std::string costKey;
+        std::function<void()> run;
+    };
+    void addPassStep(Pass& pass);
+    // A step that runs a share of `pass` (a slice), timed under the pass's name.
+    void addTimedStep(const char* costKey, const Pass& pass, std::function<void()> run);
+    void addFrameSteps(double sliceMs);
+    void finishFrame();         // the frame's timings, the adapted photon budget
+    void dropFrameInProgress(); // rebuildScene while a frame is in progress
+    void applySettings(const Settings& settings);
+    void applySceneUpdate();
+    // Slices of `pass` so each takes about half of `sliceMs` (from its last timed frame), in
+    // [fewest, most]; `fewest` for a whole frame at once.
+    uint32_t chooseSlices(const char* pass, double sliceMs, uint32_t fewest, uint32_t most) const;
     void resizePasses();
     void updateFrameConstants();
     void resetHistory();
@@ -144,6 +179,16 @@ class FrameRunner {
     std::vector<FrameCost> mBudgetCosts; // frames measured at the present budget
     int mBudgetSettle = 0;               // frames whose timings may predate the last change
     uint32_t getFrameSeed() const;       // FrameInputs::seed
+
+    // The frame in progress (beginFrame/continueFrame): its steps, the next one, its inputs.
+    std::vector<FrameStep> mSteps;
+    size_t mNextStep = 0;
+    std::optional<FrameInputs> mInputs;
+    uint32_t mSplatDraws = 1;                            // FrameInputs::splatDraws
+    std::optional<Settings> mPendingSettings;            // set while a frame was in progress
+    bool mPendingSceneUpdate = false;                    // likewise, updateScene
+    std::unordered_map<std::string, double> mStepCostMs; // each step's time when it last ran
+    std::unordered_map<std::string, double> mLastPassMs; // each pass's time, last timed frame
 
     gl::PassTimer mTimer;
     std::vector<PassTiming> mTimings;

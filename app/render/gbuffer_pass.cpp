@@ -4,6 +4,8 @@
 #include "render/frame_constants.h"
 #include "render/gpu_scene.h"
 
+#include <cassert>
+
 namespace ispm {
 
 GBufferPass::GBufferPass()
@@ -42,6 +44,37 @@ LightViewPass::LightViewPass()
       mVertexArray("light view vao") {}
 
 void LightViewPass::execute(const FrameInputs& inputs) {
+    executeViews(inputs, 0, getViewCount(inputs));
+}
+
+size_t LightViewPass::getViewCount(const FrameInputs& inputs) {
+    return inputs.scene.getLightCameras().size();
+}
+
+void LightViewPass::executeViews(const FrameInputs& inputs, size_t firstView, size_t viewCount) {
+    const std::vector<LightCamera>& cameras = inputs.scene.getLightCameras();
+    assert(firstView + viewCount <= cameras.size());
+    if (firstView == 0) prepare(inputs);
+    mVertexArray.bind();
+    inputs.scene.bind();
+    for (size_t i = firstView; i < firstView + viewCount; ++i) {
+        const LightCamera& cam = cameras[i];
+        const int layer = static_cast<int>(i);
+        // Only position and depth are cleared: the one reader of the other channels (photon
+        // emission) reads them where position.w marks a surface, which this frame's draw wrote.
+        // Clearing them too made the light views a fifth slower on llvmpipe.
+        mGBuffer.clearPositions(layer);
+        if (cam.isShadowOnly) {
+            mGBuffer.bindPositionTarget(layer);
+        } else {
+            mGBuffer.bindTarget(layer);
+        }
+        drawSceneGBuffer(mProgram.get(), inputs.scene, mParams,
+                         i * inputs.scene.getInstanceCount());
+    }
+}
+
+void LightViewPass::prepare(const FrameInputs& inputs) {
     const std::vector<LightCamera>& cameras = inputs.scene.getLightCameras();
     const int resolution = inputs.scene.getLightResolution();
     // At least one layer, so the light G-buffer textures exist even in a scene without lights.
@@ -60,23 +93,6 @@ void LightViewPass::execute(const FrameInputs& inputs) {
                             glm::vec2(float(resolution)));
     }
     mParams.upload(blocks);
-    mVertexArray.bind();
-    inputs.scene.bind();
-    for (size_t i = 0; i < cameras.size(); ++i) {
-        const LightCamera& cam = cameras[i];
-        const int layer = static_cast<int>(i);
-        // Only position and depth are cleared: the one reader of the other channels (photon
-        // emission) reads them where position.w marks a surface, which this frame's draw wrote.
-        // Clearing them too made the light views a fifth slower on llvmpipe.
-        mGBuffer.clearPositions(layer);
-        if (cam.isShadowOnly) {
-            mGBuffer.bindPositionTarget(layer);
-        } else {
-            mGBuffer.bindTarget(layer);
-        }
-        drawSceneGBuffer(mProgram.get(), inputs.scene, mParams,
-                         i * inputs.scene.getInstanceCount());
-    }
 }
 
 } // namespace ispm

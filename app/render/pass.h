@@ -49,6 +49,9 @@ struct FrameInputs {
     // while accumulating, so every accumulated frame traces new photons.
     uint32_t seed = 0;
     ProgressiveStep progressive; // this frame's place in the accumulation
+    // Draws the splat is split into (the trace pass writes their commands): splat_passes, or
+    // more when the frame is drawn in slices (FrameRunner::beginFrame); at most kMaxSplatDraws.
+    uint32_t splatDraws = 1;
 
     // Every splat radius's factor: radius_scale, times the shrink of accumulated frames.
     float getRadiusScale() const { return settings.radiusScale * progressive.radiusFactor; }

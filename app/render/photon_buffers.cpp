@@ -1,6 +1,9 @@
 // Photon buffer allocation and the counter read-back used by reports.
 #include "render/photon_buffers.h"
 
+#include "gl/gl.h"
+#include "gl/state.h"
+
 #include <algorithm>
 
 namespace ispm {
@@ -40,6 +43,16 @@ void PhotonBuffers::bind() const {
 void PhotonBuffers::bindLightCounters() const {
     mGrids.bindBase(gl::BufferTarget::Storage, gpu::kBindingEmissionGrids);
     mLightCounts.bindBase(gl::BufferTarget::Storage, gpu::kBindingLightCounts);
+}
+
+void PhotonBuffers::dispatchSlice(size_t countOffset, uint32_t slice, uint32_t slices) const {
+    // The count was written by a shader: the read must see it.
+    gl::memoryBarrier(gl::Barrier::BufferUpdate);
+    uint32_t count = 0;
+    mCounters.download(countOffset, sizeof(count), &count);
+    const glm::uvec2 range = gpu::computeSliceRange(count, slice, slices);
+    const uint32_t groups = (range.y - range.x + gpu::kTraceGroupSize - 1) / gpu::kTraceGroupSize;
+    if (groups > 0) gl::dispatchCompute(groups);
 }
 
 PhotonCounts PhotonBuffers::readCounts(const std::vector<uint32_t>& emitted) const {

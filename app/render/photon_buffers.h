@@ -49,6 +49,11 @@ class PhotonBuffers {
     const gl::Buffer& getSplatDraws() const { return mSplatDraws; }
     uint32_t getBounceCapacity() const { return mBounceCapacity; }
     uint32_t getResultCapacity() const { return mResultCapacity; }
+    // Dispatches the photon pass bound now (groups of kTraceGroupSize) over slice `slice` of
+    // `slices` of the photons counted at `countOffset` in the counters (computeSliceRange): the
+    // count is read back first, a wait the viewer's sliced frames make anyway. Nothing to do for
+    // an empty slice.
+    void dispatchSlice(size_t countOffset, uint32_t slice, uint32_t slices) const;
     // Reads the counters back: for reports and tests, never inside a frame. `emitted` per light.
     PhotonCounts readCounts(const std::vector<uint32_t>& emitted) const;
     size_t getGpuBytes() const {
@@ -61,7 +66,7 @@ class PhotonBuffers {
     gl::Buffer mResult;
     gl::Buffer mCounters{"photon counters", sizeof(gpu::PhotonCounters)};
     gl::Buffer mSplatDraws{"splat draw commands",
-                           gpu::kMaxSplatPasses* gpu::kSplatDrawUvec4s * sizeof(glm::uvec4)};
+                           gpu::kMaxSplatDraws* gpu::kSplatDrawUvec4s * sizeof(glm::uvec4)};
     // One entry each until the first frame sets them: bindable from the start (a zero-size buffer
     // is not), and matching no light.
     gl::Buffer mGrids{"emission grids", sizeof(glm::uvec4)};

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cassert>
 #include <cmath>
 #include <limits>
 
@@ -47,28 +48,52 @@ PhotonDensityPass::PhotonDensityPass(PhotonBuffers& buffers)
            .stages = {{gl::ShaderStage::Compute, "photon/photon_density.comp"}}})),
       mParams("photon density parameters", sizeof(gpu::DensityParams)) {}
 
-void PhotonDensityPass::setTravelRadii(const FrameInputs& inputs) {
+void PhotonDensityPass::setTravelRadii(const FrameInputs& inputs, glm::uvec4 slice) {
     const SplatRadii r = computeSplatRadii(inputs.scene.getSurfaceArea(),
                                            glm::length(inputs.scene.getBounds().getExtent()),
                                            inputs.settings, inputs.getRadiusScale());
     gpu::DensityParams params{};
     params.control = glm::uvec4(gpu::kDensityStageTravelCull, 0, 0, inputs.settings.radiusMode);
     params.travel = glm::vec4(r.radiusMinM, r.radiusMaxM, r.distMinM, r.distMaxM);
+    params.slice = slice;
     mParams.upload(0, sizeof(params), &params);
     // This stage reads neither the table nor the scene and writes no clip lines.
     mBuffers.bind();
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
     mParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
     mProgram.use();
-    gl::dispatchComputeIndirect(mBuffers.getCounters(),
-                                offsetof(gpu::PhotonCounters, densityDispatch));
+    dispatch(slice);
     // The splat's vertex stage reads the radii.
     gl::memoryBarrier(gl::Barrier::Storage);
 }
 
+void PhotonDensityPass::dispatch(glm::uvec4 slice) const {
+    if (slice.y == 1) {
+        gl::dispatchComputeIndirect(mBuffers.getCounters(),
+                                    offsetof(gpu::PhotonCounters, densityDispatch));
+        return;
+    }
+    // The stored photons: the splat's instance count.
+    const size_t stored = offsetof(gpu::PhotonCounters, splatDraw) + sizeof(uint32_t);
+    mBuffers.dispatchSlice(stored, slice.x, slice.y);
+}
+
+uint32_t PhotonDensityPass::getStageCount(const FrameSettings& settings) {
+    return settings.radiusMode == gpu::kRadiusDensity ? 2u : 1u;
+}
+
 void PhotonDensityPass::execute(const FrameInputs& inputs) {
+    for (uint32_t stage = 0; stage < getStageCount(inputs.settings); ++stage)
+        executeSlice(inputs, stage, 0, 1);
+}
+
+void PhotonDensityPass::executeSlice(const FrameInputs& inputs, uint32_t stage, uint32_t slice,
+                                     uint32_t slices) {
+    assert(stage < getStageCount(inputs.settings) && slice < slices &&
+           slices <= gpu::kMaxComputeSlices);
+    const glm::uvec4 sliceParams(slice, slices, 0u, 0u);
     if (inputs.settings.radiusMode != gpu::kRadiusDensity) {
-        setTravelRadii(inputs);
+        setTravelRadii(inputs, sliceParams);
         return;
     }
     const uint32_t slots =
@@ -78,7 +103,7 @@ void PhotonDensityPass::execute(const FrameInputs& inputs) {
     const size_t clipBytes =
         size_t(std::max(mBuffers.getResultCapacity(), 1u)) * gpu::kClipVec4s * sizeof(glm::vec4);
     if (mClip.getSize() != clipBytes) mClip = gl::Buffer("splat clip distances", clipBytes);
-    mCells.clearToZero();
+    if (stage == 0 && slice == 0) mCells.clearToZero();
     const int neighbours = std::max(int(std::lround(float(inputs.settings.splatNeighbours) *
                                                     inputs.progressive.neighbourFactor)),
                                     1);
@@ -96,8 +121,9 @@ void PhotonDensityPass::execute(const FrameInputs& inputs) {
     params.grid = glm::vec4(cell, float(neighbours), radiusMin, radiusMax);
     params.scales =
         glm::vec4(scale, inputs.scene.getRayEpsilon(), inputs.progressive.travelRadiusFactor, 0.0f);
-    params.control = glm::uvec4(gpu::kDensityStageCount, slots - 1,
-                                inputs.progressive.spreadStrongPhotons ? 1u : 0u, 0u);
+    params.control = glm::uvec4(stage == 0 ? gpu::kDensityStageCount : gpu::kDensityStageRadius,
+                                slots - 1, inputs.progressive.spreadStrongPhotons ? 1u : 0u, 0u);
+    params.slice = sliceParams;
     mParams.upload(0, sizeof(params), &params);
 
     mBuffers.bind();
@@ -107,15 +133,10 @@ void PhotonDensityPass::execute(const FrameInputs& inputs) {
     mCells.bindBase(gl::BufferTarget::Storage, gpu::kBindingDensityCells);
     mClip.bindBase(gl::BufferTarget::Storage, gpu::kBindingSplatClip);
     mProgram.use();
-    const size_t dispatchOffset = offsetof(gpu::PhotonCounters, densityDispatch);
-    gl::dispatchComputeIndirect(mBuffers.getCounters(), dispatchOffset);
-    gl::memoryBarrier(gl::Barrier::Storage);
-    // Stage 1 reads its number from the block: written again between the dispatches (the GL
-    // orders the update after the dispatch before it).
-    params.control.x = gpu::kDensityStageRadius;
-    mParams.upload(offsetof(gpu::DensityParams, control), sizeof(params.control), &params.control);
-    gl::dispatchComputeIndirect(mBuffers.getCounters(), dispatchOffset);
-    // The splat's vertex stage reads the radii.
+    // The block is written anew for every dispatch (the GL orders the update after the
+    // dispatch before it that read the last one).
+    dispatch(sliceParams);
+    // The radius stage reads the counted table; the splat's vertex stage reads the radii.
     gl::memoryBarrier(gl::Barrier::Storage);
 }
 

@@ -24,6 +24,12 @@ class PhotonDensityPass final : public Pass {
     explicit PhotonDensityPass(PhotonBuffers& buffers);
     const char* getName() const override { return "density"; }
     void execute(const FrameInputs& inputs) override;
+    // Stages that each run over every photon before the next: 2 in radius_mode density (count
+    // into the table, then radii), else 1 (travel radii).
+    static uint32_t getStageCount(const FrameSettings& settings);
+    // Slice `slice` of `slices` of stage `stage` (a frame drawn in slices); execute() runs every
+    // stage's slices in order.
+    void executeSlice(const FrameInputs& inputs, uint32_t stage, uint32_t slice, uint32_t slices);
     void reloadPrograms(ShaderReloadReport& report) override { mProgram.reloadIfChanged(report); }
     // Per result photon: its disc's clip lines and box extents (shared/splat_clip.h).
     const gl::Buffer& getClip() const { return mClip; }
@@ -32,7 +38,9 @@ class PhotonDensityPass final : public Pass {
   private:
     // Travel modes: each photon's travel (or path-density) radius, 0 where its disc cannot
     // reach the view; the others count in view.
-    void setTravelRadii(const FrameInputs& inputs);
+    void setTravelRadii(const FrameInputs& inputs, glm::uvec4 slice);
+    // Over the stored photons, or slice.x of slice.y of them.
+    void dispatch(glm::uvec4 slice) const;
 
     PhotonBuffers& mBuffers;
     ReloadableProgram mProgram;

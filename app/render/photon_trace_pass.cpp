@@ -10,6 +10,8 @@
 #include <shared/photon_data.h>
 #include <shared/scene_data.h>
 
+#include <cassert>
+
 namespace ispm {
 
 PhotonTracePass::PhotonTracePass(PhotonBuffers& buffers)
@@ -24,30 +26,42 @@ PhotonTracePass::PhotonTracePass(PhotonBuffers& buffers)
       mTraceParams("photon trace parameters", sizeof(gpu::TraceParams)) {}
 
 void PhotonTracePass::execute(const FrameInputs& inputs) {
+    executeSlice(inputs, 0, 1);
+}
+
+void PhotonTracePass::executeSlice(const FrameInputs& inputs, uint32_t slice, uint32_t slices) {
+    assert(slice < slices && slices <= gpu::kMaxComputeSlices);
     gpu::PrepareParams prepare{};
     prepare.control = glm::uvec4(mBuffers.getResultCapacity(), mBuffers.getBounceCapacity(),
-                                 gpu::kPrepareStageBeforeTrace,
-                                 static_cast<uint32_t>(inputs.settings.splatPasses));
-    mPrepareParams.upload(0, sizeof(prepare), &prepare);
+                                 gpu::kPrepareStageBeforeTrace, inputs.splatDraws);
     gpu::TraceParams trace{};
     trace.control = glm::uvec4(static_cast<uint32_t>(inputs.settings.bounces), inputs.seed,
                                inputs.settings.rngGenerator, inputs.settings.rngMode);
     trace.ray = glm::vec4(inputs.scene.getRayEpsilon(), 0.0f, 0.0f, 0.0f);
+    trace.slice = glm::uvec4(slice, slices, 0u, 0u);
     mTraceParams.upload(0, sizeof(trace), &trace);
 
     mBuffers.bind();
     inputs.scene.bind();
-    mPrepare.use();
-    mPrepareParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
-    gl::dispatchCompute(1);
-    // The dispatch arguments and counters were written by a shader.
-    gl::memoryBarrier(gl::Barrier::Command | gl::Barrier::Storage);
+    if (slice == 0) {
+        mPrepareParams.upload(0, sizeof(prepare), &prepare);
+        mPrepare.use();
+        mPrepareParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
+        gl::dispatchCompute(1);
+        // The dispatch arguments and counters were written by a shader.
+        gl::memoryBarrier(gl::Barrier::Command | gl::Barrier::Storage);
+    }
 
     mTrace.use();
     mTraceParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
-    gl::dispatchComputeIndirect(mBuffers.getCounters(),
-                                offsetof(gpu::PhotonCounters, traceDispatch));
+    if (slices == 1) {
+        gl::dispatchComputeIndirect(mBuffers.getCounters(),
+                                    offsetof(gpu::PhotonCounters, traceDispatch));
+    } else {
+        mBuffers.dispatchSlice(offsetof(gpu::PhotonCounters, bounce), slice, slices);
+    }
     gl::memoryBarrier(gl::Barrier::Storage);
+    if (slice + 1 < slices) return;
 
     // The same block again, at its second stage (the GL orders the update after the dispatch
     // that read the first).

@@ -13,6 +13,9 @@ class PhotonTracePass final : public Pass {
     explicit PhotonTracePass(PhotonBuffers& buffers);
     const char* getName() const override { return "trace"; }
     void execute(const FrameInputs& inputs) override;
+    // Slice `slice` of `slices` of the bounce photons (a frame drawn in slices): the first turns
+    // the bounce count into the dispatch, the last the results into the splat's draws.
+    void executeSlice(const FrameInputs& inputs, uint32_t slice, uint32_t slices);
     void reloadPrograms(ShaderReloadReport& report) override {
         mPrepare.reloadIfChanged(report);
         mTrace.reloadIfChanged(report);

@@ -16,6 +16,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include <array>
+#include <cassert>
 #include <cmath>
 #include <cstring>
 #include <vector>
@@ -169,7 +170,13 @@ void SplatPass::execute(const FrameInputs& inputs) {
         executeGather(inputs);
         return;
     }
-    clear(inputs);
+    executeDraws(inputs, 0, inputs.splatDraws);
+}
+
+void SplatPass::executeDraws(const FrameInputs& inputs, uint32_t firstDraw, uint32_t drawCount) {
+    assert(inputs.settings.splatMode != gpu::kSplatModeGather);
+    assert(firstDraw + drawCount <= inputs.splatDraws && inputs.splatDraws <= gpu::kMaxSplatDraws);
+    if (firstDraw == 0) clear(inputs);
     mFramebuffer.bind();
     // Additive float accumulation. A flat disc covers a pixel once from either side; of a box,
     // only the back faces count.
@@ -181,16 +188,19 @@ void SplatPass::execute(const FrameInputs& inputs) {
     mClip.bindBase(gl::BufferTarget::Storage, gpu::kBindingSplatClip);
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
     mViewer.bindTextures(gpu::kUnitGBufferFirst);
-    const auto passes = static_cast<uint32_t>(inputs.settings.splatPasses);
-    std::vector<gpu::SplatParams> params(passes);
-    for (uint32_t p = 0; p < passes; ++p) {
-        params[p].control =
-            glm::uvec4(inputs.settings.radiusMode, inputs.settings.splatShape, p, passes);
-        params[p].shape =
-            glm::vec4(inputs.settings.squash, float(inputs.settings.splatDivisor), 0.0f, 0.0f);
+    // Every draw's block is uploaded with the first: a later slice binds its own.
+    const uint32_t draws = inputs.splatDraws;
+    if (firstDraw == 0) {
+        std::vector<gpu::SplatParams> params(draws);
+        for (uint32_t p = 0; p < draws; ++p) {
+            params[p].control =
+                glm::uvec4(inputs.settings.radiusMode, inputs.settings.splatShape, p, draws);
+            params[p].shape =
+                glm::vec4(inputs.settings.squash, float(inputs.settings.splatDivisor), 0.0f, 0.0f);
+        }
+        mParams.upload(params);
     }
-    mParams.upload(params);
-    for (uint32_t p = 0; p < passes; ++p) {
+    for (uint32_t p = firstDraw; p < firstDraw + drawCount; ++p) {
         mParams.bind(p);
         gl::drawElementsIndirect(gl::Primitive::Triangles, mBuffers.getSplatDraws(),
                                  p * gpu::kSplatDrawUvec4s * sizeof(glm::uvec4));

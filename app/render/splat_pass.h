@@ -2,7 +2,8 @@
 // splat_shape box, a box squashed along its normal); the fragment stage adds BRDF x power x
 // kernel to the indirect-light buffer (additive RGBA32F). splat_mode gather bins the photons
 // into screen tiles instead, and each pixel sums its tile's photons (shared/gather_data.h).
-// The draw count comes from the GPU (glDrawArraysIndirect), split into `splat_passes` calls.
+// The draw count comes from the GPU (glDrawArraysIndirect), split into `splat_passes` calls
+// (more when the viewer draws a frame in slices).
 // The buffer may be smaller than the image (`splat_resolution`): each of its pixels then shades
 // one viewer G-buffer pixel of the block it covers, and UpsamplePass brings it back.
 #pragma once
@@ -57,6 +58,10 @@ class SplatPass final : public Pass {
     // The tiled gather's buffers (they grow to the largest frame's need).
     size_t getGpuBytes() const { return mTiles.getSize() + mList.getSize(); }
     const gl::Texture& getOutput() const { return mIndirect; }
+    // The raster splat's draws [firstDraw, firstDraw + drawCount) of inputs.splatDraws, each a
+    // share of the photons in order (so slices add up to execute()'s image exactly); the first
+    // clears the buffer. Not for splat_mode gather.
+    void executeDraws(const FrameInputs& inputs, uint32_t firstDraw, uint32_t drawCount);
     // No photons this frame: the buffer, sized as execute would, holds no light.
     void clear(const FrameInputs& inputs);
 

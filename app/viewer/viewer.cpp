@@ -23,6 +23,7 @@
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <memory>
 
@@ -34,6 +35,9 @@ constexpr float kMaxFrameSeconds = 0.1f;            // a stall must not fling th
 // Stats-panel read-backs (photon counts, white point) every this many frames: a few times a
 // second at interactive rates, instead of a GPU wait every frame.
 constexpr uint64_t kStatsReadbackFrames = 8;
+// A window with nothing happening is redrawn this often while a frame is drawn in slices (ImGui's
+// hover tooltips and text caret move on time, not on events).
+constexpr double kIdleRedrawMs = 100.0;
 
 std::string makeWindowTitle(const Scene& scene) {
     return strCat("ispm view ", scene.sourcePath);
@@ -142,8 +146,9 @@ void Viewer::syncRenderSize() {
     glfwGetFramebufferSize(mWindow, &mWindowWidth, &mWindowHeight);
     const int width = std::max(1, mWindowWidth - kPanelWidthPx);
     const int height = std::max(1, mWindowHeight);
-    if (mRunner->getWidth() == width && mRunner->getHeight() == height) return;
+    // The next frame's size: a resize asked for while a frame is drawn waits for it to end.
     Settings next = mRunner->getSettings();
+    if (next.getInt("width") == width && next.getInt("height") == height) return;
     next.set("width", width, "viewer window");
     next.set("height", height, "viewer window");
     applySettings(next);
@@ -225,8 +230,32 @@ void Viewer::drawFrame() {
     mImGui.endFrame();
 }
 
+// One UI frame: events, panels and the picture at their own rate (FramePacer); the rendered
+// frame goes on in slices between them and is shown when done. Scripts advance with rendered
+// frames (a `wait 3` is three pictures) and --frames counts them, so scripted runs see the
+// frames they asked for.
+bool Viewer::isQuiet(double sinceDrawnMs) const {
+    if (!mRunner->isFrameInProgress() || !mInput.isEmpty() || mDragging) return false;
+    if (sinceDrawnMs >= kIdleRedrawMs || mScene.isAnimated() || !mPendingScenePath.empty()) {
+        return false;
+    }
+    for (const KeyAxis& k : kMoveKeys) {
+        if (mCameraKeys.isHeld(k.key)) return false; // the camera flies on every UI frame
+    }
+    return true;
+}
+
 int Viewer::run() {
+    using Clock = std::chrono::steady_clock;
+    const auto msBetween = [](Clock::time_point a, Clock::time_point b) {
+        return std::chrono::duration<double, std::milli>(b - a).count();
+    };
     int frame = 0;
+    Clock::time_point uiFrameEnd = Clock::now(); // the last UI frame's end, quiet ones included
+    Clock::time_point drawnEnd = uiFrameEnd;     // the last redraw's
+    Clock::time_point renderFrameStart = uiFrameEnd;
+    std::vector<const ScriptCommand*> afterFrame; // outputs of the rendered frame in progress
+    double sinceFrameBeganS = 0.0;                // wall time since the last frame began
     while (!glfwWindowShouldClose(mWindow)) {
         if (mOptions.maxFrames >= 0 && frame >= mOptions.maxFrames) break;
         glfwPollEvents();
@@ -235,21 +264,36 @@ int Viewer::run() {
             mPendingScenePath.clear();
         }
         syncRenderSize();
+        // While a frame is drawn and nothing happens, the window is not redrawn (at most every
+        // kIdleRedrawMs): the frame gets the time. Any event ends the quiet at once.
+        bool renderedQuietly = false;
+        if (isQuiet(msBetween(drawnEnd, Clock::now()))) {
+            renderedQuietly = mRunner->continueFrame(mPacer.getRenderBudgetMs());
+            const Clock::time_point end = Clock::now();
+            mPacer.recordQuietSlice(msBetween(uiFrameEnd, end));
+            uiFrameEnd = end;
+            if (!renderedQuietly) continue;
+            mPacer.recordRenderFrame(msBetween(renderFrameStart, Clock::now()));
+        }
         const double now = glfwGetTime();
         const float seconds = std::min(static_cast<float>(now - mLastTime), kMaxFrameSeconds);
         mLastTime = now;
+        sinceFrameBeganS += static_cast<double>(seconds);
 
         CameraInput scripted;
-        std::vector<const ScriptCommand*> afterFrame;
+        // A frame done in a quiet slice is shown (and its script outputs written) before the
+        // script goes on.
+        const bool atFrameStart = !mRunner->isFrameInProgress() && !renderedQuietly;
         // Said the frame after the last command's, so that its outputs saw the panel before.
         const bool scriptInputSeen = mInput.getTakenCount() >= mScriptInputEnd;
-        if (!mScriptDone && !mOptions.script.empty() && mScript.isFinished() && scriptInputSeen) {
+        if (atFrameStart && !mScriptDone && !mOptions.script.empty() && mScript.isFinished() &&
+            scriptInputSeen) {
             mScriptDone = true;
             setStatus(strCat("script finished (", mOptions.script.size(), " commands)"), false);
         }
         // A script's clicks and keys go through the queue as the window's do; the script goes on
         // once they have all reached a frame (the user's own events do not hold it up).
-        if (scriptInputSeen) {
+        if (atFrameStart && scriptInputSeen) {
             for (const ScriptCommand* c : mScript.advanceFrame())
                 runScriptCommand(*c, scripted, afterFrame);
         }
@@ -264,6 +308,8 @@ int Viewer::run() {
         if (!isSameCamera(before, mScene.camera) || mLightEdit != LightEdit::None) {
             mReference.restart();
         }
+        // Edits wait for the next rendered frame (the runner keeps them until then), but lights
+        // added or removed drop the frame in progress.
         if (mLightEdit == LightEdit::Values) mRunner->updateScene();
         if (mLightEdit == LightEdit::AddedOrRemoved) mRunner->rebuildScene();
         mLightEdit = LightEdit::None;
@@ -273,33 +319,51 @@ int Viewer::run() {
             mReference.restart(); // a path-traced reference of another moment would be stale
         }
 
-        mRunner->setTimeStep(seconds); // eye adaptation follows the wall clock
-        mRunner->renderFrame();
-        // Counts and the white point are read back for the Stats panel only, every few frames:
-        // a read-back waits for the GPU to finish the frame.
-        if (mFrameIndex++ % kStatsReadbackFrames == 0) {
-            mCounts = mRunner->readPhotonCounts();
-            mLuminanceMax = mRunner->readLuminanceMax();
+        if (!mRunner->isFrameInProgress() && !renderedQuietly) {
+            mRunner->setTimeStep(sinceFrameBeganS); // eye adaptation follows the wall clock
+            sinceFrameBeganS = 0.0;
+            renderFrameStart = Clock::now();
+            mRunner->beginFrame(mPacer.getRenderBudgetMs());
         }
-        mReference.update(mScene, *mRunner);
-        // The frame row counts the in-viewer path tracer too, when it ran this frame.
-        std::vector<PassTiming> timings = mRunner->getLastTimings();
-        if (const std::optional<PassTiming> traced = mReference.getFrameTiming()) {
-            timings.push_back(*traced);
+        const Clock::time_point sliceStart = Clock::now();
+        const bool rendered = renderedQuietly || mRunner->continueFrame(mPacer.getRenderBudgetMs());
+        const double sliceMs = msBetween(sliceStart, Clock::now());
+        if (rendered && !renderedQuietly) {
+            mPacer.recordRenderFrame(msBetween(renderFrameStart, Clock::now()));
         }
-        mTimings.record(timings);
+        if (rendered) {
+            // Counts and the white point are read back for the Stats panel only, every few
+            // frames: a read-back waits for the GPU to finish the frame.
+            if (mFrameIndex++ % kStatsReadbackFrames == 0) {
+                mCounts = mRunner->readPhotonCounts();
+                mLuminanceMax = mRunner->readLuminanceMax();
+            }
+            mReference.update(mScene, *mRunner);
+            // The frame row counts the in-viewer path tracer too, when it ran this frame.
+            std::vector<PassTiming> timings = mRunner->getLastTimings();
+            if (const std::optional<PassTiming> traced = mReference.getFrameTiming()) {
+                timings.push_back(*traced);
+            }
+            mTimings.record(timings);
+        }
 
         drawFrame();
 
-        for (const ScriptCommand* c : afterFrame)
-            writeScriptOutput(*c);
+        if (rendered) {
+            for (const ScriptCommand* c : afterFrame)
+                writeScriptOutput(*c);
+            afterFrame.clear();
+        }
         if (mScreenshotRequested) takeNumberedScreenshot();
         mScreenshotRequested = false;
-        ++frame;
-        if (frame == mOptions.maxFrames && !mOptions.screenshotPath.empty()) {
+        if (rendered) ++frame;
+        if (rendered && frame == mOptions.maxFrames && !mOptions.screenshotPath.empty()) {
             takeScreenshot(mOptions.screenshotPath);
         }
         glfwSwapBuffers(mWindow);
+        const Clock::time_point end = Clock::now();
+        mPacer.recordUiFrame(msBetween(uiFrameEnd, end), sliceMs);
+        uiFrameEnd = drawnEnd = end;
     }
     const gl::DebugCounts debug = gl::getDebugCounts();
     if (debug.errors > 0) {

@@ -12,6 +12,7 @@
 #include "viewer/animation_panel.h"
 #include "viewer/debug_view.h"
 #include "viewer/fly_camera.h"
+#include "viewer/frame_pacer.h"
 #include "viewer/imgui_layer.h"
 #include "viewer/input_queue.h"
 #include "viewer/input_script.h"
@@ -98,6 +99,9 @@ class Viewer {
     void reloadShaders();
     void waitForFile(const ScriptCommand& c);
     void drawFrame(); // the frame or debug view, the photon points, the panels
+    // Whether this UI frame may go to the frame's slice alone: a frame is being drawn and no
+    // event, held key, drag or animation asks for the window, drawn `sinceDrawnMs` ago.
+    bool isQuiet(double sinceDrawnMs) const;
 
     Scene mScene;
     ViewerOptions mOptions;
@@ -122,7 +126,8 @@ class Viewer {
     std::string mPendingScenePath;
     ScriptPlayer mScript;
     TimingHistory mTimings;
-    PhotonCounts mCounts;       // of a recent frame (see kStatsReadbackFrames)
+    FramePacer mPacer;    // UI frames at their own rate, rendered frames in slices between them
+    PhotonCounts mCounts; // of a recent frame (see kStatsReadbackFrames)
     float mLuminanceMax = 0.0f; // likewise
     uint64_t mFrameIndex = 0;
     int mWindowWidth = 0;

@@ -232,13 +232,14 @@ void Viewer::recordItem(const std::string& name) {
 
 // Frame rate and time in the scene region's top-left corner, over the image (two lines: narrow
 // regions too show both).
+// F2: the UI's rate (it keeps its own, FramePacer) and the rendered frames' (drawn in slices).
 void Viewer::drawFrameRateOverlay() {
-    const std::vector<float> totals = mTimings.getFrameTotals();
-    if (totals.empty()) return;
-    const float ms = totals.back();
+    const double uiMs = mPacer.getMedianUiFrameMs();
+    const double frameMs = mPacer.getLastRenderFrameMs();
+    if (uiMs <= 0.0 || frameMs <= 0.0) return;
     std::array<char, kOverlayTextSize> text{};
-    std::snprintf(text.data(), text.size(), "%.1f fps\n%.1f ms",
-                  ms > 0.0f ? 1000.0 / static_cast<double>(ms) : 0.0, static_cast<double>(ms));
+    std::snprintf(text.data(), text.size(), "%.1f fps (%.0f ms)\nUI %.0f Hz", 1000.0 / frameMs,
+                  frameMs, 1000.0 / uiMs);
     ImDrawList* list = ImGui::GetForegroundDrawList();
     list->PushClipRect(ImVec2(0.0f, 0.0f), ImVec2(static_cast<float>(mRunner->getWidth()),
                                                   static_cast<float>(mWindowHeight)));

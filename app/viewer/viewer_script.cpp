@@ -109,6 +109,12 @@ void Viewer::printPanel() {
     std::printf("panel camera: %.6f %.6f %.6f\n", static_cast<double>(p.x),
                 static_cast<double>(p.y), static_cast<double>(p.z));
     std::printf("panel frame ms: %.6f\n", mTimings.getLastTotalMs());
+    // The clocks of the window: rendered frames in wall time (their slices and the UI frames
+    // between them) and the UI frames' median interval.
+    std::printf("panel frame wall ms: %.6f\n", mPacer.getLastRenderFrameMs());
+    std::printf("panel ui frame ms: %.6f\n", mPacer.getMedianUiFrameMs());
+    std::printf("panel ui frame max ms: %.6f\n", mPacer.getMaxUiFrameMs());
+    std::printf("panel ui frames per frame: %d\n", mPacer.getUiFramesPerRenderFrame());
     for (const PassTiming& t : mTimings.getLast())
         std::printf("panel pass ms: %s = %.6f\n", t.name.c_str(), t.ms);
     std::printf("panel view stops: %s\n",

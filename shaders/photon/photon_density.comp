@@ -325,8 +325,9 @@ void setTravelRadius(uint index) {
 }
 
 void main() {
-    uint index = gl_GlobalInvocationID.x;
-    if (index >= counters.splatDraw.y) return;
+    uvec2 range = computeSliceRange(counters.splatDraw.y, params.slice.x, params.slice.y);
+    uint index = range.x + gl_GlobalInvocationID.x;
+    if (index >= range.y) return;
     if (params.control.x == kDensityStageTravelCull) {
         setTravelRadius(index);
         return;

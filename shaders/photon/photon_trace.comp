@@ -46,8 +46,9 @@ uint hashObjectPoint(RayHit hit) {
 }
 
 void main() {
-    uint index = gl_GlobalInvocationID.x;
-    if (index >= counters.bounce.x) return;
+    uvec2 range = computeSliceRange(counters.bounce.x, params.slice.x, params.slice.y);
+    uint index = range.x + gl_GlobalInvocationID.x;
+    if (index >= range.y) return;
     BouncePhoton photon = bouncePhotons[index];
     vec3 position = photon.positionDistance.xyz;
     float travelled = photon.positionDistance.w;

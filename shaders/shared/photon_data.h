@@ -46,7 +46,23 @@ struct PhotonCounters {
 ISPM_STATIC_ASSERT_SIZE(PhotonCounters, 80);
 
 ISPM_CONST uint kTraceGroupSize = 64u;
-ISPM_CONST uint kMaxSplatPasses = 64u;
+
+// A compute pass over `count` photons run in `slices` dispatches (the viewer draws a frame in
+// slices across its UI frames): slice `slice` takes photons [x, y), as even as can be, in order.
+// A slice's dispatch covers its share only (PhotonBuffers::dispatchSlice); one slice of one is
+// the indirect dispatch over all.
+ISPM_INLINE uvec2 computeSliceRange(uint count, uint slice, uint slices) {
+    uint share = count / slices;
+    uint extra = count % slices;
+    uint begin = share * slice + min(slice, extra);
+    return uvec2(begin, begin + share + (slice < extra ? 1u : 0u));
+}
+// Slices of the trace or the density pass in one frame, at most.
+ISPM_CONST uint kMaxComputeSlices = 64u;
+ISPM_CONST uint kMaxSplatPasses = 64u; // the splat_passes setting's range
+// Draws one frame's splat may be split into: splat_passes, or more when the viewer draws a frame
+// in slices across its UI frames (FrameRunner::beginFrame), each a share of the photons.
+ISPM_CONST uint kMaxSplatDraws = 256u;
 ISPM_CONST uint kSplatCubeVertices = 36u; // 12 triangles, indices into the cube's 8 corners
 ISPM_CONST uint kSplatCubeCorners = 8u;
 // A splat pass's glDrawElementsIndirect command {count, instanceCount, firstIndex, baseVertex,
@@ -110,8 +126,9 @@ ISPM_STATIC_ASSERT_SIZE(PrepareParams, 16);
 struct TraceParams {
     uvec4 control; // x = bounces, y = frame seed, z = generator (kRngPcg ...), w = kRngFixed ...
     vec4 ray;      // x = ray offset off the surface a photon leaves (m), yzw unused
+    uvec4 slice;   // x = this slice, y = slices (computeSliceRange); zw unused
 };
-ISPM_STATIC_ASSERT_SIZE(TraceParams, 32);
+ISPM_STATIC_ASSERT_SIZE(TraceParams, 48);
 
 // Parameters of photon_emit.geom for one light view's grid (std140, at kBindingPassParams).
 struct EmitParams {
@@ -147,8 +164,9 @@ struct DensityParams {
                    // z = 1: measure a photon against its neighbours only, w = radius mode
     vec4 travel;   // travel modes: radius_min, radius_max (m, times radius_scale), dist_min,
                    // dist_max (m)
+    uvec4 slice;   // x = this slice, y = slices (computeSliceRange); zw unused
 };
-ISPM_STATIC_ASSERT_SIZE(DensityParams, 64);
+ISPM_STATIC_ASSERT_SIZE(DensityParams, 80);
 
 ISPM_NAMESPACE_END
 
