@@ -111,6 +111,13 @@ const std::vector<SettingDesc>& table() {
          "",
          "indirect light that reflected 1..bounces times is kept (0: direct light only)",
          {}},
+        {"reference_method", SettingType::Enum, 0, 0, 1, "",
+         "estimator of --mode reference: path (camera paths with next-event estimation to each "
+         "light; cannot see a point, spot or sun light through glass or in a mirror) or light "
+         "(light paths from the lights, each vertex on a diffuse or glossy surface connected to "
+         "the camera: caustics converge; glass and mirrors seen by the camera stay black but "
+         "for their diffuse and glossy parts)",
+         toChoices(kReferenceMethodChoices)},
         {"importance",
          SettingType::Float,
          0.75,

@@ -220,6 +220,16 @@ ISPM_INLINE uint scatterSurfaceWith(ISPM_INOUT(vec3) dir, ISPM_INOUT(vec3) weigh
     return kScatterAbsorbed;
 }
 
+// Radiance across a refracting surface changes with the square of the index ratio (L / n^2 is
+// what is conserved); flux does not. A camera path carries radiance backwards along its own
+// direction, so at a refraction its throughput takes (n_incident / n_transmitted)^2 = eta^2 of
+// that direction: 1 / ior^2 entering glass, ior^2 leaving it. Photons and light paths carry flux
+// and take nothing.
+ISPM_INLINE float computeRefractedRadianceScale(bool entering, float ior) {
+    float eta = entering ? 1.0f / ior : ior;
+    return eta * eta;
+}
+
 // The same with three numbers drawn from `rng`.
 ISPM_INLINE uint scatterSurface(ISPM_INOUT(vec3) dir, ISPM_INOUT(vec3) weight, vec3 n, vec3 diffuse,
                                 vec4 specular, vec4 transmissive, bool entering,
