@@ -153,7 +153,8 @@ const std::vector<SettingDesc>& table() {
          "splat radius from travel distance (travel, the thesis), from path density alone "
          "(path_density, McGuire and Luebke 2009: radius_max / sqrt(path density), at least "
          "radius_min) or from the local density of stored photons (density: each disc holds about "
-         "splat_neighbours photons)",
+         "splat_neighbours photons; a photon focused by mirrors or glass since its last diffuse "
+         "bounce, a caustic, takes that radius / sqrt(path density))",
          toChoices(kRadiusModeChoices)},
         {"splat_neighbours",
          SettingType::Int,
