@@ -14,6 +14,8 @@
 #include "scene/frame_settings.h"
 #include "scene/scene_loader.h"
 
+#include <shared/light_trace_data.h>
+
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -49,7 +51,8 @@ void addRenderCommand(CLI::App& app, RenderOptions& options) {
                     "result_direction or result_power (photons as points over the dimmed frame)");
     cmd->add_flag("-q,--quiet", options.quiet, "print only errors");
     cmd->add_option("--mode", options.mode,
-                    "ispm (image-space photon mapping, default) or reference (path tracer)");
+                    "ispm (image-space photon mapping, default) or reference (path tracer; "
+                    "--set reference_method=light: light tracer, sees caustics)");
     cmd->add_option("--spp", options.spp, "reference mode: samples per pixel (default 64)");
     cmd->add_option("--bounces", options.bounces,
                     "reflections between light and visible surface (setting `bounces`; 0 = direct "
@@ -108,14 +111,16 @@ int runReference(const RenderOptions& options, const Scene& scene, const Setting
         if (progress) printProgress(s + 1, options.spp, "spp", secondsSince(traceStart));
     }
     writeImage(options.outputPath, reference.readMean());
+    const char* method =
+        reference.getMethod() == gpu::kReferenceLight ? "light tracing" : "path tracing";
     if (!options.quiet) {
         std::printf("wrote %s (%dx%d, reference, %d spp, %d bounces)\n", options.outputPath.c_str(),
                     resolveFrameSettings(settings).width, resolveFrameSettings(settings).height,
                     options.spp, reference.getBounces());
-        std::printf("path tracing: %.1f ms; whole command: %.1f ms\n",
-                    secondsSince(traceStart) * 1e3, secondsSince(start) * 1e3);
+        std::printf("%s: %.1f ms; whole command: %.1f ms\n", method, secondsSince(traceStart) * 1e3,
+                    secondsSince(start) * 1e3);
     }
-    return checkGlErrors("path tracing");
+    return checkGlErrors(method);
 }
 
 } // namespace

@@ -1,4 +1,5 @@
-// Reference path tracing: setup and one sample per dispatch.
+// Reference path and light tracing: setup and one sample per dispatch (two for light tracing:
+// trace and splat, then resolve into the accumulation image).
 #include "render/reference_pass.h"
 
 #include "gl/gl.h"
@@ -8,13 +9,19 @@
 #include "render/readback.h"
 #include "render/shader_root.h"
 
+#include <shared/light_trace_data.h>
 #include <shared/scene_data.h>
+
+#include <algorithm>
+#include <cmath>
 
 namespace ispm {
 namespace {
 
 constexpr GLuint kImageUnitAccumulation = 0;
-constexpr unsigned kGroupSize = 8; // local_size_x/y of reference.comp
+constexpr unsigned kGroupSize = 8;       // local_size_x/y of reference.comp, light_resolve.comp
+constexpr unsigned kLightGroupSize = 64; // local_size_x of light_trace.comp
+constexpr size_t kSplatFloatsPerPixel = 3;
 // The light G-buffer of the photon mapper is not used here; the GPU scene still derives light
 // cameras, at the smallest size.
 constexpr int kUnusedLightResolution = 1;
@@ -31,15 +38,36 @@ ReferencePass::ReferencePass(const Scene& scene, const GpuScene& gpuScene, const
 ReferencePass::ReferencePass(const Scene& scene, std::unique_ptr<GpuScene> owned,
                              const GpuScene* borrowed, const FrameSettings& settings)
     : mScene(scene), mOwnedScene(std::move(owned)), mGpuScene(borrowed ? *borrowed : *mOwnedScene),
-      mProgram(gl::Program::build(
-          getShaderRoot(), {.label = "reference path tracer",
-                            .stages = {{gl::ShaderStage::Compute, "reference/reference.comp"}},
-                            .defines = getGBufferDefines()})),
       mFrameConstants("reference frame constants", sizeof(gpu::FrameConstants)),
-      mParams("reference parameters", sizeof(gpu::ReferenceParams)), mWidth(settings.width),
-      mHeight(settings.height),
+      mParams("reference parameters",
+              std::max(sizeof(gpu::ReferenceParams), sizeof(gpu::LightTraceParams))),
+      mWidth(settings.width), mHeight(settings.height),
       mBounces(settings.bouncesSet ? settings.bounces : kReferenceDefaultBounces),
-      mSeed(settings.seed) {
+      mSeed(settings.seed), mMethod(settings.referenceMethod) {
+    if (mMethod == gpu::kReferenceLight) {
+        mProgram = gl::Program::build(
+            getShaderRoot(), {.label = "reference light tracer",
+                              .stages = {{gl::ShaderStage::Compute, "reference/light_trace.comp"}},
+                              .defines = getGBufferDefines()});
+        mResolveProgram = gl::Program::build(
+            getShaderRoot(),
+            {.label = "reference light resolve",
+             .stages = {{gl::ShaderStage::Compute, "reference/light_resolve.comp"}},
+             .defines = getGBufferDefines()});
+        mSplat = gl::Buffer("reference light splat", static_cast<size_t>(mWidth) *
+                                                         static_cast<size_t>(mHeight) *
+                                                         kSplatFloatsPerPixel * sizeof(float));
+        // The image plane 1 m from the eye spans 2 tan(fovY / 2) by aspect times that.
+        const float tanHalf = std::tan(glm::radians(scene.camera.fovYDeg) * 0.5f);
+        const float aspect = static_cast<float>(mWidth) / static_cast<float>(mHeight);
+        mPixelAreaM2 = 4.0f * tanHalf * tanHalf * aspect /
+                       (static_cast<float>(mWidth) * static_cast<float>(mHeight));
+    } else {
+        mProgram = gl::Program::build(
+            getShaderRoot(), {.label = "reference path tracer",
+                              .stages = {{gl::ShaderStage::Compute, "reference/reference.comp"}},
+                              .defines = getGBufferDefines()});
+    }
     mAccumulation =
         gl::Texture::create2D("reference accumulation", gl::Format::RGBA32F, mWidth, mHeight);
     mAccumulation.clear(glm::vec4(0.0f));
@@ -52,6 +80,15 @@ void ReferencePass::addSample() {
     mGpuScene.bind();
     mFrameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
     mAccumulation.bindImage(kImageUnitAccumulation, true, true);
+    if (mMethod == gpu::kReferenceLight) {
+        addLightSample();
+    } else {
+        addPathSample();
+    }
+    ++mSamples;
+}
+
+void ReferencePass::addPathSample() {
     mProgram.use();
     gpu::ReferenceParams params{};
     params.control =
@@ -63,7 +100,30 @@ void ReferencePass::addSample() {
                         (static_cast<unsigned>(mHeight) + kGroupSize - 1) / kGroupSize);
     // The next sample reads what this one wrote; read-back follows the same rule.
     gl::memoryBarrier(gl::Barrier::ImageAccess | gl::Barrier::TextureUpdate);
-    ++mSamples;
+}
+
+void ReferencePass::addLightSample() {
+    // One light path per pixel: the same work per sample as a camera path, spread by the lights.
+    const auto pathCount = static_cast<uint32_t>(mWidth) * static_cast<uint32_t>(mHeight);
+    gpu::LightTraceParams params{};
+    params.control = glm::uvec4(static_cast<uint32_t>(mSamples), static_cast<uint32_t>(mBounces),
+                                mSeed, pathCount);
+    params.ray = glm::vec4(mGpuScene.getRayEpsilon(), mPixelAreaM2, 0.0f, 0.0f);
+    params.cameraAxis =
+        glm::vec4(glm::normalize(mScene.camera.target - mScene.camera.position), 0.0f);
+    const Aabb& bounds = mGpuScene.getBounds();
+    params.sceneSphere = glm::vec4(bounds.getCenter(), 0.5f * glm::length(bounds.getExtent()));
+    mParams.upload(0, sizeof(params), &params);
+    mParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
+    mSplat.bindBase(gl::BufferTarget::Storage, gpu::kBindingLightSplat);
+    mProgram.use();
+    gl::dispatchCompute((pathCount + kLightGroupSize - 1) / kLightGroupSize);
+    // The resolve reads the splats; then the next sample's splats follow its clearing.
+    gl::memoryBarrier(gl::Barrier::Storage);
+    mResolveProgram.use();
+    gl::dispatchCompute((static_cast<unsigned>(mWidth) + kGroupSize - 1) / kGroupSize,
+                        (static_cast<unsigned>(mHeight) + kGroupSize - 1) / kGroupSize);
+    gl::memoryBarrier(gl::Barrier::ImageAccess | gl::Barrier::TextureUpdate | gl::Barrier::Storage);
 }
 
 Image ReferencePass::readMean() const {

@@ -1,6 +1,8 @@
 // ReferencePass: a progressive compute path tracer over the same GPU scene, BVH, materials and
 // lights as the photon mapper. Each call to addSample() adds one jittered sample per pixel to a
-// float accumulation image; the same seed gives the same image.
+// float accumulation image; the same seed gives the same image. With reference_method = light,
+// a sample is instead one light path per pixel, each connected to the camera at every diffuse or
+// glossy vertex (caustics from point, spot and sun lights converge).
 #pragma once
 
 #include "gl/objects.h"
@@ -32,6 +34,7 @@ class ReferencePass {
     // Mean radiance per pixel so far, row 0 at the top.
     Image readMean() const;
     int getBounces() const { return mBounces; }
+    uint32_t getMethod() const { return mMethod; } // gpu::kReferencePath or kReferenceLight
 
   private:
     ReferencePass(const Scene& scene, std::unique_ptr<GpuScene> owned, const GpuScene* borrowed,
@@ -40,14 +43,21 @@ class ReferencePass {
     const Scene& mScene;
     std::unique_ptr<GpuScene> mOwnedScene; // null when borrowed
     const GpuScene& mGpuScene;
-    gl::Program mProgram;
+    void addPathSample();
+    void addLightSample();
+
+    gl::Program mProgram;        // reference.comp, or light_trace.comp for the light method
+    gl::Program mResolveProgram; // light_resolve.comp (light method only)
     gl::Buffer mFrameConstants;
-    gl::Buffer mParams; // gpu::ReferenceParams of the sample being added
+    gl::Buffer mParams; // gpu::ReferenceParams or gpu::LightTraceParams of the sample being added
+    gl::Buffer mSplat;  // light method: rgb floats per pixel of the sample being added
     gl::Texture mAccumulation;
     int mWidth;
     int mHeight;
     int mBounces;
     uint32_t mSeed;
+    uint32_t mMethod;
+    float mPixelAreaM2 = 0.0f; // one pixel on the image plane 1 m from the eye (light method)
     int mSamples = 0;
 };
 

@@ -2,6 +2,7 @@
 #include "scene/frame_settings.h"
 
 #include <shared/gather_data.h>
+#include <shared/light_trace_data.h>
 #include <shared/photon_data.h>
 #include <shared/photon_scatter.h>
 #include <shared/scene_data.h>
@@ -23,6 +24,8 @@ static_assert(kRngGeneratorChoices[gpu::kRngPcg] == "pcg" &&
 static_assert(kRngModeChoices[gpu::kRngFixed] == "fixed" &&
               kRngModeChoices[gpu::kRngPerFrame] == "per_frame" &&
               kRngModeChoices[gpu::kRngObjectSpace] == "object_space");
+static_assert(kReferenceMethodChoices[gpu::kReferencePath] == "path" &&
+              kReferenceMethodChoices[gpu::kReferenceLight] == "light");
 static_assert(kSplatModeChoices[gpu::kSplatModeRaster] == "raster" &&
               kSplatModeChoices[gpu::kSplatModeGather] == "gather");
 static_assert(kSplatShapeChoices[gpu::kSplatShapeDisc] == "disc" &&
@@ -118,6 +121,7 @@ FrameSettings resolveFrameSettings(const Settings& settings) {
     f.frameMsTarget = settings.getFloat("frame_ms_target");
     f.bounces = settings.getInt("bounces");
     f.bouncesSet = settings.isSet("bounces");
+    f.referenceMethod = getChoice(settings, "reference_method");
     f.importanceSamples = settings.getInt("importance_samples");
     f.importance = f.importanceSamples > 0 ? settings.getFloat("importance") : 0.0f;
     f.rngGenerator = getChoice(settings, "rng_generator");

@@ -23,6 +23,7 @@ inline constexpr std::array<std::string_view, 3> kRngModeChoices = {"fixed", "pe
                                                                     "object_space"};
 inline constexpr std::array<std::string_view, 3> kRadiusModeChoices = {"travel", "path_density",
                                                                        "density"};
+inline constexpr std::array<std::string_view, 2> kReferenceMethodChoices = {"path", "light"};
 inline constexpr std::array<std::string_view, 2> kSplatShapeChoices = {"disc", "box"};
 inline constexpr std::array<std::string_view, 2> kSplatModeChoices = {"raster", "gather"};
 inline constexpr std::array<std::string_view, 4> kSplatResolutionChoices = {"auto", "1", "1/2",
@@ -45,8 +46,9 @@ struct FrameSettings {
     int photons = 0;
     float frameMsTarget = 0.0f; // 0: the budget as set
     int bounces = 0;
-    bool bouncesSet = false; // the reference path tracer has its own default
-    float importance = 0.0f; // aimed share; 0 when importanceSamples is 0
+    bool bouncesSet = false;      // the reference path tracer has its own default
+    uint32_t referenceMethod = 0; // gpu::kReferencePath, kReferenceLight
+    float importance = 0.0f;      // aimed share; 0 when importanceSamples is 0
     int importanceSamples = 0;
     uint32_t rngGenerator = 0; // gpu::kRngPcg, kRngLcg, kRngSobol
     uint32_t rngMode = 0;      // gpu::kRngFixed, kRngPerFrame, kRngObjectSpace

@@ -111,6 +111,13 @@ const std::vector<SettingDesc>& table() {
          "",
          "indirect light that reflected 1..bounces times is kept (0: direct light only)",
          {}},
+        {"reference_method", SettingType::Enum, 0, 0, 1, "",
+         "estimator of --mode reference: path (camera paths with next-event estimation to each "
+         "light; cannot see a point, spot or sun light through glass or in a mirror) or light "
+         "(light paths from the lights, each vertex on a diffuse or glossy surface connected to "
+         "the camera: caustics converge; glass and mirrors seen by the camera stay black but "
+         "for their diffuse and glossy parts)",
+         toChoices(kReferenceMethodChoices)},
         {"importance",
          SettingType::Float,
          0.75,
@@ -146,7 +153,8 @@ const std::vector<SettingDesc>& table() {
          "splat radius from travel distance (travel, the thesis), from path density alone "
          "(path_density, McGuire and Luebke 2009: radius_max / sqrt(path density), at least "
          "radius_min) or from the local density of stored photons (density: each disc holds about "
-         "splat_neighbours photons)",
+         "splat_neighbours photons; a photon focused by mirrors or glass since its last diffuse "
+         "bounce, a caustic, takes that radius / sqrt(path density))",
          toChoices(kRadiusModeChoices)},
         {"splat_neighbours",
          SettingType::Int,

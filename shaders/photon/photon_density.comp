@@ -377,6 +377,11 @@ void main() {
         float travel = photons[index].positionDistance.w;
         radius = min(radius, max(params.scales.z * travel, getCellSize(0u)));
     }
+    // A photon focused by mirrors or glass since its last diffuse bounce (path density above 1)
+    // belongs to a caustic: the density of all photons around it measures mostly the diffuse
+    // light, so its disc shrinks by the focus, 1 / sqrt(path density) (McGuire and Luebke's
+    // path-density radius), down to radius_min.
+    radius /= sqrt(max(photons[index].normalDensity.w, 1.0));
     radius = clamp(radius, params.grid.z, params.grid.w);
     if (isOutsideView(p, radius)) {
         photons[index].power.w = 0.0;

@@ -63,6 +63,9 @@ vec3 traceCameraPath(vec2 pixel, inout uint rng) {
         uint event = scatterSurface(dir, throughput, n, m.diffuse.rgb, m.specular, m.transmissive,
                                     frontFace, rng, kRngPcg, 1.0 / total);
         if (event == kScatterAbsorbed) break;
+        if (event == kScatterRefract) {
+            throughput *= computeRefractedRadianceScale(frontFace, m.transmissive.w);
+        }
         if (vertex >= kRouletteDepth) {
             float survive = min(max(throughput.r, max(throughput.g, throughput.b)), kMaxSurvival);
             if (nextRandom(rng, kRngPcg) >= survive) break;

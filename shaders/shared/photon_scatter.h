@@ -1,11 +1,14 @@
 // Random numbers and the photon scattering decision, written once for GLSL (emit and trace
 // passes) and C++ (the CPU reference the tests compare against).
 // Russian roulette picks diffuse, specular or transmissive with probabilities equal to the mean
-// reflectances and scales the power by reflectance / probability, so the estimate is unbiased.
+// reflectances at the photon's angle of incidence (the diffuse/specular split follows Schlick's
+// Fresnel, shared/surface_brdf.h) and scales the power by f cos / pdf, so the estimate is
+// unbiased.
 #ifndef ISPM_PHOTON_SCATTER_H
 #define ISPM_PHOTON_SCATTER_H
 
 #include "host_device.h"
+#include "surface_brdf.h"
 
 ISPM_NAMESPACE_BEGIN
 
@@ -174,23 +177,34 @@ ISPM_INLINE float computeMean(vec3 v) {
 
 // Scatters a path travelling along `dir` that hit a surface with unit normal `n` facing the side
 // it came from. `entering`: it hit the front face (for the index of refraction). A lobe is chosen
-// with probability (its mean reflectance) x selectScale, and the weight is divided by that
-// probability. selectScale = 1 is Russian roulette on the albedo (photons: absorbed paths end);
-// selectScale = 1 / (sum of the means) always picks a lobe (camera paths of the reference, which
-// apply their own roulette). Updates dir and weight; returns the kScatter* event.
+// with probability (its mean reflectance at this incidence) x selectScale, and the weight is
+// multiplied by f cos / pdf of the direction drawn, so its expectation is the lobe's reflectance.
+// The diffuse and specular reflectances add up to the material's at every angle, so
+// selectScale = 1 is Russian roulette on the albedo (photons: absorbed paths end) and
+// selectScale = 1 / (sum of the material's means) always picks a lobe (camera paths of the
+// reference, which apply their own roulette). Updates dir and weight; returns the kScatter* event.
 // `numbers`: (u for the lobe, u1 and u2 for its direction).
 ISPM_INLINE uint scatterSurfaceWith(ISPM_INOUT(vec3) dir, ISPM_INOUT(vec3) weight, vec3 n,
                                     vec3 diffuse, vec4 specular, vec4 transmissive, bool entering,
                                     vec3 numbers, float selectScale) {
-    float pd = computeMean(diffuse) * selectScale;
-    float ps = computeMean(vec3(specular)) * selectScale;
+    vec3 rhoS = vec3(specular);
+    float cosIn = clamp(-dot(dir, n), 0.0f, 1.0f);
+    float pd = computeMean(computeDiffuseAlbedo(diffuse, rhoS, cosIn)) * selectScale;
+    float ps = computeMean(computeSpecularAlbedo(diffuse, rhoS, cosIn)) * selectScale;
     float pt = computeMean(vec3(transmissive)) * selectScale;
     float u = numbers.x;
     float u1 = numbers.y;
     float u2 = numbers.z;
     if (u < pd) {
-        dir = sampleCosine(n, u1, u2);
-        weight = weight * (diffuse / pd);
+        vec3 out_ = sampleCosine(n, u1, u2);
+        if (hasSpecularLobe(rhoS)) {
+            // f cos / pdf with pdf = cos / pi: pi f.
+            vec3 f = evaluateDiffuseLobe(diffuse, rhoS, cosIn, dot(out_, n));
+            weight = weight * (f * (1.0f / (kInvPiF * pd)));
+        } else {
+            weight = weight * (diffuse / pd); // Lambert: pi f = rho_d
+        }
+        dir = out_;
         return kScatterDiffuse;
     }
     if (u < pd + ps) {
@@ -198,26 +212,37 @@ ISPM_INLINE uint scatterSurfaceWith(ISPM_INOUT(vec3) dir, ISPM_INOUT(vec3) weigh
         vec3 out_ = samplePhongLobe(reflect(dir, n), exponent, u1, u2);
         float cosOut = dot(out_, n);
         if (cosOut <= 0.0f) return kScatterAbsorbed; // the lobe dipped below the surface
-        // f cos / pdf for the normalised Phong lobe: rho_s (e + 2) / (e + 1) cos(theta_out).
-        weight = weight * (vec3(specular) / ps) * ((exponent + 2.0f) / (exponent + 1.0f) * cosOut);
+        // f cos / pdf for the normalised Phong lobe: rho_s (e + 2) / (e + 1) cos(theta_out),
+        // rho_s the specular reflectance of this pair of directions.
+        vec3 albedo = computePairSpecularAlbedo(diffuse, rhoS, -dir, out_);
+        weight = weight * (albedo / ps) * ((exponent + 2.0f) / (exponent + 1.0f) * cosOut);
         dir = out_;
         return kScatterSpecular;
     }
     if (u < pd + ps + pt) {
         float ior = transmissive.w;
         float eta = entering ? 1.0f / ior : ior;
-        float cosI = clamp(-dot(dir, n), 0.0f, 1.0f);
-        float fresnel = computeFresnel(cosI, eta);
+        float fresnel = computeFresnel(cosIn, eta);
         weight = weight * (vec3(transmissive) / pt);
         if (u1 < fresnel) {
             dir = reflect(dir, n);
             return kScatterReflect;
         }
-        float sin2T = eta * eta * (1.0f - cosI * cosI);
-        dir = normalize(dir * eta + n * (eta * cosI - sqrt(1.0f - sin2T)));
+        float sin2T = eta * eta * (1.0f - cosIn * cosIn);
+        dir = normalize(dir * eta + n * (eta * cosIn - sqrt(1.0f - sin2T)));
         return kScatterRefract;
     }
     return kScatterAbsorbed;
+}
+
+// Radiance across a refracting surface changes with the square of the index ratio (L / n^2 is
+// what is conserved); flux does not. A camera path carries radiance backwards along its own
+// direction, so at a refraction its throughput takes (n_incident / n_transmitted)^2 = eta^2 of
+// that direction: 1 / ior^2 entering glass, ior^2 leaving it. Photons and light paths carry flux
+// and take nothing.
+ISPM_INLINE float computeRefractedRadianceScale(bool entering, float ior) {
+    float eta = entering ? 1.0f / ior : ior;
+    return eta * eta;
 }
 
 // The same with three numbers drawn from `rng`.

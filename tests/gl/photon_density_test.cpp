@@ -1,6 +1,7 @@
 // Density radii (photon_density.comp) on planes of known photon density: the radius of the disc
 // that holds k photons is sqrt(k / (pi rho)); a photon k times stronger than its neighbours spreads
-// sqrt(k) times wider; photons outside the view are culled; a wall clips the discs that reach it.
+// sqrt(k) times wider; a caustic photon's disc shrinks by its path density; photons outside the
+// view are culled; a wall clips the discs that reach it.
 #include "support/analytic_scenes.h"
 #include "support/gl_fixture.h"
 
@@ -225,6 +226,26 @@ TEST_F(PhotonDensityTest, StrongPhotonSpreadsWider) {
     // the equal radius a count-only estimate would give.
     EXPECT_GT(averaged, 3.0f);
     EXPECT_LT(averaged, 0.85f * oneFrame);
+}
+
+TEST_F(PhotonDensityTest, CausticPhotonShrinksByItsPathDensity) {
+    // A photon that mirrors or glass focused since its last diffuse bounce (path density 16:
+    // one refraction, shared/photon_scatter.h) keeps a quarter of the density radius, 1 /
+    // sqrt(16): caustics stay sharp among diffuse light. Its neighbours, on diffuse paths, keep
+    // theirs to the bit (the rule reads only the photon's own path).
+    std::vector<gpu::ResultPhoton> photons;
+    addSquare(photons, -0.5f, -0.5f, 1.0f, 60, 5u);
+    const size_t caustic = photons.size() / 2 + 30;
+    const DensityRun diffuse = runDensity(makeFloorScene(), photons);
+    photons[caustic].normalDensity.w = gpu::kDeltaConcentration;
+    const DensityRun focused = runDensity(makeFloorScene(), photons);
+    const float ratio = focused.photons[caustic].power.w / diffuse.photons[caustic].power.w;
+    std::printf("caustic photon: radius %.4f x its diffuse twin's\n", double(ratio));
+    EXPECT_NEAR(ratio, 0.25f, 1e-4f); // the same density block: exact but for rounding
+    for (size_t i = 0; i < photons.size(); ++i) {
+        if (i == caustic) continue;
+        ASSERT_EQ(focused.photons[i].power.w, diffuse.photons[i].power.w) << i;
+    }
 }
 
 // The distance to the nearest line any of photon i's rays found (0 when none did).

@@ -323,22 +323,50 @@ double computeOracleFresnel(double cosI, double eta) {
     return 0.5 * (rs * rs + rp * rp);
 }
 
-// The first bounce by its statement (DESIGN.md): Russian roulette on the mean reflectance of the
-// diffuse, specular and transmissive lobes in that order with u, then the lobe's direction from
-// (u1, u2): cosine-weighted; the normalised Phong lobe around the mirror direction (absorbed
-// below the surface; weight rho_s (e + 2) / (e + 1) cos(out) / p_s); Fresnel reflection or
-// refraction by u1. The weight is divided by the lobe's probability.
+// Schlick's weight (1 - cos)^5 of the material's Fresnel split (docs/scene-format.md): 0 on a
+// material without specular.
+double computeOracleSchlick(double cosTheta, const glm::dvec4& specular) {
+    if (glm::dvec3(specular) == glm::dvec3(0.0)) return 0.0;
+    return std::pow(1.0 - std::clamp(cosTheta, 0.0, 1.0), 5.0);
+}
+
+// The lobes' reflectances for a photon arriving at cos(theta): diffuse rho_d (1 - g), specular
+// rho_s + rho_d g.
+glm::dvec3 computeOracleDiffuseAlbedo(const glm::dvec3& diffuse, const glm::dvec4& specular,
+                                      double cosTheta) {
+    return diffuse * (1.0 - computeOracleSchlick(cosTheta, specular));
+}
+glm::dvec3 computeOracleSpecularAlbedo(const glm::dvec3& diffuse, const glm::dvec4& specular,
+                                       double cosTheta) {
+    return glm::dvec3(specular) + diffuse * computeOracleSchlick(cosTheta, specular);
+}
+
+// The first bounce by its statement (DESIGN.md, docs/scene-format.md): Russian roulette on the
+// mean reflectance of the diffuse, specular and transmissive lobes at the photon's incidence in
+// that order with u, then the lobe's direction from (u1, u2): cosine-weighted (weight: the
+// coupled lobe 21/20 rho_d (1 - g_in)(1 - g_out) / p_d, or rho_d / p_d without specular); the
+// normalised Phong lobe around the mirror direction (absorbed below the surface; weight
+// rho_s(h) (e + 2) / (e + 1) cos(out) / p_s, rho_s(h) the specular reflectance at the half
+// vector's angle); Fresnel reflection or refraction by u1. The weight is divided by the lobe's
+// probability.
 uint32_t scatterOracle(glm::dvec3& dir, glm::dvec3& power, const glm::dvec3& n,
                        const glm::dvec3& diffuse, const glm::dvec4& specular,
                        const glm::dvec4& transmissive, bool entering,
                        const std::array<double, 3>& numbers) {
-    const double pd = computeOracleMean(diffuse);
-    const double ps = computeOracleMean(glm::dvec3(specular));
+    constexpr double kCoupledScale = 21.0 / 20.0;
+    const double cosIn = std::clamp(-glm::dot(dir, n), 0.0, 1.0);
+    const double pd = computeOracleMean(computeOracleDiffuseAlbedo(diffuse, specular, cosIn));
+    const double ps = computeOracleMean(computeOracleSpecularAlbedo(diffuse, specular, cosIn));
     const double pt = computeOracleMean(glm::dvec3(transmissive));
     const auto [u, u1, u2] = numbers;
     if (u < pd) {
         dir = makeOracleDirection(n, std::sqrt(std::max(0.0, 1.0 - u1)), u2);
-        power *= diffuse / pd;
+        if (glm::dvec3(specular) == glm::dvec3(0.0)) {
+            power *= diffuse / pd;
+        } else {
+            power *= diffuse * (kCoupledScale * (1.0 - computeOracleSchlick(cosIn, specular)) *
+                                (1.0 - computeOracleSchlick(glm::dot(dir, n), specular)) / pd);
+        }
         return gpu::kScatterDiffuse;
     }
     if (u < pd + ps) {
@@ -347,7 +375,9 @@ uint32_t scatterOracle(glm::dvec3& dir, glm::dvec3& power, const glm::dvec3& n,
             makeOracleDirection(glm::reflect(dir, n), std::pow(u1, 1.0 / (e + 1.0)), u2);
         const double cosOut = glm::dot(out, n);
         if (cosOut <= 0.0) return gpu::kScatterAbsorbed;
-        power *= glm::dvec3(specular) / ps * ((e + 2.0) / (e + 1.0) * cosOut);
+        const glm::dvec3 half = glm::normalize(out - dir);
+        const glm::dvec3 rhoS = computeOracleSpecularAlbedo(diffuse, specular, glm::dot(out, half));
+        power *= rhoS / ps * ((e + 2.0) / (e + 1.0) * cosOut);
         dir = out;
         return gpu::kScatterSpecular;
     }
@@ -442,8 +472,9 @@ bool isScatterMarginal(const glm::dvec3& dir, const glm::dvec3& n, const glm::dv
                        const glm::dvec4& specular, const glm::dvec4& transmissive, bool entering,
                        const std::array<double, 3>& numbers) {
     const auto [u, u1, u2] = numbers;
-    const double pd = computeOracleMean(diffuse);
-    const double ps = computeOracleMean(glm::dvec3(specular));
+    const double cosIn = std::clamp(-glm::dot(dir, n), 0.0, 1.0);
+    const double pd = computeOracleMean(computeOracleDiffuseAlbedo(diffuse, specular, cosIn));
+    const double ps = computeOracleMean(computeOracleSpecularAlbedo(diffuse, specular, cosIn));
     const double pt = computeOracleMean(glm::dvec3(transmissive));
     for (double threshold : {pd, pd + ps, pd + ps + pt}) {
         if (std::abs(u - threshold) < kMarginalGap) return true;

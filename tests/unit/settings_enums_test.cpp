@@ -2,6 +2,7 @@
 // against (shared/*.h): a choice added or moved in one place and not the other fails here.
 #include "scene/settings.h"
 
+#include <shared/light_trace_data.h>
 #include <shared/photon_data.h>
 #include <shared/photon_scatter.h>
 #include <shared/scene_data.h>
@@ -35,6 +36,8 @@ TEST(SettingsEnums, ChoicesMatchTheShaderConstants) {
     expectChoices("rng", {{"fixed", gpu::kRngFixed},
                           {"per_frame", gpu::kRngPerFrame},
                           {"object_space", gpu::kRngObjectSpace}});
+    expectChoices("reference_method",
+                  {{"path", gpu::kReferencePath}, {"light", gpu::kReferenceLight}});
     expectChoices("tonemap", {{"thesis", gpu::kTonemapThesis},
                               {"filmic", gpu::kTonemapFilmic},
                               {"linear", gpu::kTonemapLinear}});
