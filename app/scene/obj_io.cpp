@@ -6,6 +6,9 @@
 #include "core/input_error.h"
 #include "core/strings.h"
 #include "scene/mesh_builder.h"
+#include "scene/scene_texture.h"
+
+#include <stb_image_write.h>
 
 #include <tiny_obj_loader.h>
 
@@ -18,6 +21,7 @@
 #include <fstream>
 #include <stdexcept>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 namespace ispm {
@@ -95,6 +99,21 @@ void appendVec3(std::string& out, const char* keyword, const glm::vec3& v) {
         appendFloat(out, v[i]);
     }
     out += '\n';
+}
+
+// A texture as PNG bytes (8-bit RGBA, its sRGB codes as they are).
+std::string encodePng(const SceneTexture& texture) {
+    constexpr int kRgbaChannels = 4;
+    std::string out;
+    const auto append = [](void* context, void* data, int size) {
+        static_cast<std::string*>(context)->append(static_cast<const char*>(data),
+                                                   static_cast<size_t>(size));
+    };
+    if (stbi_write_png_to_func(append, &out, texture.width, texture.height, kRgbaChannels,
+                               texture.rgba.data(), texture.width * kRgbaChannels) == 0) {
+        throw std::runtime_error(strCat("cannot encode texture '", texture.name, "' as PNG"));
+    }
+    return out;
 }
 
 // Whole-line checks of the numbers tinyobjloader reads: it turns a token it cannot read ("nan",
@@ -185,30 +204,67 @@ ObjModel importObj(const std::string& objPath) {
     }
     ObjModel model;
     model.warnings = reader.Warning();
+    const std::filesystem::path folder = std::filesystem::path(objPath).parent_path();
     for (const tinyobj::material_t& m : reader.GetMaterials()) {
         model.materials.push_back(convertMaterial(m));
+        if (!m.diffuse_texname.empty()) {
+            const std::filesystem::path texturePath = folder / m.diffuse_texname;
+            try {
+                model.textures.push_back(readTextureFile(texturePath.string()));
+            } catch (const std::runtime_error& e) {
+                throw std::runtime_error(strCat("material '", m.name, "': map_Kd '",
+                                                texturePath.string(), "': ", e.what()));
+            }
+            model.materials.back().diffuseTexture =
+                static_cast<uint32_t>(model.textures.size() - 1);
+        }
     }
+    const std::vector<tinyobj::real_t>& uvs = reader.GetAttrib().texcoords;
+    const size_t uvCount = uvs.size() / 2;
 
     const std::vector<tinyobj::real_t>& vertices = reader.GetAttrib().vertices;
     const size_t vertexCount = vertices.size() / 3;
     std::vector<uint32_t> remap(vertexCount, kUnmapped);
+    // Corners of textured faces: one vertex per (position, vt) pair, keyed position << 32 | vt.
+    std::unordered_map<uint64_t, uint32_t> texturedRemap;
     Mesh& mesh = model.mesh;
     mesh.name = std::filesystem::path(objPath).stem().string();
-    const auto useVertex = [&](int index) -> uint32_t {
+    const auto addPosition = [&](size_t i) {
+        const glm::vec3 p = toVec3(&vertices[3 * i]);
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+            throw std::runtime_error(strCat("vertex ", i + 1, " is not finite"));
+        }
+        mesh.positions.push_back(p);
+        if (!mesh.texcoords.empty()) mesh.texcoords.emplace_back(0.0f);
+        return static_cast<uint32_t>(mesh.positions.size() - 1);
+    };
+    const auto useVertex = [&](const tinyobj::index_t& corner, bool textured) -> uint32_t {
+        const int index = corner.vertex_index;
         if (index < 0 || static_cast<size_t>(index) >= vertexCount) {
             throw std::runtime_error(
                 strCat("face refers to vertex ", index + 1, " of ", vertexCount));
         }
         const auto i = static_cast<size_t>(index);
-        if (remap[i] == kUnmapped) {
-            const glm::vec3 p = toVec3(&vertices[3 * i]);
-            if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
-                throw std::runtime_error(strCat("vertex ", i + 1, " is not finite"));
-            }
-            remap[i] = static_cast<uint32_t>(mesh.positions.size());
-            mesh.positions.push_back(p);
+        if (!textured) {
+            if (remap[i] == kUnmapped) remap[i] = addPosition(i);
+            return remap[i];
         }
-        return remap[i];
+        const int uv = corner.texcoord_index;
+        if (uv < 0 || static_cast<size_t>(uv) >= uvCount) {
+            throw std::runtime_error(strCat("a face of a map_Kd material needs vt coordinates; "
+                                            "it refers to vt ",
+                                            uv + 1, " of ", uvCount));
+        }
+        const uint64_t key = (uint64_t(i) << 32) | uint64_t(uv);
+        const auto found = texturedRemap.find(key);
+        if (found != texturedRemap.end()) return found->second;
+        const uint32_t v = addPosition(i);
+        mesh.texcoords.resize(mesh.positions.size()); // earlier untextured vertices: (0, 0)
+        const auto u = static_cast<size_t>(uv);
+        // OBJ's v runs up the image; the scene's runs down from its top row.
+        mesh.texcoords[v] = glm::vec2(uvs[2 * u], 1.0f - uvs[2 * u + 1]);
+        texturedRemap.emplace(key, v);
+        return v;
     };
 
     for (const tinyobj::shape_t& shape : reader.GetShapes()) {
@@ -222,20 +278,22 @@ ObjModel importObj(const std::string& objPath) {
                 offset += corners;
                 continue;
             }
-            const std::array<int, 3> idx = {shapeMesh.indices[offset].vertex_index,
-                                            shapeMesh.indices[offset + 1].vertex_index,
-                                            shapeMesh.indices[offset + 2].vertex_index};
+            const int materialId =
+                face < shapeMesh.material_ids.size() ? shapeMesh.material_ids[face] : -1;
+            const bool hasMaterial =
+                materialId >= 0 && static_cast<size_t>(materialId) < model.materials.size();
+            const bool textured =
+                hasMaterial &&
+                model.materials[static_cast<size_t>(materialId)].diffuseTexture != kNoTexture;
+            const tinyobj::index_t* c = &shapeMesh.indices[offset];
             offset += corners;
-            const glm::uvec3 tri{useVertex(idx[0]), useVertex(idx[1]), useVertex(idx[2])};
+            const glm::uvec3 tri{useVertex(c[0], textured), useVertex(c[1], textured),
+                                 useVertex(c[2], textured)};
             if (isDegenerateTriangle(mesh.positions[tri.x], mesh.positions[tri.y],
                                      mesh.positions[tri.z])) {
                 ++model.droppedDegenerateCount;
                 continue;
             }
-            const int materialId =
-                face < shapeMesh.material_ids.size() ? shapeMesh.material_ids[face] : -1;
-            const bool hasMaterial =
-                materialId >= 0 && static_cast<size_t>(materialId) < model.materials.size();
             mesh.triangles.push_back(tri);
             mesh.triangleMaterials.push_back(hasMaterial ? static_cast<uint32_t>(materialId)
                                                          : kNoObjMaterial);
@@ -257,6 +315,14 @@ void exportObj(const Scene& scene, const std::string& objPath) {
     std::filesystem::path mtlPath = path;
     mtlPath.replace_extension(".mtl");
 
+    // Textures as PNG files beside the OBJ, named after it.
+    std::vector<std::string> textureFiles;
+    std::vector<std::string> textureBytes;
+    for (size_t i = 0; i < scene.textures.size(); ++i) {
+        textureFiles.push_back(strCat(path.stem().string(), "_texture", i, ".png"));
+        textureBytes.push_back(encodePng(scene.textures[i]));
+    }
+
     std::vector<std::string> names;
     std::string mtl = "# ispm scene materials\n";
     for (size_t i = 0; i < scene.materials.size(); ++i) {
@@ -268,6 +334,9 @@ void exportObj(const Scene& scene, const std::string& objPath) {
         const bool isTransmissive = m.transmissive != glm::vec3(0.0f);
         mtl += "\nnewmtl " + names.back() + "\n";
         appendVec3(mtl, "Kd", m.diffuse);
+        if (m.diffuseTexture != kNoTexture) {
+            mtl += "map_Kd " + textureFiles.at(m.diffuseTexture) + "\n";
+        }
         appendVec3(mtl, "Ks", m.specular);
         mtl += "Ns ";
         appendFloat(mtl, m.phongExponent);
@@ -282,6 +351,7 @@ void exportObj(const Scene& scene, const std::string& objPath) {
     std::string obj = strCat("# ispm scene, world-space triangles (metres)\nmtllib ",
                              mtlPath.filename().string(), "\n");
     size_t vertexBase = 1; // OBJ indices are 1-based and global over the file
+    size_t texcoordBase = 1;
     for (size_t i = 0; i < scene.instances.size(); ++i) {
         const Instance& instance = scene.instances[i];
         const Mesh& mesh = scene.meshes.at(instance.meshIndex);
@@ -289,6 +359,18 @@ void exportObj(const Scene& scene, const std::string& objPath) {
         for (const glm::vec3& p : mesh.positions) {
             appendVec3(obj, "v", glm::vec3(instance.worldFromObject * glm::vec4(p, 1.0f)));
         }
+        const bool hasTexcoords = !mesh.texcoords.empty();
+        for (const glm::vec2& uv : mesh.texcoords) {
+            obj += "vt ";
+            appendFloat(obj, uv.x);
+            obj += ' ';
+            appendFloat(obj, 1.0f - uv.y); // OBJ's v runs up the image
+            obj += '\n';
+        }
+        const auto corner = [&](uint32_t v) {
+            return hasTexcoords ? strCat(vertexBase + v, "/", texcoordBase + v)
+                                : strCat(vertexBase + v);
+        };
         uint32_t currentMaterial = kUnmapped;
         for (size_t t = 0; t < mesh.triangles.size(); ++t) {
             const uint32_t material = mesh.triangleMaterials.at(t);
@@ -297,13 +379,18 @@ void exportObj(const Scene& scene, const std::string& objPath) {
                 currentMaterial = material;
             }
             const glm::uvec3& tri = mesh.triangles[t];
-            obj += strCat("f ", vertexBase + tri.x, " ", vertexBase + tri.y, " ",
-                          vertexBase + tri.z, "\n");
+            obj += strCat("f ", corner(tri.x), " ", corner(tri.y), " ", corner(tri.z), "\n");
         }
         vertexBase += mesh.positions.size();
+        texcoordBase += mesh.texcoords.size();
     }
-    // Both land or neither: no cut OBJ, no MTL without its OBJ.
-    writeFilesWhole({{mtlPath.string(), mtl}, {path.string(), obj}});
+    // All land or none: no cut OBJ, no MTL without its OBJ.
+    std::vector<std::pair<std::string, std::string_view>> files;
+    for (size_t i = 0; i < textureFiles.size(); ++i)
+        files.emplace_back((path.parent_path() / textureFiles[i]).string(), textureBytes[i]);
+    files.emplace_back(mtlPath.string(), mtl);
+    files.emplace_back(path.string(), obj);
+    writeFilesWhole(files);
 }
 
 } // namespace ispm
