@@ -13,11 +13,11 @@ class GBufferPass final : public Pass {
     const char* getName() const override { return "gbuffer"; }
     void resize(int width, int height) override;
     void execute(const FrameInputs& inputs) override;
-    void reloadPrograms(ShaderReloadReport& report) override { mProgram.reloadIfChanged(report); }
+    void reloadPrograms(ShaderReloadReport& report) override { mPrograms.reloadIfChanged(report); }
     const GBuffer& getGBuffer() const { return mGBuffer; }
 
   private:
-    ReloadableProgram mProgram;
+    GBufferPrograms mPrograms;
     ParamBlocks<gpu::GBufferParams> mParams;
     gl::VertexArray mVertexArray;
     GBuffer mGBuffer;
@@ -33,11 +33,11 @@ class LightViewPass final : public Pass {
     LightViewPass();
     const char* getName() const override { return "light_views"; }
     void execute(const FrameInputs& inputs) override;
-    void reloadPrograms(ShaderReloadReport& report) override { mProgram.reloadIfChanged(report); }
+    void reloadPrograms(ShaderReloadReport& report) override { mPrograms.reloadIfChanged(report); }
     const GBuffer& getGBuffer() const { return mGBuffer; }
 
   private:
-    ReloadableProgram mProgram;
+    GBufferPrograms mPrograms;
     ParamBlocks<gpu::GBufferParams> mParams;
     gl::VertexArray mVertexArray;
     GBuffer mGBuffer;
