@@ -16,6 +16,7 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <numbers>
 #include <numeric>
 #include <optional>
 
@@ -24,7 +25,6 @@ namespace ispm {
 namespace {
 
 constexpr size_t kMatrixElements = 16;
-constexpr double kMaxFovYRad = 3.14159; // just under pi: a pinhole sees less than a half space
 // |det| of a node's 3x3 part below this fraction of its columns' length product: singular.
 constexpr float kMinRelativeDeterminant = 1e-9f;
 
@@ -195,7 +195,9 @@ void GltfImporter::addCamera(int index, const glm::mat4& worldFromNode, const ti
     if (in.type != "perspective") return; // ispm's cameras are pinholes (documented)
     const std::string at = strCat("/cameras/", index, "/perspective");
     const tinygltf::PerspectiveCamera& p = in.perspective;
-    if (!(p.yfov > 0.0 && p.yfov < kMaxFovYRad)) file.fail(at + "/yfov", "an angle in (0, pi)");
+    // A pinhole sees less than a half space: (0, pi) exclusive.
+    if (!(p.yfov > 0.0 && p.yfov < std::numbers::pi))
+        file.fail(at + "/yfov", "an angle in (0, pi)");
     if (!(p.znear > 0.0)) file.fail(at + "/znear", "a distance > 0");
     if (!(p.zfar == 0.0 || p.zfar > p.znear)) file.fail(at + "/zfar", "0 (infinite) or > znear");
     Camera camera;

@@ -192,7 +192,8 @@ void writeCheckerRoomGltf(const std::string& path, const CheckerRoom& room) {
     model.defaultScene = 0;
     model.extensionsUsed.push_back("KHR_lights_punctual");
     tinygltf::TinyGLTF writer;
-    if (!writer.WriteGltfSceneToFile(&model, path, true, true, true, false)) {
+    const bool binary = path.size() > 4 && path.substr(path.size() - 4) == ".glb";
+    if (!writer.WriteGltfSceneToFile(&model, path, true, true, !binary, binary)) {
         throw std::runtime_error("tinygltf could not write " + path);
     }
 }

@@ -28,7 +28,8 @@ struct CheckerRoom {
     float cameraYFovRad = 1.2f;
 };
 
-// Writes the room as a .gltf with embedded buffers and image (data URIs).
+// Writes the room as a .gltf with embedded buffers and image (data URIs), or as a binary .glb
+// when the path ends in .glb.
 void writeCheckerRoomGltf(const std::string& path, const CheckerRoom& room);
 
 // Linear colour of the checker square (i, j) (i along +x, j along +z), sRGB decoded.

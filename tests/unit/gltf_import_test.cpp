@@ -101,6 +101,23 @@ TEST(GltfImport, ReadsMeshesTextureLightAndCamera) {
     EXPECT_EQ(scene.namedCameras[0].first, "eye");
 }
 
+TEST(GltfImport, BinaryGlbReadsAsTheTextFile) {
+    ScratchDir dir;
+    writeCheckerRoomGltf(dir.getPath("room.gltf"), CheckerRoom{});
+    writeCheckerRoomGltf(dir.getPath("room.glb"), CheckerRoom{});
+    const Scene text = loadScene(dir.getPath("room.gltf"));
+    const Scene binary = loadScene(dir.getPath("room.glb"));
+    ASSERT_EQ(binary.meshes.size(), text.meshes.size());
+    for (size_t i = 0; i < text.meshes.size(); ++i) {
+        EXPECT_EQ(binary.meshes[i].positions, text.meshes[i].positions);
+        EXPECT_EQ(binary.meshes[i].texcoords, text.meshes[i].texcoords);
+        EXPECT_EQ(binary.meshes[i].triangles, text.meshes[i].triangles);
+    }
+    ASSERT_EQ(binary.textures.size(), 1u);
+    EXPECT_EQ(binary.textures[0].rgba, text.textures[0].rgba);
+    EXPECT_EQ(binary.lights.size(), 1u);
+}
+
 TEST(GltfImport, ObjectInSceneFileIsPlacedByItsTransform) {
     ScratchDir dir;
     writeCheckerRoomGltf(dir.getPath("room.gltf"), CheckerRoom{});
