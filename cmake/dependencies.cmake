@@ -5,6 +5,7 @@ find_package(glm REQUIRED)
 find_package(nlohmann_json 3 REQUIRED)
 find_package(CLI11 REQUIRED)
 find_package(tinyobjloader REQUIRED)
+find_package(TinyGLTF REQUIRED) # libtinygltf-dev: a shared library with stb_image inside
 find_package(tinyexr REQUIRED)
 find_package(Threads REQUIRED)
 pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui)

@@ -137,6 +137,40 @@ Texture Texture::create2DArray(std::string_view label, Format format, int width,
     return t;
 }
 
+Texture Texture::createMipmapped2DArray(std::string_view label, Format format, int width,
+                                        int height, int layers, int levels) {
+    assert(width > 0 && height > 0 && layers > 0 && levels > 0);
+    Texture t;
+    GLuint id = 0;
+    glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &id);
+    t.mHandle = Handle<deleteTexture>(id);
+    glTextureStorage3D(id, levels, static_cast<GLenum>(format), width, height, layers);
+    glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    t.mFormat = format;
+    t.mWidth = width;
+    t.mHeight = height;
+    t.mLayers = layers;
+    t.mIsArray = true;
+    setLabel(GL_TEXTURE, id, label);
+    return t;
+}
+
+void Texture::uploadRgba8(std::span<const uint8_t> texels, int layer) {
+    [[maybe_unused]] constexpr size_t kRgbaBytes = 4;
+    assert(mIsArray);
+    assert(texels.size() ==
+           static_cast<size_t>(mWidth) * static_cast<size_t>(mHeight) * kRgbaBytes);
+    glTextureSubImage3D(getId(), 0, 0, 0, layer, mWidth, mHeight, 1, GL_RGBA, GL_UNSIGNED_BYTE,
+                        texels.data());
+}
+
+void Texture::generateMipmaps() const {
+    glGenerateTextureMipmap(getId());
+}
+
 std::vector<glm::vec4> Texture::readRgba(int layer) const {
     assert(!isDepthFormat(mFormat));
     std::vector<glm::vec4> texels(static_cast<size_t>(mWidth) * static_cast<size_t>(mHeight));

@@ -19,6 +19,7 @@ enum class Format : GLenum {
     RGBA32F = GL_RGBA32F,
     RGBA16F = GL_RGBA16F,
     RGBA8 = GL_RGBA8,
+    SRGB8A8 = GL_SRGB8_ALPHA8, // colour textures: sampling decodes sRGB to linear
     RG32F = GL_RG32F,
     RG16F = GL_RG16F,
     R32F = GL_R32F,
@@ -84,11 +85,17 @@ class Texture {
     // Layers of one size: the faces of a point light, for instance.
     static Texture create2DArray(std::string_view label, Format format, int width, int height,
                                  int layers);
+    // A mipmapped, repeating, trilinear 2D array (colour textures): `levels` down to 1x1 at most.
+    static Texture createMipmapped2DArray(std::string_view label, Format format, int width,
+                                          int height, int layers, int levels);
 
     // Reads one level-0 layer (or the whole 2D texture) as RGBA floats, row 0 at the bottom.
     std::vector<glm::vec4> readRgba(int layer = 0) const;
     std::vector<float> readDepth(int layer = 0) const;
     void uploadRgba(std::span<const glm::vec4> texels, int layer = 0);
+    // 8-bit RGBA texels of level 0, row 0 first (as an image file's top row; a texture's t = 0).
+    void uploadRgba8(std::span<const uint8_t> texels, int layer);
+    void generateMipmaps() const; // levels 1.. from level 0
     void clear(const glm::vec4& value);
     // Copies level 0 of `source` (same size and format; 2D) into this texture on the GPU.
     void copyFrom(const Texture& source) const; // GPU contents only: the object is unchanged

@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(cmake g++ make pkg-config python3-glad libglfw3-dev libglm-dev libimgui-dev libegl-dev
           libegl1-mesa-dev libgl1-mesa-dri libosmesa6-dev libstb-dev libtinyobjloader-dev
-          nlohmann-json3-dev libcli11-dev libgtest-dev libtinyexr-dev)
+          nlohmann-json3-dev libcli11-dev libgtest-dev libtinyexr-dev libtinygltf-dev)
 if [[ "${1:-}" == "--test" ]]; then
     packages+=(xvfb xauth python3-matplotlib clang-format)
 fi

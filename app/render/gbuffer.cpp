@@ -147,11 +147,30 @@ void drawSceneGBuffer(const gl::Program& program, const GpuScene& scene,
     }
 }
 
-ReloadableProgram buildGBufferProgram() {
-    return ReloadableProgram({.label = "gbuffer",
+namespace {
+
+ReloadableProgram buildGBufferProgram(bool textured) {
+    std::vector<std::string> defines = getGBufferDefines();
+    defines.push_back(textured ? "GBUFFER_TEXTURES 1" : "GBUFFER_TEXTURES 0");
+    return ReloadableProgram({.label = textured ? "gbuffer textured" : "gbuffer",
                               .stages = {{gl::ShaderStage::Vertex, "gbuffer/gbuffer.vert"},
                                          {gl::ShaderStage::Fragment, "gbuffer/gbuffer.frag"}},
-                              .defines = getGBufferDefines()});
+                              .defines = defines});
+}
+
+} // namespace
+
+GBufferPrograms::GBufferPrograms() : mPlain(buildGBufferProgram(false)) {}
+
+const gl::Program& GBufferPrograms::get(bool textured) {
+    if (!textured) return mPlain.get();
+    if (!mTextured) mTextured = buildGBufferProgram(true);
+    return mTextured->get();
+}
+
+void GBufferPrograms::reloadIfChanged(ShaderReloadReport& report) {
+    mPlain.reloadIfChanged(report);
+    if (mTextured) mTextured->reloadIfChanged(report);
 }
 
 } // namespace ispm

@@ -9,6 +9,7 @@
 
 #include <shared/scene_data.h>
 
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -78,6 +79,18 @@ void appendGBufferParams(std::vector<gpu::GBufferParams>& blocks, const GpuScene
 void drawSceneGBuffer(const gl::Program& program, const GpuScene& scene,
                       const ParamBlocks<gpu::GBufferParams>& blocks, size_t first);
 
-ReloadableProgram buildGBufferProgram();
+// The G-buffer program in two variants: without textures (GBUFFER_TEXTURES 0: no texture
+// coordinates fetched or interpolated, as fast as before textures existed) and with them, built
+// when a scene with textures is first drawn.
+class GBufferPrograms {
+  public:
+    GBufferPrograms();
+    const gl::Program& get(bool textured);
+    void reloadIfChanged(ShaderReloadReport& report);
+
+  private:
+    ReloadableProgram mPlain;
+    std::optional<ReloadableProgram> mTextured;
+};
 
 } // namespace ispm

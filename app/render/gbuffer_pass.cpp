@@ -8,8 +8,7 @@
 
 namespace ispm {
 
-GBufferPass::GBufferPass()
-    : mProgram(buildGBufferProgram()), mParams("gbuffer parameters"), mVertexArray("gbuffer vao") {}
+GBufferPass::GBufferPass() : mParams("gbuffer parameters"), mVertexArray("gbuffer vao") {}
 
 void GBufferPass::resize(int width, int height) {
     if (mGBuffer.getWidth() != width || mGBuffer.getHeight() != height) {
@@ -36,12 +35,10 @@ void GBufferPass::execute(const FrameInputs& inputs) {
                         glm::vec4(inputs.cameraPosition, 1.0f), previous,
                         glm::vec2(inputs.width, inputs.height), jitterMotion);
     mParams.upload(blocks);
-    drawSceneGBuffer(mProgram.get(), inputs.scene, mParams, 0);
+    drawSceneGBuffer(mPrograms.get(inputs.scene.hasTextures()), inputs.scene, mParams, 0);
 }
 
-LightViewPass::LightViewPass()
-    : mProgram(buildGBufferProgram()), mParams("light view parameters"),
-      mVertexArray("light view vao") {}
+LightViewPass::LightViewPass() : mParams("light view parameters"), mVertexArray("light view vao") {}
 
 void LightViewPass::execute(const FrameInputs& inputs) {
     executeViews(inputs, 0, getViewCount(inputs));
@@ -69,7 +66,7 @@ void LightViewPass::executeViews(const FrameInputs& inputs, size_t firstView, si
         } else {
             mGBuffer.bindTarget(layer);
         }
-        drawSceneGBuffer(mProgram.get(), inputs.scene, mParams,
+        drawSceneGBuffer(mPrograms.get(inputs.scene.hasTextures()), inputs.scene, mParams,
                          i * inputs.scene.getInstanceCount());
     }
 }

@@ -13,16 +13,11 @@ class GBufferPass final : public Pass {
     const char* getName() const override { return "gbuffer"; }
     void resize(int width, int height) override;
     void execute(const FrameInputs& inputs) override;
-    // The light cameras (layers) this frame draws, and views [firstView, firstView + viewCount)
-    // of them alone (a frame drawn in slices); execute() draws them all.
-    static size_t getViewCount(const FrameInputs& inputs);
-    void executeViews(const FrameInputs& inputs, size_t firstView, size_t viewCount);
-    void reloadPrograms(ShaderReloadReport& report) override { mProgram.reloadIfChanged(report); }
+    void reloadPrograms(ShaderReloadReport& report) override { mPrograms.reloadIfChanged(report); }
     const GBuffer& getGBuffer() const { return mGBuffer; }
 
   private:
-    void prepare(const FrameInputs& inputs); // the G-buffer's size, every view's blocks
-    ReloadableProgram mProgram;
+    GBufferPrograms mPrograms;
     ParamBlocks<gpu::GBufferParams> mParams;
     gl::VertexArray mVertexArray;
     GBuffer mGBuffer;
@@ -42,12 +37,12 @@ class LightViewPass final : public Pass {
     // of them alone (a frame drawn in slices); execute() draws them all.
     static size_t getViewCount(const FrameInputs& inputs);
     void executeViews(const FrameInputs& inputs, size_t firstView, size_t viewCount);
-    void reloadPrograms(ShaderReloadReport& report) override { mProgram.reloadIfChanged(report); }
+    void reloadPrograms(ShaderReloadReport& report) override { mPrograms.reloadIfChanged(report); }
     const GBuffer& getGBuffer() const { return mGBuffer; }
 
   private:
     void prepare(const FrameInputs& inputs); // the G-buffer's size, every view's blocks
-    ReloadableProgram mProgram;
+    GBufferPrograms mPrograms;
     ParamBlocks<gpu::GBufferParams> mParams;
     gl::VertexArray mVertexArray;
     GBuffer mGBuffer;

@@ -1,6 +1,8 @@
 // Flattening of the scene model into GPU buffers.
 #include "render/gpu_scene.h"
 
+#include "render/scene_texture_array.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -82,11 +84,14 @@ float computeRayEpsilon(const Aabb& bounds, const std::vector<Aabb>& parts) {
 
 GpuScene::GpuScene(const Scene& scene, int lightResolution) : mLightResolution(lightResolution) {
     std::vector<glm::vec4> positions;
+    std::vector<glm::vec2> texcoords; // one per position; zero for meshes without textures
     std::vector<glm::uvec4> triangles;
     for (const Mesh& mesh : scene.meshes) {
         const auto base = static_cast<uint32_t>(positions.size());
         for (const glm::vec3& p : mesh.positions)
             positions.emplace_back(p, 1.0f);
+        texcoords.insert(texcoords.end(), mesh.texcoords.begin(), mesh.texcoords.end());
+        texcoords.resize(positions.size());
         for (size_t t = 0; t < mesh.triangles.size(); ++t) {
             const glm::uvec3 tri = mesh.triangles[t] + base;
             triangles.emplace_back(tri, mesh.triangleMaterials[t]);
@@ -94,12 +99,18 @@ GpuScene::GpuScene(const Scene& scene, int lightResolution) : mLightResolution(l
     }
     std::vector<gpu::GpuMaterial> materials;
     for (const Material& m : scene.materials) {
-        materials.push_back({glm::vec4(m.diffuse, 0.0f), glm::vec4(m.specular, m.phongExponent),
+        // diffuse.w: the texture's layer + 1, or 0 (shaders/shared/scene_data.h).
+        const float layer = m.diffuseTexture == kNoTexture ? 0.0f : float(m.diffuseTexture) + 1.0f;
+        materials.push_back({glm::vec4(m.diffuse, layer), glm::vec4(m.specular, m.phongExponent),
                              glm::vec4(m.transmissive, m.ior), glm::vec4(m.emission, 0.0f)});
     }
     mPositions = gl::Buffer::fromSpan<glm::vec4>("scene positions", positions);
     mTriangles = gl::Buffer::fromSpan<glm::uvec4>("scene triangles", triangles);
     mMaterials = gl::Buffer::fromSpan<gpu::GpuMaterial>("scene materials", materials);
+    mTexcoords = gl::Buffer::fromSpan<glm::vec2>("scene texture coordinates", texcoords);
+    mTextures = buildSceneTextureArray(scene.textures);
+    mHasTextures = std::any_of(scene.materials.begin(), scene.materials.end(),
+                               [](const Material& m) { return m.diffuseTexture != kNoTexture; });
     mBvh = buildSceneBvh(scene);
     mBlasNodes = gl::Buffer::fromSpan<gpu::GpuBvhNode>("bvh bottom-level nodes", mBvh.blasNodes);
     mBlasOrder = gl::Buffer::fromSpan<uint32_t>("bvh triangle order", mBvh.blasTriangleOrder);
@@ -242,6 +253,8 @@ void GpuScene::bind() const {
     mInstanceBuffer.bindBase(BufferTarget::Storage, gpu::kBindingInstances);
     mPreviousTransforms.bindBase(BufferTarget::Storage, gpu::kBindingPreviousTransforms);
     mMaterials.bindBase(BufferTarget::Storage, gpu::kBindingMaterials);
+    mTexcoords.bindBase(BufferTarget::Storage, gpu::kBindingTexcoords);
+    mTextures.bindUnit(gpu::kUnitSceneTextures);
     mLights.bindBase(BufferTarget::Storage, gpu::kBindingLights);
     mLightViews.bindBase(BufferTarget::Storage, gpu::kBindingLightViews);
     mBlasNodes.bindBase(BufferTarget::Storage, gpu::kBindingBlasNodes);
@@ -254,7 +267,14 @@ size_t GpuScene::getGpuBytes() const {
     return mPositions.getSize() + mTriangles.getSize() + mInstanceBuffer.getSize() +
            mPreviousTransforms.getSize() + mMaterials.getSize() + mLights.getSize() +
            mLightViews.getSize() + mBlasNodes.getSize() + mBlasOrder.getSize() +
-           mTlasNodes.getSize() + mTlasOrder.getSize();
+           mTlasNodes.getSize() + mTlasOrder.getSize() + mTexcoords.getSize() + getTextureBytes();
+}
+
+size_t GpuScene::getTextureBytes() const {
+    constexpr double kRgbaBytes = 4.0;
+    constexpr double kMipChainFactor = 4.0 / 3.0; // 1 + 1/4 + 1/16 + ...
+    return static_cast<size_t>(double(mTextures.getWidth()) * double(mTextures.getHeight()) *
+                               double(mTextures.getLayers()) * kRgbaBytes * kMipChainFactor);
 }
 
 } // namespace ispm

@@ -23,6 +23,8 @@ class GpuScene {
     void updateDynamic(const Scene& scene);
 
     void bind() const; // binds every buffer (scene and BVH) to its kBinding* point
+    // Whether any material has a texture (the G-buffer then draws with its textured variant).
+    bool hasTextures() const { return mHasTextures; }
 
     // The instances' transforms of the frame drawn last (kBindingPreviousTransforms), which
     // reproject its pixels onto objects that moved since: FrameRunner keeps them after each
@@ -61,6 +63,7 @@ class GpuScene {
     float getRayEpsilon() const { return mRayEpsilon; }
 
   private:
+    size_t getTextureBytes() const; // the texture array with its mipmaps
     void uploadLights(const Scene& scene);
     void uploadLightViews();
     void uploadTopLevel();
@@ -86,6 +89,9 @@ class GpuScene {
     gl::Buffer mInstanceBuffer;
     gl::Buffer mPreviousTransforms;
     gl::Buffer mMaterials;
+    gl::Buffer mTexcoords; // kBindingTexcoords
+    gl::Texture mTextures;
+    bool mHasTextures = false; // kUnitSceneTextures (scene_texture_array.h)
     gl::Buffer mLights;
     gl::Buffer mLightViews;
     BvhScene mBvh;

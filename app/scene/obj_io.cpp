@@ -1,11 +1,10 @@
-// OBJ import through tinyobjloader and OBJ + MTL export. Numbers are written with std::to_chars:
-// shortest round-trip form, independent of the C++ locale.
+// OBJ import through tinyobjloader, with whole-line checks of the numbers it reads and map_Kd
+// textures (export: obj_export.cpp).
 #include "scene/obj_io.h"
 
-#include "core/file_write.h"
-#include "core/input_error.h"
 #include "core/strings.h"
 #include "scene/mesh_builder.h"
+#include "scene/scene_texture.h"
 
 #include <tiny_obj_loader.h>
 
@@ -18,6 +17,7 @@
 #include <fstream>
 #include <stdexcept>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 namespace ispm {
@@ -31,8 +31,6 @@ constexpr uint32_t kUnmapped = 0xffffffffu;
 bool isRefractingIllum(int illum) {
     return illum == 4 || illum == 6 || illum == 7 || illum == 9;
 }
-constexpr int kIllumHighlight = 2;      // Phong: diffuse + specular highlight
-constexpr int kIllumRefractFresnel = 7; // what we write for transmissive materials
 
 glm::vec3 toVec3(const tinyobj::real_t* v) {
     return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])};
@@ -69,32 +67,6 @@ Material convertMaterial(const tinyobj::material_t& m) {
         throw std::runtime_error(strCat("material '", m.name, "': Ns or Ni is not finite"));
     }
     return material;
-}
-
-std::string sanitizeName(const std::string& name, const char* fallbackPrefix, size_t index) {
-    if (name.empty()) return strCat(fallbackPrefix, index);
-    std::string out = name;
-    for (char& c : out) {
-        if (c == ' ' || c == '\t' || c == '\n' || c == '\r') c = '_';
-    }
-    return out;
-}
-
-// Appends a float in its shortest form that reads back to the same value.
-void appendFloat(std::string& out, float v) {
-    constexpr size_t kMaxFloatChars = 32; // to_chars needs at most ~15 for a float
-    std::array<char, kMaxFloatChars> buffer{};
-    const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), v);
-    out.append(buffer.data(), result.ptr);
-}
-
-void appendVec3(std::string& out, const char* keyword, const glm::vec3& v) {
-    out += keyword;
-    for (int i = 0; i < 3; ++i) {
-        out += ' ';
-        appendFloat(out, v[i]);
-    }
-    out += '\n';
 }
 
 // Whole-line checks of the numbers tinyobjloader reads: it turns a token it cannot read ("nan",
@@ -185,30 +157,67 @@ ObjModel importObj(const std::string& objPath) {
     }
     ObjModel model;
     model.warnings = reader.Warning();
+    const std::filesystem::path folder = std::filesystem::path(objPath).parent_path();
     for (const tinyobj::material_t& m : reader.GetMaterials()) {
         model.materials.push_back(convertMaterial(m));
+        if (!m.diffuse_texname.empty()) {
+            const std::filesystem::path texturePath = folder / m.diffuse_texname;
+            try {
+                model.textures.push_back(readTextureFile(texturePath.string()));
+            } catch (const std::runtime_error& e) {
+                throw std::runtime_error(strCat("material '", m.name, "': map_Kd '",
+                                                texturePath.string(), "': ", e.what()));
+            }
+            model.materials.back().diffuseTexture =
+                static_cast<uint32_t>(model.textures.size() - 1);
+        }
     }
+    const std::vector<tinyobj::real_t>& uvs = reader.GetAttrib().texcoords;
+    const size_t uvCount = uvs.size() / 2;
 
     const std::vector<tinyobj::real_t>& vertices = reader.GetAttrib().vertices;
     const size_t vertexCount = vertices.size() / 3;
     std::vector<uint32_t> remap(vertexCount, kUnmapped);
+    // Corners of textured faces: one vertex per (position, vt) pair, keyed position << 32 | vt.
+    std::unordered_map<uint64_t, uint32_t> texturedRemap;
     Mesh& mesh = model.mesh;
     mesh.name = std::filesystem::path(objPath).stem().string();
-    const auto useVertex = [&](int index) -> uint32_t {
+    const auto addPosition = [&](size_t i) {
+        const glm::vec3 p = toVec3(&vertices[3 * i]);
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+            throw std::runtime_error(strCat("vertex ", i + 1, " is not finite"));
+        }
+        mesh.positions.push_back(p);
+        if (!mesh.texcoords.empty()) mesh.texcoords.emplace_back(0.0f);
+        return static_cast<uint32_t>(mesh.positions.size() - 1);
+    };
+    const auto useVertex = [&](const tinyobj::index_t& corner, bool textured) -> uint32_t {
+        const int index = corner.vertex_index;
         if (index < 0 || static_cast<size_t>(index) >= vertexCount) {
             throw std::runtime_error(
                 strCat("face refers to vertex ", index + 1, " of ", vertexCount));
         }
         const auto i = static_cast<size_t>(index);
-        if (remap[i] == kUnmapped) {
-            const glm::vec3 p = toVec3(&vertices[3 * i]);
-            if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
-                throw std::runtime_error(strCat("vertex ", i + 1, " is not finite"));
-            }
-            remap[i] = static_cast<uint32_t>(mesh.positions.size());
-            mesh.positions.push_back(p);
+        if (!textured) {
+            if (remap[i] == kUnmapped) remap[i] = addPosition(i);
+            return remap[i];
         }
-        return remap[i];
+        const int uv = corner.texcoord_index;
+        if (uv < 0 || static_cast<size_t>(uv) >= uvCount) {
+            throw std::runtime_error(strCat("a face of a map_Kd material needs vt coordinates; "
+                                            "it refers to vt ",
+                                            uv + 1, " of ", uvCount));
+        }
+        const uint64_t key = (uint64_t(i) << 32) | uint64_t(uv);
+        const auto found = texturedRemap.find(key);
+        if (found != texturedRemap.end()) return found->second;
+        const uint32_t v = addPosition(i);
+        mesh.texcoords.resize(mesh.positions.size()); // earlier untextured vertices: (0, 0)
+        const auto u = static_cast<size_t>(uv);
+        // OBJ's v runs up the image; the scene's runs down from its top row.
+        mesh.texcoords[v] = glm::vec2(uvs[2 * u], 1.0f - uvs[2 * u + 1]);
+        texturedRemap.emplace(key, v);
+        return v;
     };
 
     for (const tinyobj::shape_t& shape : reader.GetShapes()) {
@@ -222,88 +231,28 @@ ObjModel importObj(const std::string& objPath) {
                 offset += corners;
                 continue;
             }
-            const std::array<int, 3> idx = {shapeMesh.indices[offset].vertex_index,
-                                            shapeMesh.indices[offset + 1].vertex_index,
-                                            shapeMesh.indices[offset + 2].vertex_index};
+            const int materialId =
+                face < shapeMesh.material_ids.size() ? shapeMesh.material_ids[face] : -1;
+            const bool hasMaterial =
+                materialId >= 0 && static_cast<size_t>(materialId) < model.materials.size();
+            const bool textured =
+                hasMaterial &&
+                model.materials[static_cast<size_t>(materialId)].diffuseTexture != kNoTexture;
+            const tinyobj::index_t* c = &shapeMesh.indices[offset];
             offset += corners;
-            const glm::uvec3 tri{useVertex(idx[0]), useVertex(idx[1]), useVertex(idx[2])};
+            const glm::uvec3 tri{useVertex(c[0], textured), useVertex(c[1], textured),
+                                 useVertex(c[2], textured)};
             if (isDegenerateTriangle(mesh.positions[tri.x], mesh.positions[tri.y],
                                      mesh.positions[tri.z])) {
                 ++model.droppedDegenerateCount;
                 continue;
             }
-            const int materialId =
-                face < shapeMesh.material_ids.size() ? shapeMesh.material_ids[face] : -1;
-            const bool hasMaterial =
-                materialId >= 0 && static_cast<size_t>(materialId) < model.materials.size();
             mesh.triangles.push_back(tri);
             mesh.triangleMaterials.push_back(hasMaterial ? static_cast<uint32_t>(materialId)
                                                          : kNoObjMaterial);
         }
     }
     return model;
-}
-
-void exportObj(const Scene& scene, const std::string& objPath) {
-    const std::filesystem::path path(objPath);
-    std::string extension = path.extension().string();
-    for (char& c : extension)
-        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (extension != ".obj") {
-        // The MTL goes beside it under the same name: "-o x.mtl" would write the MTL and then
-        // the OBJ over it.
-        throw InputError(strCat("-o: expected a file ending in .obj, got '", objPath, "'"));
-    }
-    std::filesystem::path mtlPath = path;
-    mtlPath.replace_extension(".mtl");
-
-    std::vector<std::string> names;
-    std::string mtl = "# ispm scene materials\n";
-    for (size_t i = 0; i < scene.materials.size(); ++i) {
-        const Material& m = scene.materials[i];
-        std::string name = sanitizeName(m.name, "material_", i);
-        // Names that differ only in blanks would meet: later ones take their index.
-        if (std::find(names.begin(), names.end(), name) != names.end()) name += strCat("_", i);
-        names.push_back(name);
-        const bool isTransmissive = m.transmissive != glm::vec3(0.0f);
-        mtl += "\nnewmtl " + names.back() + "\n";
-        appendVec3(mtl, "Kd", m.diffuse);
-        appendVec3(mtl, "Ks", m.specular);
-        mtl += "Ns ";
-        appendFloat(mtl, m.phongExponent);
-        mtl += "\nNi ";
-        appendFloat(mtl, m.ior);
-        mtl += "\n";
-        if (m.emission != glm::vec3(0.0f)) appendVec3(mtl, "Ke", m.emission);
-        if (isTransmissive) appendVec3(mtl, "Tf", m.transmissive);
-        mtl += strCat("illum ", isTransmissive ? kIllumRefractFresnel : kIllumHighlight, "\n");
-    }
-
-    std::string obj = strCat("# ispm scene, world-space triangles (metres)\nmtllib ",
-                             mtlPath.filename().string(), "\n");
-    size_t vertexBase = 1; // OBJ indices are 1-based and global over the file
-    for (size_t i = 0; i < scene.instances.size(); ++i) {
-        const Instance& instance = scene.instances[i];
-        const Mesh& mesh = scene.meshes.at(instance.meshIndex);
-        obj += "o " + sanitizeName(mesh.name, "mesh_", instance.meshIndex) + "\n";
-        for (const glm::vec3& p : mesh.positions) {
-            appendVec3(obj, "v", glm::vec3(instance.worldFromObject * glm::vec4(p, 1.0f)));
-        }
-        uint32_t currentMaterial = kUnmapped;
-        for (size_t t = 0; t < mesh.triangles.size(); ++t) {
-            const uint32_t material = mesh.triangleMaterials.at(t);
-            if (material != currentMaterial) {
-                obj += "usemtl " + names.at(material) + "\n";
-                currentMaterial = material;
-            }
-            const glm::uvec3& tri = mesh.triangles[t];
-            obj += strCat("f ", vertexBase + tri.x, " ", vertexBase + tri.y, " ",
-                          vertexBase + tri.z, "\n");
-        }
-        vertexBase += mesh.positions.size();
-    }
-    // Both land or neither: no cut OBJ, no MTL without its OBJ.
-    writeFilesWhole({{mtlPath.string(), mtl}, {path.string(), obj}});
 }
 
 } // namespace ispm

@@ -59,6 +59,19 @@ struct Camera {
     std::vector<CameraKey> path;
 };
 
+inline constexpr uint32_t kNoTexture = 0xffffffffu;
+
+// An 8-bit RGBA image whose RGB is sRGB-encoded (PNG and JPEG colour textures), row 0 at the top
+// as image files store it (texture coordinate v = 0 is the top row, as in glTF; OBJ's v runs
+// up and is flipped on import).
+struct SceneTexture {
+    std::string name;
+    std::string sourcePath; // the file it was read from; empty when embedded (glTF buffers)
+    int width = 0;
+    int height = 0;
+    std::vector<uint8_t> rgba; // width * height * 4 bytes
+};
+
 // Reflectances in [0,1] per channel; defaults are all zero (ior 1.5), as in the scene format.
 struct Material {
     std::string name;
@@ -68,6 +81,9 @@ struct Material {
     glm::vec3 transmissive{0.0f};
     float ior = 1.5f;
     glm::vec3 emission{0.0f}; // radiance W/(m^2 sr), seen by the camera, lights nothing
+    // Index into Scene::textures whose colour multiplies `diffuse` (glTF base colour, MTL
+    // map_Kd), or kNoTexture. Meshes with such materials carry texture coordinates.
+    uint32_t diffuseTexture = kNoTexture;
 };
 
 enum class LightType : uint32_t { Point = 0, Spot = 1, Sun = 2 };
@@ -96,6 +112,9 @@ float computeSpotFalloff(float cosAngle, float innerDeg, float outerDeg);
 struct Mesh {
     std::string name;
     std::vector<glm::vec3> positions;
+    // Texture coordinates per position (u right, v down from the image's top row), or empty for
+    // a mesh without textures.
+    std::vector<glm::vec2> texcoords;
     std::vector<glm::uvec3> triangles;
     std::vector<uint32_t> triangleMaterials;
     Aabb computeBounds() const;
@@ -114,6 +133,7 @@ struct Scene {
     std::vector<std::pair<std::string, Camera>> namedCameras;
     glm::vec3 background{0.0f};
     std::vector<Material> materials;
+    std::vector<SceneTexture> textures; // Material::diffuseTexture indexes here
     std::vector<Mesh> meshes;
     std::vector<Instance> instances;
     std::vector<Light> lights;

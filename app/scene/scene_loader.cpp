@@ -4,6 +4,7 @@
 
 #include "core/input_error.h"
 #include "core/strings.h"
+#include "scene/gltf_import.h"
 #include "scene/scene_parse.h"
 
 #include <cmath>
@@ -236,6 +237,7 @@ Scene parseScene(const nlohmann::json& doc, const std::string& file, const std::
 }
 
 Scene loadScene(const std::string& path) {
+    if (isGltfPath(path)) return loadGltfScene(path);
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) {
         throwInputError(path, "", "a scene file, cannot open it");

@@ -4,6 +4,7 @@
 #include "core/strings.h"
 #include "scene/box_city.h"
 #include "scene/cornell_box.h"
+#include "scene/gltf_import.h"
 #include "scene/mesh_builder.h"
 #include "scene/obj_io.h"
 #include "scene/scene_parse.h"
@@ -145,6 +146,7 @@ void parseObjFile(const JsonNode& object, const JsonNode& node, ParseContext& co
     } else {
         // The file's own materials, checked as strictly as the scene file's, named after it.
         std::vector<uint32_t> sceneIndex(model.materials.size(), kNoObjMaterial);
+        std::vector<uint32_t> sceneTexture(model.textures.size(), kNoTexture);
         for (uint32_t& m : model.mesh.triangleMaterials) {
             if (m == kNoObjMaterial) {
                 node.fail(strCat("an OBJ file whose faces all have MTL materials, or a 'material' "
@@ -159,6 +161,15 @@ void parseObjFile(const JsonNode& object, const JsonNode& node, ParseContext& co
                                      path.string(), "' (or a 'material' on the object)"));
                 }
                 objMaterial.name = given + ":" + objMaterial.name;
+                if (objMaterial.diffuseTexture != kNoTexture) { // model's index -> the scene's
+                    uint32_t& texture = sceneTexture.at(objMaterial.diffuseTexture);
+                    if (texture == kNoTexture) {
+                        texture = static_cast<uint32_t>(context.scene.textures.size());
+                        context.scene.textures.push_back(
+                            model.textures[objMaterial.diffuseTexture]);
+                    }
+                    objMaterial.diffuseTexture = texture;
+                }
                 sceneIndex[m] = findOrAddMaterial(context.scene, objMaterial);
             }
             m = sceneIndex[m];
@@ -269,8 +280,24 @@ void parseObject(const JsonNode& object, size_t index, ParseContext& context) {
         const glm::mat4 worldFromObject = parseTransform(object);
         addBoxCity(scene, parseBoxCityParams(object, context), worldFromObject);
         if (object.has("name")) scene.meshes.back().name = mesh.name;
+    } else if (type == "gltf") {
+        object.checkKeys(
+            {"type", "name", "matrix", "translate", "rotate_deg", "scale", "path", "animation"},
+            "a gltf object");
+        const glm::mat4 worldFromObject = parseTransform(object);
+        const JsonNode pathNode = object.get("path");
+        std::filesystem::path path(pathNode.readString());
+        if (path.is_relative()) path = std::filesystem::path(context.baseDir) / path;
+        std::error_code ec;
+        if (!isGltfPath(path.string()) || !std::filesystem::is_regular_file(path, ec)) {
+            pathNode.fail(
+                strCat("an existing .gltf or .glb file, cannot open '", path.string(), "'"));
+        }
+        // The file's cameras join the scene's named cameras (--camera NAME).
+        for (auto& camera : importGltf(path.string(), worldFromObject, scene))
+            scene.namedCameras.push_back(std::move(camera));
     } else {
-        typeNode.failGot("an object type: mesh, box, cornell_box or box_city");
+        typeNode.failGot("an object type: mesh, box, cornell_box, box_city or gltf");
     }
     if (auto animation = object.find("animation")) {
         // Every instance the object made moves as one; without a pivot it turns about its origin.

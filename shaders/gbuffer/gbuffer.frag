@@ -1,9 +1,15 @@
 // G-buffer fragment stage: writes the channels of the table in app/render/gbuffer.cpp.
 #include "lib/scene_buffers.glsl"
+#if GBUFFER_TEXTURES // the textured variant (GBufferPrograms)
+#include "lib/scene_textures.glsl"
+#endif
 
 layout(std140, binding = kBindingPassParams) uniform GBufferParamsBlock { GBufferParams params; };
 
 in vec3 vPositionW;
+#if GBUFFER_TEXTURES
+in vec2 vTexcoord;
+#endif
 in vec4 vClip;
 in vec4 vPreviousClip;
 flat in vec3 vNormalW;
@@ -28,7 +34,17 @@ void main() {
     // Instance + 1: >= 1 on a surface (exact in float up to 2^24 instances).
     outPosition = vec4(vPositionW, float(vInstance + 1u));
     outNormal = vec4(n, frontFace ? 1.0 : -1.0);
-    outDiffuse = vec4(m.diffuse.rgb, 0.0);
+    // Textured: the base colour texture, mipmapped by the pixel's footprint (light views too:
+    // a photon's first bounce takes the colour its texel of the light's image averages). The
+    // branch is uniform over each 2x2 quad (a quad is one triangle's, the material is flat), so
+    // the implicit derivatives are defined, and untextured surfaces pay for no lookup.
+    vec3 diffuse = m.diffuse.rgb;
+#if GBUFFER_TEXTURES
+    if (hasDiffuseTexture(m)) {
+        diffuse *= texture(uSceneTextures, vec3(vTexcoord, getDiffuseTextureLayer(m))).rgb;
+    }
+#endif
+    outDiffuse = vec4(diffuse, 0.0);
     outSpecular = m.specular;
     outTransmissive = m.transmissive;
     outEmission = vec4(m.emission.rgb, 0.0);

@@ -1,6 +1,9 @@
 // G-buffer vertex stage: pulls the triangle's three vertices from the scene buffers, so the flat
 // face normal needs no extra vertex data. One draw per instance.
 #include "lib/scene_buffers.glsl"
+#if GBUFFER_TEXTURES
+#include "lib/scene_textures.glsl"
+#endif
 
 layout(std140, binding = kBindingPassParams) uniform GBufferParamsBlock { GBufferParams params; };
 
@@ -9,6 +12,9 @@ layout(std430, binding = kBindingPreviousTransforms) readonly buffer PreviousTra
 };
 
 out vec3 vPositionW;
+#if GBUFFER_TEXTURES
+out vec2 vTexcoord;
+#endif
 // This frame's and the last frame's clip positions (velocity), divided per fragment.
 out vec4 vClip;
 out vec4 vPreviousClip;
@@ -25,6 +31,9 @@ void main() {
     vec3 p2 = positions[tri.z].xyz;
     uint corner = uint(gl_VertexID) % 3u;
     vec3 p = corner == 0u ? p0 : (corner == 1u ? p1 : p2);
+#if GBUFFER_TEXTURES
+    vTexcoord = texcoords[corner == 0u ? tri.x : (corner == 1u ? tri.y : tri.z)];
+#endif
     vec4 positionW = inst.worldFromObject * vec4(p, 1.0);
     vPositionW = positionW.xyz;
     vNormalW = normalize(transpose(mat3(inst.objectFromWorld)) * cross(p1 - p0, p2 - p0));

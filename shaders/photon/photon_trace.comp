@@ -4,6 +4,7 @@
 // the same Russian roulette as the first bounce.
 #include "lib/scene_buffers.glsl"
 #include "lib/bvh.glsl"
+#include "lib/scene_textures.glsl"
 #include "shared/photon_data.h"
 #include "shared/photon_scatter.h"
 #include "lib/photon_lights.glsl"
@@ -76,7 +77,8 @@ void main() {
         // and the path to it stay, however the object moved; else the photon's emission cell.
         uint key = params.control.w == kRngObjectSpace ? hashObjectPoint(hit) : id;
         uint rng = seedRandom(key, reflections, params.control.y);
-        uint event = scatterPhoton(dir, power, n, m.diffuse.rgb, m.specular, m.transmissive,
+        vec3 diffuse = getHitDiffuse(m, hit.triangle, hit.barycentric);
+        uint event = scatterPhoton(dir, power, n, diffuse, m.specular, m.transmissive,
                                    frontFace, rng, params.control.z);
         if (event == kScatterAbsorbed) break;
         density = updatePathDensity(density, event, m.specular.w);

@@ -7,6 +7,7 @@
 #include "lib/scene_buffers.glsl"
 #include "lib/frame_constants.glsl"
 #include "lib/bvh.glsl"
+#include "lib/scene_textures.glsl"
 #include "lib/brdf.glsl"
 #include "lib/lights.glsl"
 #include "shared/photon_scatter.h"
@@ -44,6 +45,7 @@ vec3 traceCameraPath(vec2 pixel, inout uint rng) {
         bool frontFace = dot(geometric, dir) < 0.0;
         vec3 n = frontFace ? geometric : -geometric;
         GpuMaterial m = materials[triangles[hit.triangle].w];
+        vec3 diffuse = getHitDiffuse(m, hit.triangle, hit.barycentric);
         if (vertex == 1u) radiance += m.emission.rgb; // emission is seen, it lights nothing
         vec3 wo = -dir;
         float offset = computeRayOffset(position, params.ray.x);
@@ -53,14 +55,14 @@ vec3 traceCameraPath(vec2 pixel, inout uint rng) {
             float cosTheta = dot(n, s.wi);
             if (cosTheta <= 0.0 || all(equal(s.irradiance, vec3(0.0)))) continue;
             if (isOccluded(offsetOrigin, s.wi, s.distanceM - 2.0 * offset)) continue;
-            radiance += throughput * evaluateBrdf(m.diffuse.rgb, m.specular, n, s.wi, wo) *
+            radiance += throughput * evaluateBrdf(diffuse, m.specular, n, s.wi, wo) *
                         s.irradiance * cosTheta;
         }
         if (vertex > bounces) break;
-        float total = computeMean(m.diffuse.rgb) + computeMean(m.specular.rgb) +
+        float total = computeMean(diffuse) + computeMean(m.specular.rgb) +
                       computeMean(m.transmissive.rgb);
         if (total <= 0.0) break;
-        uint event = scatterSurface(dir, throughput, n, m.diffuse.rgb, m.specular, m.transmissive,
+        uint event = scatterSurface(dir, throughput, n, diffuse, m.specular, m.transmissive,
                                     frontFace, rng, kRngPcg, 1.0 / total);
         if (event == kScatterAbsorbed) break;
         if (event == kScatterRefract) {

@@ -9,7 +9,8 @@ ISPM_NAMESPACE_BEGIN
 
 // Reflectances and emission of one material; w components carry the scalars.
 struct GpuMaterial {
-    vec4 diffuse;      // rgb reflectance, w unused
+    vec4 diffuse;      // rgb reflectance, w = base colour texture's layer + 1 in the scene's
+                       // texture array (0: none; exact in float), its RGB multiplies rgb
     vec4 specular;     // rgb reflectance, w = Phong exponent
     vec4 transmissive; // rgb transmittance, w = index of refraction
     vec4 emission;     // rgb radiance W/(m^2 sr), w unused
@@ -69,6 +70,9 @@ ISPM_CONST int kBindingExposure = 6;   // tone-map statistics
 // mat4 per instance: its worldFromObject when the last frame was drawn (AccumulatePass
 // reprojects the history of moving objects with it).
 ISPM_CONST int kBindingPreviousTransforms = 21;
+// vec2 per vertex (as kBindingPositions): texture coordinates, u right and v down the image
+// (zero for meshes without textures).
+ISPM_CONST int kBindingTexcoords = 27; // after the gather buffers (gather_data.h)
 // 7..10: the BVH (shared/bvh_data.h); 11..20: the photon and importance buffers
 // (shared/photon_data.h, shared/importance_data.h)
 
@@ -93,6 +97,8 @@ ISPM_CONST int kUnitHistoryIndirect = 21;
 ISPM_CONST int kUnitHistoryLength = 22;
 ISPM_CONST int kUnitHistoryPosition = 23;
 ISPM_CONST int kUnitHistoryNormal = 24;
+// The scene's colour textures: one sRGB 2D array, a layer per texture (GpuMaterial::diffuse.w).
+ISPM_CONST int kUnitSceneTextures = 28; // after the post passes' 25..27 (post_data.h)
 
 // Per-frame values every pass may read (std140).
 struct FrameConstants {

@@ -2,6 +2,7 @@
 // (or the flag) and exit code 2; good input renders a non-black image.
 #include "image/image_io.h"
 #include "image/metrics.h"
+#include "support/gltf_scenes.h"
 #include "support/run_ispm.h"
 
 #include <gtest/gtest.h>
@@ -74,6 +75,25 @@ TEST_F(CliTest, RendersPngAndPfm) {
     r = run("render " + scene + " -o " + pfm + " --width 8 --height 8 --aov direct -q");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_EQ(readImage(pfm).width, 8);
+}
+
+TEST_F(CliTest, RendersGltfFilesAndRejectsBrokenOnes) {
+    const std::string gltf = (mDir / "room.gltf").string();
+    CheckerRoom room;
+    room.cameraPositionM = {0.0f, 1.5f, 0.0f};
+    writeCheckerRoomGltf(gltf, room);
+    const std::string png = (mDir / "room.png").string();
+    const RunResult r = run("render " + gltf + " -o " + png + " --width 24 --height 24");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const Image image = readImage(png);
+    float maxValue = 0.0f;
+    for (const glm::vec3& p : image.pixels)
+        maxValue = std::max(maxValue, p.x);
+    EXPECT_GT(maxValue, 0.5f) << "the spot lights the floor the camera looks at";
+    const std::string bad = writeScene("bad.gltf", R"({"asset": {"version": "2.0"},
+                       "materials": [{"pbrMetallicRoughness": {"baseColorFactor": [2, 0, 0, 1]}}]})");
+    expectBadInput("render " + bad + " -o " + png,
+                   {"bad.gltf: /materials/0/pbrMetallicRoughness/baseColorFactor/0: expected"});
 }
 
 TEST_F(CliTest, WritesPhotonBufferImages) {

@@ -1,0 +1,188 @@
+// glTF metallic-roughness materials, their base colour images, and KHR_lights_punctual lights, in
+// ispm's terms (gltf_units.h). Values outside glTF's ranges are input errors with their JSON path.
+#include "scene/gltf_materials.h"
+
+#include "core/strings.h"
+#include "scene/gltf_units.h"
+#include "scene/scene_parse.h"
+#include "scene/scene_texture.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace ispm {
+
+namespace {
+
+constexpr double kMaxLightPower = 1e12; // W/sr or W/m^2, as scene files' lights
+// A spot's light camera sees twice its outer angle; 90 degrees degenerates the projection, so
+// glTF's widest spot (pi/2) is narrowed to this, as scene files' spots are bounded.
+constexpr float kMaxSpotHalfAngleDeg = 89.9f;
+
+double readUnit(const GltfFile& file, double value, const std::string& path) {
+    if (!(value >= 0.0 && value <= 1.0)) {
+        file.fail(path, strCat("a number in [0, 1], got ", value));
+    }
+    return value;
+}
+
+glm::vec3 readUnitColor(const GltfFile& file, const std::vector<double>& values, size_t size,
+                        const std::string& path) {
+    if (values.size() != size) file.fail(path, strCat(size, " numbers in [0, 1]"));
+    glm::vec3 c;
+    for (int i = 0; i < 3; ++i)
+        c[i] = float(readUnit(file, values[static_cast<size_t>(i)], strCat(path, "/", i)));
+    return c;
+}
+
+// The scene texture of glTF texture `index` (its image, converted once).
+uint32_t importTexture(const GltfFile& file, int index, const std::string& path,
+                       std::vector<uint32_t>& imageTextures, Scene& scene) {
+    const tinygltf::Model& model = file.model;
+    if (index < 0 || static_cast<size_t>(index) >= model.textures.size()) {
+        file.fail(path, strCat("a texture index below ", model.textures.size(), ", got ", index));
+    }
+    const int source = model.textures[static_cast<size_t>(index)].source;
+    if (source < 0 || static_cast<size_t>(source) >= model.images.size()) {
+        file.fail(strCat("/textures/", index, "/source"), "an image index");
+    }
+    const auto image = static_cast<size_t>(source);
+    if (imageTextures[image] != kNoTexture) return imageTextures[image];
+    const tinygltf::Image& in = model.images[image];
+    SceneTexture texture;
+    texture.name = in.name.empty() ? strCat("image_", image) : in.name;
+    if (!convertToRgba8(in.image.data(), in.width, in.height, in.component, in.bits, texture) ||
+        in.image.size() < static_cast<size_t>(in.width) * static_cast<size_t>(in.height) *
+                              static_cast<size_t>(in.component) *
+                              static_cast<size_t>(in.bits / 8)) {
+        file.fail(strCat("/images/", image), "a decodable PNG or JPEG image of 8 or 16 bits");
+    }
+    imageTextures[image] = static_cast<uint32_t>(scene.textures.size());
+    scene.textures.push_back(std::move(texture));
+    return imageTextures[image];
+}
+
+float readExtensionNumber(const GltfFile& file, const tinygltf::ExtensionMap& extensions,
+                          const char* extension, const char* key, float fallback,
+                          const std::string& path) {
+    const auto it = extensions.find(extension);
+    if (it == extensions.end() || !it->second.Has(key)) return fallback;
+    const tinygltf::Value& v = it->second.Get(key);
+    const double value = v.IsNumber() ? v.GetNumberAsDouble() : -1.0;
+    if (!(value >= 0.0 && value <= kMaxLightPower)) {
+        file.fail(strCat(path, "/extensions/", extension, "/", key), "a number >= 0");
+    }
+    return float(value);
+}
+
+} // namespace
+
+GltfMaterials importGltfMaterials(const GltfFile& file, const std::string& prefix, Scene& scene) {
+    const tinygltf::Model& model = file.model;
+    GltfMaterials out;
+    std::vector<uint32_t> imageTextures(model.images.size(), kNoTexture);
+    for (size_t i = 0; i < model.materials.size(); ++i) {
+        const tinygltf::Material& in = model.materials[i];
+        const std::string at = strCat("/materials/", i);
+        const std::string pbrAt = at + "/pbrMetallicRoughness";
+        const tinygltf::PbrMetallicRoughness& pbr = in.pbrMetallicRoughness;
+        const glm::vec3 base =
+            readUnitColor(file, pbr.baseColorFactor, 4, pbrAt + "/baseColorFactor");
+        const auto metallic = float(readUnit(file, pbr.metallicFactor, pbrAt + "/metallicFactor"));
+        const auto roughness =
+            float(readUnit(file, pbr.roughnessFactor, pbrAt + "/roughnessFactor"));
+        int texcoordSet = -1;
+        uint32_t texture = kNoTexture;
+        glm::vec3 textureMean(1.0f);
+        if (pbr.baseColorTexture.index >= 0) {
+            texture = importTexture(file, pbr.baseColorTexture.index,
+                                    pbrAt + "/baseColorTexture/index", imageTextures, scene);
+            textureMean = computeLinearMean(scene.textures[texture]);
+            texcoordSet = pbr.baseColorTexture.texCoord;
+        }
+        Material m = convertMetallicRoughness(base, metallic, roughness, textureMean);
+        m.diffuseTexture = texture;
+        // Emission: radiance W/(m^2 sr) = factor x KHR_materials_emissive_strength (x the
+        // emissive texture's mean: it cannot vary per point).
+        glm::vec3 emission = readUnitColor(file, in.emissiveFactor, 3, at + "/emissiveFactor");
+        emission *= readExtensionNumber(file, in.extensions, "KHR_materials_emissive_strength",
+                                        "emissiveStrength", 1.0f, at);
+        if (in.emissiveTexture.index >= 0 && emission != glm::vec3(0.0f)) {
+            const uint32_t t = importTexture(file, in.emissiveTexture.index,
+                                             at + "/emissiveTexture/index", imageTextures, scene);
+            emission *= computeLinearMean(scene.textures[t]);
+        }
+        m.emission = emission;
+        m.name = prefix + (in.name.empty() ? strCat("material_", i) : in.name);
+        const std::string problem = checkMaterialEnergy(m);
+        if (!problem.empty()) file.fail(at, problem);
+        out.sceneIndex.push_back(static_cast<uint32_t>(scene.materials.size()));
+        out.texcoordSet.push_back(texcoordSet);
+        scene.materials.push_back(std::move(m));
+    }
+    return out;
+}
+
+uint32_t getGltfDefaultMaterial(GltfMaterials& materials, const std::string& prefix, Scene& scene) {
+    if (materials.defaultMaterial == kNoTexture) {
+        // glTF 2.0, 3.9.6: a primitive without a material is white, metallic 1, roughness 1.
+        Material m = convertMetallicRoughness(glm::vec3(1.0f), 1.0f, 1.0f, glm::vec3(1.0f));
+        m.name = prefix + "default";
+        materials.defaultMaterial = static_cast<uint32_t>(scene.materials.size());
+        scene.materials.push_back(std::move(m));
+    }
+    return materials.defaultMaterial;
+}
+
+Light convertGltfLight(const GltfFile& file, int index, const glm::mat4& worldFromNode,
+                       const std::string& usePath) {
+    const tinygltf::Model& model = file.model;
+    if (index < 0 || static_cast<size_t>(index) >= model.lights.size()) {
+        file.fail(usePath, strCat("a KHR_lights_punctual light index below ", model.lights.size(),
+                                  ", got ", index));
+    }
+    const tinygltf::Light& in = model.lights[static_cast<size_t>(index)];
+    const std::string at = strCat("/extensions/KHR_lights_punctual/lights/", index);
+    // Colour is linear RGB in [0, 1] (default white); intensity is cd or lux.
+    const glm::vec3 color =
+        in.color.empty() ? glm::vec3(1.0f) : readUnitColor(file, in.color, 3, at + "/color");
+    const double maxPhotometric = kMaxLightPower * double(kLumensPerWatt);
+    if (!(in.intensity >= 0.0 && in.intensity <= maxPhotometric)) {
+        file.fail(at + "/intensity",
+                  strCat("a number in [0, ", maxPhotometric, "], got ", in.intensity));
+    }
+    const glm::vec3 photometric = color * float(in.intensity);
+    Light light;
+    light.position = glm::vec3(worldFromNode[3]);
+    const glm::vec3 axis = glm::vec3(worldFromNode * glm::vec4(0.0f, 0.0f, -1.0f, 0.0f));
+    light.direction = glm::normalize(axis);
+    if (in.type == "point") {
+        light.type = LightType::Point;
+        light.intensity = convertCandelaToWattsPerSr(photometric);
+    } else if (in.type == "spot") {
+        light.type = LightType::Spot;
+        light.intensity = convertCandelaToWattsPerSr(photometric);
+        const double outer = in.spot.outerConeAngle;
+        const double inner = in.spot.innerConeAngle;
+        if (!(outer > 0.0 && outer <= std::numbers::pi / 2.0)) {
+            file.fail(at + "/spot/outerConeAngle", "an angle in (0, pi/2] radians");
+        }
+        if (!(inner >= 0.0 && inner < outer)) {
+            file.fail(at + "/spot/innerConeAngle", "an angle in [0, outerConeAngle) radians");
+        }
+        light.outerDeg = std::min(float(glm::degrees(outer)), kMaxSpotHalfAngleDeg);
+        light.innerDeg = std::min(float(glm::degrees(inner)), light.outerDeg);
+    } else if (in.type == "directional") {
+        light.type = LightType::Sun;
+        light.irradiance = convertLuxToWattsPerM2(photometric);
+    } else {
+        file.fail(at + "/type", strCat("point, spot or directional, got '", in.type, "'"));
+    }
+    if (!(glm::length(axis) > 0.0f) ||
+        !std::isfinite(light.position.x + light.position.y + light.position.z)) {
+        file.fail(usePath, "a node with an invertible, finite transform");
+    }
+    return light;
+}
+
+} // namespace ispm

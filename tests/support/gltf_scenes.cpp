@@ -1,0 +1,201 @@
+// The checker room as a glTF model built field by field and written by tinygltf.
+#include "support/gltf_scenes.h"
+
+#include <tiny_gltf.h>
+
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+
+namespace ispm::test {
+
+namespace {
+
+constexpr double kHalfSqrt2 = 0.70710678118654752;
+
+// Appends a float array to the buffer and a view + accessor over it; returns the accessor.
+int addFloatAccessor(tinygltf::Model& model, const std::vector<float>& values, int type,
+                     size_t count) {
+    tinygltf::Buffer& buffer = model.buffers[0];
+    const size_t offset = buffer.data.size();
+    buffer.data.resize(offset + values.size() * sizeof(float));
+    std::memcpy(buffer.data.data() + offset, values.data(), values.size() * sizeof(float));
+    tinygltf::BufferView view;
+    view.buffer = 0;
+    view.byteOffset = offset;
+    view.byteLength = values.size() * sizeof(float);
+    model.bufferViews.push_back(view);
+    tinygltf::Accessor accessor;
+    accessor.bufferView = static_cast<int>(model.bufferViews.size() - 1);
+    accessor.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
+    accessor.type = type;
+    accessor.count = count;
+    if (type == TINYGLTF_TYPE_VEC3) { // glTF requires min/max on positions
+        accessor.minValues = {1e30, 1e30, 1e30};
+        accessor.maxValues = {-1e30, -1e30, -1e30};
+        for (size_t i = 0; i < count; ++i) {
+            for (size_t c = 0; c < 3; ++c) {
+                accessor.minValues[c] = std::min(accessor.minValues[c], double(values[3 * i + c]));
+                accessor.maxValues[c] = std::max(accessor.maxValues[c], double(values[3 * i + c]));
+            }
+        }
+    }
+    model.accessors.push_back(accessor);
+    return static_cast<int>(model.accessors.size() - 1);
+}
+
+// A square at height y facing `up` (or down), with texture coordinates 0..1 over it.
+int addSquareMesh(tinygltf::Model& model, float halfM, float y, bool facingUp, int material) {
+    const float h = halfM;
+    const std::vector<float> positions = {-h, y, -h, h, y, -h, h, y, h, -h, y, h};
+    // u along +x, v along +z: square (i, j) of the checker lies at x = -h + (i + 0.5) ...
+    const std::vector<float> uvs = {0, 0, 1, 0, 1, 1, 0, 1};
+    tinygltf::Primitive prim;
+    prim.attributes["POSITION"] = addFloatAccessor(model, positions, TINYGLTF_TYPE_VEC3, 4);
+    prim.attributes["TEXCOORD_0"] = addFloatAccessor(model, uvs, TINYGLTF_TYPE_VEC2, 4);
+    // Counter-clockwise seen from the side the square faces.
+    const std::vector<uint16_t> indices = facingUp ? std::vector<uint16_t>{0, 2, 1, 0, 3, 2}
+                                                   : std::vector<uint16_t>{0, 1, 2, 0, 2, 3};
+    // Indices as unsigned shorts (little-endian) in their own view.
+    tinygltf::Buffer& buffer = model.buffers[0];
+    const size_t offset = buffer.data.size();
+    buffer.data.resize(offset + indices.size() * sizeof(uint16_t));
+    std::memcpy(buffer.data.data() + offset, indices.data(), indices.size() * sizeof(uint16_t));
+    buffer.data.resize((buffer.data.size() + 3) / 4 * 4); // keep later float views aligned
+    tinygltf::BufferView view;
+    view.buffer = 0;
+    view.byteOffset = offset;
+    view.byteLength = indices.size() * sizeof(uint16_t);
+    model.bufferViews.push_back(view);
+    tinygltf::Accessor accessor;
+    accessor.bufferView = static_cast<int>(model.bufferViews.size() - 1);
+    accessor.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+    accessor.type = TINYGLTF_TYPE_SCALAR;
+    accessor.count = indices.size();
+    model.accessors.push_back(accessor);
+    prim.indices = static_cast<int>(model.accessors.size() - 1);
+    prim.material = material;
+    prim.mode = TINYGLTF_MODE_TRIANGLES;
+    tinygltf::Mesh mesh;
+    mesh.primitives.push_back(prim);
+    model.meshes.push_back(mesh);
+    return static_cast<int>(model.meshes.size() - 1);
+}
+
+int addMaterial(tinygltf::Model& model, const std::string& name, int texture) {
+    tinygltf::Material m;
+    m.name = name;
+    m.pbrMetallicRoughness.baseColorFactor = {1.0, 1.0, 1.0, 1.0};
+    m.pbrMetallicRoughness.metallicFactor = 0.0;
+    m.pbrMetallicRoughness.roughnessFactor = 1.0;
+    m.pbrMetallicRoughness.baseColorTexture.index = texture;
+    m.doubleSided = true;
+    model.materials.push_back(m);
+    return static_cast<int>(model.materials.size() - 1);
+}
+
+// A node turned so its -z axis points down (-y) or up (+y).
+tinygltf::Node makeVerticalNode(glm::vec3 position, bool up) {
+    tinygltf::Node node;
+    node.translation = {position.x, position.y, position.z};
+    // +-90 degrees about x: -z -> -y (down) or +y (up).
+    node.rotation = {up ? kHalfSqrt2 : -kHalfSqrt2, 0.0, 0.0, kHalfSqrt2};
+    return node;
+}
+
+} // namespace
+
+glm::vec3 getCheckerColor(const CheckerRoom& room, int i, int j) {
+    const std::array<uint8_t, 3>& c = (i + j) % 2 == 0 ? room.colorA : room.colorB;
+    glm::vec3 linear;
+    for (int k = 0; k < 3; ++k) {
+        const float s = float(c[static_cast<size_t>(k)]) / 255.0f;
+        linear[k] = s <= 0.04045f ? s / 12.92f : std::pow((s + 0.055f) / 1.055f, 2.4f);
+    }
+    return linear;
+}
+
+void writeCheckerRoomGltf(const std::string& path, const CheckerRoom& room) {
+    tinygltf::Model model;
+    model.asset.version = "2.0";
+    model.buffers.resize(1);
+
+    tinygltf::Image image;
+    image.name = "checker";
+    image.width = room.checks * room.texelsPerCheck;
+    image.height = image.width;
+    image.component = 4;
+    image.bits = 8;
+    image.pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+    image.mimeType = "image/png";
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            // Row y of the image is v = y / height: square j along +z (v), i along +x (u).
+            const int i = x / room.texelsPerCheck;
+            const int j = y / room.texelsPerCheck;
+            const std::array<uint8_t, 3>& c = (i + j) % 2 == 0 ? room.colorA : room.colorB;
+            image.image.insert(image.image.end(), {c[0], c[1], c[2], 255});
+        }
+    }
+    model.images.push_back(image);
+    tinygltf::Texture texture;
+    texture.source = 0;
+    model.textures.push_back(texture);
+
+    const int floorMaterial = addMaterial(model, "checker", 0);
+    const int whiteMaterial = addMaterial(model, "white", -1);
+    tinygltf::Scene scene;
+    model.nodes.emplace_back();
+    model.nodes.back().mesh = addSquareMesh(model, room.halfM, 0.0f, true, floorMaterial);
+    model.nodes.back().name = "floor";
+    scene.nodes.push_back(static_cast<int>(model.nodes.size() - 1));
+    if (room.ceilingM > 0.0f) {
+        model.nodes.emplace_back();
+        model.nodes.back().mesh =
+            addSquareMesh(model, room.halfM, room.ceilingM, false, whiteMaterial);
+        model.nodes.back().name = "ceiling";
+        scene.nodes.push_back(static_cast<int>(model.nodes.size() - 1));
+    }
+
+    tinygltf::Light light;
+    light.name = "spot";
+    light.type = "spot";
+    light.color = {1.0, 1.0, 1.0};
+    light.intensity = room.candela;
+    light.spot.innerConeAngle = room.innerConeRad;
+    light.spot.outerConeAngle = room.outerConeRad;
+    model.lights.push_back(light);
+    tinygltf::Node lightNode =
+        makeVerticalNode(glm::vec3(0.0f, room.lightHeightM, 0.0f), room.lightUp);
+    lightNode.name = "spot";
+    tinygltf::Value::Object lightRef;
+    lightRef["light"] = tinygltf::Value(0);
+    lightNode.extensions["KHR_lights_punctual"] = tinygltf::Value(lightRef);
+    model.nodes.push_back(lightNode);
+    scene.nodes.push_back(static_cast<int>(model.nodes.size() - 1));
+
+    tinygltf::Camera camera;
+    camera.name = "eye";
+    camera.type = "perspective";
+    camera.perspective.yfov = room.cameraYFovRad;
+    camera.perspective.znear = 0.01;
+    camera.perspective.zfar = 100.0;
+    camera.perspective.aspectRatio = 1.0;
+    model.cameras.push_back(camera);
+    tinygltf::Node cameraNode = makeVerticalNode(room.cameraPositionM, room.cameraUp);
+    cameraNode.camera = 0;
+    // The image's up is the node's +y turned: -z looking down, +z looking up.
+    model.nodes.push_back(cameraNode);
+    scene.nodes.push_back(static_cast<int>(model.nodes.size() - 1));
+
+    model.scenes.push_back(scene);
+    model.defaultScene = 0;
+    model.extensionsUsed.push_back("KHR_lights_punctual");
+    tinygltf::TinyGLTF writer;
+    const bool binary = path.size() > 4 && path.substr(path.size() - 4) == ".glb";
+    if (!writer.WriteGltfSceneToFile(&model, path, true, true, !binary, binary)) {
+        throw std::runtime_error("tinygltf could not write " + path);
+    }
+}
+
+} // namespace ispm::test

@@ -1,0 +1,38 @@
+// glTF files written by the tests themselves (tinygltf's writer), so the importer is checked on
+// files it did not make: a floor with a checker base colour texture, a white ceiling, a spot
+// light and a camera.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <array>
+#include <cstdint>
+#include <string>
+
+namespace ispm::test {
+
+struct CheckerRoom {
+    float halfM = 1.0f;     // the floor (y = 0) and ceiling span x, z in [-half, half]
+    float ceilingM = 2.0f;  // the ceiling's height (white; 0: no ceiling)
+    int checks = 4;         // checker squares per side of the floor
+    int texelsPerCheck = 8; // texture resolution
+    std::array<uint8_t, 3> colorA{255, 0, 0};     // sRGB; square (0, 0) at the texture's top left
+    std::array<uint8_t, 3> colorB{255, 255, 255}; // sRGB
+    float lightHeightM = 1.0f;                    // the spot at (0, height, 0)
+    bool lightUp = false;                         // shines up (+y) instead of down
+    float candela = 683.0f;                       // 1 W/sr in ispm's units
+    float outerConeRad = 1.2f;
+    float innerConeRad = 1.1f;
+    glm::vec3 cameraPositionM{0.0f, 1.0f, 0.0f};
+    bool cameraUp = false; // looks up (+y) instead of down
+    float cameraYFovRad = 1.2f;
+};
+
+// Writes the room as a .gltf with embedded buffers and image (data URIs), or as a binary .glb
+// when the path ends in .glb.
+void writeCheckerRoomGltf(const std::string& path, const CheckerRoom& room);
+
+// Linear colour of the checker square (i, j) (i along +x, j along +z), sRGB decoded.
+glm::vec3 getCheckerColor(const CheckerRoom& room, int i, int j);
+
+} // namespace ispm::test
