@@ -1,8 +1,9 @@
 // SpecularPass: what the camera sees in mirrors and glass. Every viewer pixel on a mirror-like
 // lobe (Phong exponent >= kSpecularTraceMinExponent) or a transmissive surface traces a
 // reflected and a refracted ray through the BVH, `specular_depth` levels deep, shades each hit
-// with direct light (shadow rays) and the indirect light of the visible point it lands on, and
-// adds the result into the composed image in place. Other pixels are left as they were.
+// with direct light (shadow rays) and the indirect light of the visible pixel showing the same
+// point (else the view's ambient estimate), and adds the result into the composed image in
+// place. Other pixels are left as they were.
 #pragma once
 
 #include "gl/objects.h"

@@ -120,8 +120,8 @@ const std::vector<SettingDesc>& table() {
          "levels of rays traced from what the camera sees in mirrors (Phong exponent >= 64) and "
          "glass: a reflected ray (the Phong lobe's and Fresnel's reflectance) and a refracted one "
          "per level, each hit shaded with direct light (shadow rays) and the indirect light of "
-         "the visible point it lands on; at most `bounces` levels; 0 = off (mirrors shaded by "
-         "their Phong lobe only, glass black)",
+         "the visible pixel showing the same point (else an ambient estimate); at most `bounces` "
+         "levels; 0 = off (mirrors shaded by their Phong lobe only, glass black)",
          {}},
         {"reference_method", SettingType::Enum, 0, 0, 1, "",
          "estimator of --mode reference: path (camera paths with next-event estimation to each "

@@ -194,14 +194,16 @@ TEST_F(SpecularViewTest, GlassAndMetalInTheCausticsSceneMatchThePathTracer) {
                 metalRef, metalIspm / metalRef);
     ASSERT_GT(glassRef, 0.0);
     ASSERT_GT(metalRef, 0.0);
-    // Measured 0.86 (glass) and 1.08 (metal). Glass misses the indirect light of what it shows
-    // where no visible pixel shows the same point (the floor behind and under the glass: without
-    // any indirect light the glass reads 0.79); the metal's single mirror ray stands for a lobe of
-    // exponent 400, whose spread the path tracer averages. Black glass (0), glass seen without
-    // Fresnel's reflection (~0.8 of it) or without the eta^2 scaling both ways (~0.5 or ~1.1
-    // depending on the path) fall outside.
-    EXPECT_NEAR(glassIspm / glassRef, 0.9, 0.06);
-    EXPECT_NEAR(metalIspm / metalRef, 1.0, 0.12);
+    // Measured 0.92 (glass) and 1.12 (metal). Where no visible pixel shows what a ray hits (the
+    // floor behind and under the glass) its indirect light is the view's ambient estimate
+    // (without it glass read 0.86, without any indirect light 0.79); the metal's single mirror
+    // ray stands for a lobe of exponent 400, whose spread the path tracer averages. The bound
+    // on glass leaves out black glass (0), glass without indirect light (0.79) and without the
+    // ambient estimate (0.86). (Leaving out eta^2 would not show: seen through a solid, a ray
+    // crosses two faces and the factors cancel; the pass takes the path tracer's
+    // computeRefractedRadianceScale, which tests/image/refraction_test.cpp checks.)
+    EXPECT_NEAR(glassIspm / glassRef, 0.92, 0.05);
+    EXPECT_NEAR(metalIspm / metalRef, 1.0, 0.15);
 }
 
 TEST_F(SpecularViewTest, DepthZeroLeavesTheImageAsItWas) {
