@@ -57,6 +57,8 @@ FrameRunner::FrameRunner(const Scene& scene, const Settings& settings, gl::Timin
                                                    mUpsample->getOutput());
     mCompose = std::make_unique<ComposePass>(mGBuffer->getGBuffer(), mAccumulate->getDirect(),
                                              mAccumulate->getIndirect());
+    mSpecular = std::make_unique<SpecularPass>(mGBuffer->getGBuffer(), mAccumulate->getIndirect(),
+                                               mCompose->getOutput());
     mMotionBlur = std::make_unique<MotionBlurPass>(mGBuffer->getGBuffer());
     mDepthBlur = std::make_unique<DepthBlurPass>(mGBuffer->getGBuffer());
     mBloom = std::make_unique<BloomPass>();
@@ -65,11 +67,12 @@ FrameRunner::FrameRunner(const Scene& scene, const Settings& settings, gl::Timin
     resizePasses();
 }
 
-std::array<Pass*, 16> FrameRunner::getPasses() const {
-    return {mGBuffer.get(),    mLightViews.get(), mImportance.get(), mEmit.get(),
-            mDirect.get(),     mTrace.get(),      mDensity.get(),    mSplat.get(),
-            mDenoise.get(),    mUpsample.get(),   mAccumulate.get(), mCompose.get(),
-            mMotionBlur.get(), mDepthBlur.get(),  mBloom.get(),      mTonemap.get()};
+std::array<Pass*, 17> FrameRunner::getPasses() const {
+    return {mGBuffer.get(),  mLightViews.get(), mImportance.get(), mEmit.get(),
+            mDirect.get(),   mTrace.get(),      mDensity.get(),    mSplat.get(),
+            mDenoise.get(),  mUpsample.get(),   mAccumulate.get(), mCompose.get(),
+            mSpecular.get(), mMotionBlur.get(), mDepthBlur.get(),  mBloom.get(),
+            mTonemap.get()};
 }
 
 void FrameRunner::resizePasses() {
@@ -344,6 +347,8 @@ void FrameRunner::addFrameSteps(double sliceMs) {
                           ++mFramesDrawn;
                       }});
     addPassStep(*mCompose);
+    // Off (specular_depth 0), the composed image is left exactly as it was.
+    if (SpecularPass::isOn(mFrameSettings)) addPassStep(*mSpecular);
     mSteps.push_back({"post and tone map", [this] {
                           mTotal = &runPostPasses(*mInputs);
                           mTonemap->setInput(*mTotal);

@@ -15,6 +15,7 @@
 #include "render/photon_trace_pass.h"
 #include "render/post_pass.h"
 #include "render/shading_passes.h"
+#include "render/specular_pass.h"
 #include "render/splat_pass.h"
 #include "render/upsample_pass.h"
 #include "scene/scene.h"
@@ -144,7 +145,7 @@ class FrameRunner {
     void updateFrameConstants();
     void resetHistory();
     // Every pass in frame order, for resize and shader reload.
-    std::array<Pass*, 16> getPasses() const;
+    std::array<Pass*, 17> getPasses() const;
     void runPass(Pass& pass, const FrameInputs& inputs);
     // The post passes that are on, chained from the composed image; returns their output (the
     // composed image when none is on).
@@ -208,6 +209,7 @@ class FrameRunner {
     std::unique_ptr<AccumulatePass> mAccumulate;
     std::unique_ptr<DirectPass> mDirect;
     std::unique_ptr<ComposePass> mCompose;
+    std::unique_ptr<SpecularPass> mSpecular; // adds mirror and glass rays into compose's image
     std::unique_ptr<MotionBlurPass> mMotionBlur;
     std::unique_ptr<DepthBlurPass> mDepthBlur;
     std::unique_ptr<BloomPass> mBloom;

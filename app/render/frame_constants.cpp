@@ -4,6 +4,8 @@
 #include "core/strings.h"
 #include "scene/json_reader.h"
 
+#include <shared/specular_data.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -89,6 +91,9 @@ gpu::FrameConstants computeFrameConstants(const Scene& scene, const GpuScene& gp
                           static_cast<float>(gpuScene.getLightResolution()), 0.0f, 0.0f);
     fc.tonemap = glm::vec4(0.0f, std::exp2(settings.exposureStops), 1.0f / settings.gamma,
                            settings.luminanceMax.value_or(0.0f));
+    fc.specularTrace = glm::vec4(
+        settings.specularDepth > 0 && settings.bounces > 0 ? gpu::kSpecularTraceMinExponent : 0.0f,
+        0.0f, 0.0f, 0.0f);
     return fc;
 }
 

@@ -120,6 +120,7 @@ FrameSettings resolveFrameSettings(const Settings& settings) {
     f.photons = settings.getInt("photons");
     f.frameMsTarget = settings.getFloat("frame_ms_target");
     f.bounces = settings.getInt("bounces");
+    f.specularDepth = settings.getInt("specular_depth");
     f.bouncesSet = settings.isSet("bounces");
     f.referenceMethod = getChoice(settings, "reference_method");
     f.importanceSamples = settings.getInt("importance_samples");

@@ -46,6 +46,8 @@ struct FrameSettings {
     int photons = 0;
     float frameMsTarget = 0.0f; // 0: the budget as set
     int bounces = 0;
+    // Levels of mirror and refraction rays traced from viewer pixels (SpecularPass); 0: off.
+    int specularDepth = 0;
     bool bouncesSet = false;      // the reference path tracer has its own default
     uint32_t referenceMethod = 0; // gpu::kReferencePath, kReferenceLight
     float importance = 0.0f;      // aimed share; 0 when importanceSamples is 0

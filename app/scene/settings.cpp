@@ -111,6 +111,18 @@ const std::vector<SettingDesc>& table() {
          "",
          "indirect light that reflected 1..bounces times is kept (0: direct light only)",
          {}},
+        {"specular_depth",
+         SettingType::Int,
+         3,
+         0,
+         6, // each level doubles the rays a pixel may trace (a reflected and a refracted one)
+         "",
+         "levels of rays traced from what the camera sees in mirrors (Phong exponent >= 64) and "
+         "glass: a reflected ray (the Phong lobe's and Fresnel's reflectance) and a refracted one "
+         "per level, each hit shaded with direct light (shadow rays) and the indirect light of "
+         "the visible pixel showing the same point (else an ambient estimate); at most `bounces` "
+         "levels; 0 = off (mirrors shaded by their Phong lobe only, glass black)",
+         {}},
         {"reference_method", SettingType::Enum, 0, 0, 1, "",
          "estimator of --mode reference: path (camera paths with next-event estimation to each "
          "light; cannot see a point, spot or sun light through glass or in a mirror) or light "

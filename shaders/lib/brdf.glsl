@@ -7,3 +7,15 @@
 vec3 evaluateBrdf(vec3 diffuse, vec4 specularExponent, vec3 n, vec3 wi, vec3 wo) {
     return evaluateSurfaceBrdf(diffuse, specularExponent, n, wi, wo);
 }
+
+// The BRDF the splats shade a viewer pixel with (frame.specularTrace.x = traceExponent): where
+// the specular pass traces the pixel's lobe as a mirror ray, that ray carries all the light the
+// lobe reflects but the lights' own (direct.frag), so the photons add only the diffuse lobe.
+vec3 evaluateSplatBrdf(vec3 diffuse, vec4 specularExponent, vec3 n, vec3 wi, vec3 wo,
+                       float traceExponent) {
+    if (traceExponent > 0.0 && hasSpecularLobe(specularExponent.rgb) &&
+        specularExponent.w >= traceExponent) {
+        return evaluateDiffuseLobe(diffuse, specularExponent.rgb, dot(n, wi), dot(n, wo));
+    }
+    return evaluateSurfaceBrdf(diffuse, specularExponent, n, wi, wo);
+}

@@ -113,8 +113,11 @@ struct FrameConstants {
     vec4 tonemap;        // x = eye adaptation's weight this frame (1: the derived white point
                          // at once), y = exposure scale, z = 1/gamma, w = luminance_max (<=0:
                          // derived)
+    vec4 specularTrace;  // x = Phong exponent from which the specular pass traces a viewer pixel's
+                         // lobe as a mirror ray (the splats then shade only its diffuse lobe);
+                         // 0: nothing traced (specular_depth 0). yzw unused
 };
-ISPM_STATIC_ASSERT_SIZE(FrameConstants, 224);
+ISPM_STATIC_ASSERT_SIZE(FrameConstants, 240);
 
 // Parameters of accumulate.frag (std140, at kBindingPassParams).
 struct AccumulateParams {

@@ -85,7 +85,8 @@ void main() {
                                               sBitangent[j].xyz, floatBitsToUint(sNormal[j].w),
                                               poles, params.shape.x, position.xyz, n);
             if (weight < 0.0) continue;
-            vec3 f = evaluateBrdf(diffuse, specular, n, -sIncoming[j].xyz, wo);
+            vec3 f = evaluateSplatBrdf(diffuse, specular, n, -sIncoming[j].xyz, wo,
+                                           frame.specularTrace.x);
             sum += vec4(f * sPower[j].rgb * weight, 1.0);
         }
     }

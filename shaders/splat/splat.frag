@@ -37,6 +37,7 @@ void main() {
     if (weight < 0.0) discard;
     vec3 wi = -vIncoming;
     vec3 wo = normalize(frame.cameraPosition.xyz - position.xyz);
-    vec3 f = evaluateBrdf(texelFetch(uDiffuse, pixel, 0).rgb, texelFetch(uSpecular, pixel, 0), n, wi, wo);
+    vec3 f = evaluateSplatBrdf(texelFetch(uDiffuse, pixel, 0).rgb, texelFetch(uSpecular, pixel, 0), n,
+                               wi, wo, frame.specularTrace.x);
     outRadiance = vec4(f * vPower * weight, 1.0);
 }

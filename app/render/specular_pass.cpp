@@ -1,0 +1,62 @@
+// SpecularPass: a compute pass over the viewer G-buffer (specular/specular_trace.comp).
+#include "render/specular_pass.h"
+
+#include "gl/state.h"
+#include "render/gpu_scene.h"
+
+#include <shared/scene_data.h>
+#include <shared/specular_data.h>
+
+#include <algorithm>
+
+namespace ispm {
+namespace {
+
+constexpr GLuint kImageUnitTotal = 0; // binding of uTotal in specular_trace.comp
+// A hit reprojected onto a visible pixel counts as that pixel's point when their distances from
+// the eye differ by less than this share: G-buffer positions are exact to float rounding, and
+// the pixel's point lies up to half a pixel's footprint off the hit.
+constexpr float kReprojectionDepthTolerance = 0.02f;
+
+} // namespace
+
+SpecularPass::SpecularPass(const GBuffer& viewer, const gl::Texture& indirect,
+                           const gl::Texture& total)
+    : mViewer(viewer), mIndirect(indirect), mTotal(total),
+      mProgram(
+          ReloadableProgram({.label = "specular trace",
+                             .stages = {{gl::ShaderStage::Compute, "specular/specular_trace.comp"}},
+                             .defines = getGBufferDefines()})),
+      mParams("specular parameters", sizeof(gpu::SpecularParams)) {}
+
+bool SpecularPass::isOn(const FrameSettings& settings) {
+    return settings.specularDepth > 0 && settings.bounces > 0;
+}
+
+void SpecularPass::execute(const FrameInputs& inputs) {
+    const FrameSettings& settings = inputs.settings;
+    if (!isOn(settings)) return;
+    gpu::SpecularParams params{};
+    // Light seen in a mirror reflected once more than the mirror's own: `bounces` caps the
+    // levels as it caps the reference's camera paths.
+    params.control = glm::uvec4(
+        static_cast<uint32_t>(std::min(settings.specularDepth, settings.bounces)), 0u, 0u, 0u);
+    params.ray = glm::vec4(inputs.scene.getRayEpsilon(), kReprojectionDepthTolerance, 0.0f, 0.0f);
+    mParams.upload(0, sizeof(params), &params);
+    inputs.scene.bind();
+    inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
+    mParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
+    mViewer.bindTextures(gpu::kUnitGBufferFirst);
+    mIndirect.bindUnit(gpu::kUnitIndirect);
+    mTotal.bindImage(kImageUnitTotal, true, true);
+    mProgram.use();
+    const auto groups = [](int size) {
+        return (static_cast<unsigned>(size) + gpu::kSpecularGroupSize - 1) /
+               gpu::kSpecularGroupSize;
+    };
+    gl::dispatchCompute(groups(inputs.width), groups(inputs.height));
+    // The post passes and the tone map sample the image written here.
+    gl::memoryBarrier(gl::Barrier::TextureFetch | gl::Barrier::ImageAccess);
+}
+
+} // namespace ispm

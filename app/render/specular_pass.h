@@ -1,0 +1,35 @@
+// SpecularPass: what the camera sees in mirrors and glass. Every viewer pixel on a mirror-like
+// lobe (Phong exponent >= kSpecularTraceMinExponent) or a transmissive surface traces a
+// reflected and a refracted ray through the BVH, `specular_depth` levels deep, shades each hit
+// with direct light (shadow rays) and the indirect light of the visible pixel showing the same
+// point (else the view's ambient estimate), and adds the result into the composed image in
+// place. Other pixels are left as they were.
+#pragma once
+
+#include "gl/objects.h"
+#include "render/gbuffer.h"
+#include "render/pass.h"
+#include "render/reloadable_program.h"
+
+namespace ispm {
+
+class SpecularPass final : public Pass {
+  public:
+    // `indirect`: the indirect light of the viewer's pixels (accumulated), read at the pixels
+    // the rays' hits reproject onto; `total`: the composed image, added to.
+    SpecularPass(const GBuffer& viewer, const gl::Texture& indirect, const gl::Texture& total);
+    const char* getName() const override { return "specular"; }
+    void execute(const FrameInputs& inputs) override;
+    void reloadPrograms(ShaderReloadReport& report) override { mProgram.reloadIfChanged(report); }
+    // Whether the pass has anything to do this frame (specular_depth and bounces > 0).
+    static bool isOn(const FrameSettings& settings);
+
+  private:
+    const GBuffer& mViewer;
+    const gl::Texture& mIndirect;
+    const gl::Texture& mTotal;
+    ReloadableProgram mProgram;
+    gl::Buffer mParams;
+};
+
+} // namespace ispm

@@ -1,0 +1,178 @@
+// What the camera sees in mirrors and glass: every viewer pixel on a mirror lobe or a
+// transmissive surface traces one reflected and one refracted ray per level through the BVH,
+// depth first, and adds what they see into the composed image. A hit is shaded with direct
+// light (a shadow ray to each light, as the reference does) and the indirect light of the
+// visible pixel it reprojects onto at the same depth; where no visible pixel shows it, an
+// ambient estimate: its diffuse reflectance times the mean indirect light per unit reflectance
+// over a grid of visible pixels (E / pi of the view's average indirect irradiance).
+// Weights follow the reference's camera paths (reference.comp, photon_scatter.h): the Phong
+// lobe's f cos / pdf at its axis, Fresnel (exact, for dielectrics) times the transmittance for
+// glass, and (n_i / n_t)^2 on radiance across a refraction.
+#include "lib/scene_buffers.glsl"
+#include "lib/frame_constants.glsl"
+#include "lib/bvh.glsl"
+#include "lib/brdf.glsl"
+#include "lib/lights.glsl"
+#include "shared/specular_data.h"
+
+#include "lib/viewer_gbuffer.glsl"
+layout(binding = kUnitIndirect) uniform sampler2D uIndirect;
+
+layout(local_size_x = kSpecularGroupSize, local_size_y = kSpecularGroupSize) in;
+layout(binding = 0, rgba32f) uniform image2D uTotal;
+
+layout(std140, binding = kBindingPassParams) uniform SpecularParamsBlock { SpecularParams params; };
+
+// A ray whose every channel weighs less than this adds nothing visible: it is not traced.
+const float kMinRayWeight = 1e-4;
+
+struct PendingRay {
+    vec3 origin;
+    vec3 dir;
+    vec3 weight;
+    uint level; // 1 for the rays leaving the visible surface
+};
+
+// The ambient estimate samples the view on this many pixels per axis, each group all of them
+// (kSpecularGroupSize^2 invocations share the fetches); 256 samples of already smoothed
+// splats average to a few percent.
+const uint kAmbientGrid = 16u;
+const uint kGroupInvocations = kSpecularGroupSize * kSpecularGroupSize;
+// Pixels darker in diffuse reflectance than this are left out: dividing their indirect light
+// by it would magnify the splats' noise.
+const float kMinAmbientReflectance = 0.02;
+shared vec4 sAmbient[kGroupInvocations]; // rgb = sum of indirect / diffuse, a = samples
+
+vec3 gAmbient = vec3(0.0); // computeAmbient's result
+PendingRay gStack[kMaxSpecularDepth + 1u];
+uint gTop = 0u;
+
+void pushRay(vec3 position, vec3 n, vec3 dir, vec3 weight, uint level, float offset) {
+    if (max(weight.r, max(weight.g, weight.b)) < kMinRayWeight) return;
+    // Leave on the side the new direction points to (refraction crosses the surface).
+    vec3 origin = position + (dot(dir, n) >= 0.0 ? n : -n) * offset;
+    gStack[gTop++] = PendingRay(origin, dir, weight, level);
+}
+
+// The rays a surface at `position` sends on for a ray along `dir`: n faces where `dir` came
+// from, `frontFace` says whether that is the geometric front (for the index of refraction).
+void scatterRays(vec3 position, vec3 n, bool frontFace, vec3 dir, vec3 diffuse, vec4 specular,
+                 vec4 transmissive, vec3 weight, uint level) {
+    float cosIn = clamp(-dot(dir, n), 0.0, 1.0);
+    float offset = computeRayOffset(position, params.ray.x);
+    vec3 reflected = vec3(0.0);
+    if (isMirrorLobe(specular)) reflected += computeMirrorWeight(diffuse, specular, cosIn);
+    if (isTransmissive(transmissive)) {
+        float eta = frontFace ? 1.0 / transmissive.w : transmissive.w;
+        float fresnel = computeFresnel(cosIn, eta);
+        reflected += transmissive.rgb * fresnel;
+        if (fresnel < 1.0) {
+            float sin2T = eta * eta * (1.0 - cosIn * cosIn);
+            vec3 refracted = normalize(dir * eta + n * (eta * cosIn - sqrt(1.0 - sin2T)));
+            pushRay(position, n, refracted,
+                    weight * transmissive.rgb * ((1.0 - fresnel) *
+                                                 computeRefractedRadianceScale(frontFace, transmissive.w)),
+                    level, offset);
+        }
+    }
+    pushRay(position, n, reflect(dir, n), weight * reflected, level, offset);
+}
+
+// Direct light at a hit, with a shadow ray per light (shadow maps see only what light cameras
+// see; glass blocks shadow rays, as in the reference).
+vec3 shadeDirect(vec3 position, vec3 n, vec3 wo, GpuMaterial m) {
+    float offset = computeRayOffset(position, params.ray.x);
+    vec3 origin = position + n * offset;
+    vec3 radiance = vec3(0.0);
+    for (uint i = 0u; i < frame.counts.x; ++i) {
+        LightSample s = sampleLight(lights[i], position);
+        float cosTheta = dot(n, s.wi);
+        if (cosTheta <= 0.0 || all(equal(s.irradiance, vec3(0.0)))) continue;
+        RayHit blocker;
+        if (traceRay(origin, s.wi, s.distanceM - 2.0 * offset, blocker)) continue;
+        radiance += evaluateBrdf(m.diffuse.rgb, m.specular, n, s.wi, wo) * s.irradiance * cosTheta;
+    }
+    return radiance;
+}
+
+// The view's mean indirect light per unit diffuse reflectance, over kAmbientGrid^2 pixels that
+// show a diffuse surface the pass does not trace. Every invocation of the group must call it.
+void computeAmbient() {
+    uint local = gl_LocalInvocationIndex;
+    vec4 sum = vec4(0.0);
+    for (uint i = local; i < kAmbientGrid * kAmbientGrid; i += kGroupInvocations) {
+        vec2 cell = (vec2(i % kAmbientGrid, i / kAmbientGrid) + 0.5) / float(kAmbientGrid);
+        ivec2 pixel = ivec2(cell * frame.imageSize.xy);
+        if (texelFetch(uPosition, pixel, 0).w < 0.5) continue;
+        if (isMirrorLobe(texelFetch(uSpecular, pixel, 0)) ||
+            isTransmissive(texelFetch(uTransmissive, pixel, 0))) {
+            continue;
+        }
+        vec3 diffuse = texelFetch(uDiffuse, pixel, 0).rgb;
+        if (min(diffuse.r, min(diffuse.g, diffuse.b)) < kMinAmbientReflectance) continue;
+        sum += vec4(texelFetch(uIndirect, pixel, 0).rgb / diffuse, 1.0);
+    }
+    sAmbient[local] = sum;
+    barrier();
+    if (local == 0u) {
+        vec4 total = vec4(0.0);
+        for (uint i = 0u; i < kGroupInvocations; ++i)
+            total += sAmbient[i];
+        sAmbient[0] = total;
+    }
+    barrier();
+    vec4 total = sAmbient[0];
+    gAmbient = total.a > 0.0 ? total.rgb / total.a : vec3(0.0);
+}
+
+// The indirect light of a hit: that of the visible pixel it projects onto when that pixel shows
+// the same point (its distance from the eye alike), else the ambient estimate.
+vec3 lookUpIndirect(vec3 position, vec3 diffuse) {
+    vec3 ambient = diffuse * gAmbient;
+    vec4 clip = frame.clipFromWorld * vec4(position, 1.0);
+    if (clip.w <= 0.0) return ambient;
+    vec2 ndc = clip.xy / clip.w;
+    if (any(greaterThan(abs(ndc), vec2(1.0)))) return ambient;
+    ivec2 pixel = min(ivec2((ndc * 0.5 + 0.5) * frame.imageSize.xy), ivec2(frame.imageSize.xy) - 1);
+    vec4 visible = texelFetch(uPosition, pixel, 0);
+    if (visible.w < 0.5) return ambient;
+    float hitDistance = distance(position, frame.cameraPosition.xyz);
+    float visibleDistance = distance(visible.xyz, frame.cameraPosition.xyz);
+    if (abs(hitDistance - visibleDistance) > params.ray.y * hitDistance) return ambient;
+    return texelFetch(uIndirect, pixel, 0).rgb;
+}
+
+void main() {
+    computeAmbient(); // before any invocation leaves: the group shares the work
+    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(pixel, ivec2(frame.imageSize.xy)))) return;
+    vec4 position = texelFetch(uPosition, pixel, 0);
+    if (position.w < 0.5) return;
+    vec4 specular = texelFetch(uSpecular, pixel, 0);
+    vec4 transmissive = texelFetch(uTransmissive, pixel, 0);
+    if (!isMirrorLobe(specular) && !isTransmissive(transmissive)) return; // left as composed
+    vec4 normal = texelFetch(uNormal, pixel, 0); // faces the eye; w: +1 on the front face
+    vec3 dir = normalize(position.xyz - frame.cameraPosition.xyz);
+    uint levels = params.control.x;
+    gTop = 0u;
+    scatterRays(position.xyz, normal.xyz, normal.w > 0.0, dir, texelFetch(uDiffuse, pixel, 0).rgb,
+                specular, transmissive, vec3(1.0), 1u);
+    vec3 radiance = vec3(0.0);
+    while (gTop > 0u) {
+        PendingRay ray = gStack[--gTop];
+        RayHit hit;
+        if (!traceRay(ray.origin, ray.dir, kNoHitDistance, hit)) continue; // the background lights nothing
+        vec3 hitPosition = ray.origin + ray.dir * hit.t;
+        vec3 geometric = computeHitNormal(hit);
+        bool frontFace = dot(geometric, ray.dir) < 0.0;
+        vec3 n = frontFace ? geometric : -geometric;
+        GpuMaterial m = materials[triangles[hit.triangle].w];
+        radiance += ray.weight * (shadeDirect(hitPosition, n, -ray.dir, m) + lookUpIndirect(hitPosition, m.diffuse.rgb));
+        if (ray.level < levels) {
+            scatterRays(hitPosition, n, frontFace, ray.dir, m.diffuse.rgb, m.specular, m.transmissive,
+                        ray.weight, ray.level + 1u);
+        }
+    }
+    vec4 total = imageLoad(uTotal, pixel);
+    imageStore(uTotal, pixel, vec4(total.rgb + radiance, total.a));
+}
