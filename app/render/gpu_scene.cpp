@@ -4,6 +4,7 @@
 #include "render/scene_texture_array.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <span>
@@ -53,10 +54,12 @@ bool isSameEmission(const gpu::GpuLight& a, const gpu::GpuLight& b) {
            a.views.z == b.views.z;
 }
 
-double computeSceneSurfaceArea(const Scene& scene) {
-    double area = 0.0;
+// Each instance's triangles' area in world space (m^2).
+std::vector<double> computeInstanceAreas(const Scene& scene) {
+    std::vector<double> areas;
     for (const Instance& inst : scene.instances) {
         const Mesh& mesh = scene.meshes[inst.meshIndex];
+        double area = 0.0;
         for (const glm::uvec3& t : mesh.triangles) {
             const auto toWorld = [&](uint32_t i) {
                 return glm::vec3(inst.worldFromObject * glm::vec4(mesh.positions[i], 1.0f));
@@ -64,8 +67,42 @@ double computeSceneSurfaceArea(const Scene& scene) {
             const glm::vec3 p0 = toWorld(t.x);
             area += 0.5 * double(glm::length(glm::cross(toWorld(t.y) - p0, toWorld(t.z) - p0)));
         }
+        areas.push_back(area);
     }
-    return area;
+    return areas;
+}
+
+// Whether `box` has a point on the inner side of every side plane of `camera`'s view pyramid
+// (any depth in front of the eye): conservative, a box that straddles two planes outside the
+// pyramid's corner counts as inside.
+bool meetsViewPyramid(const Aabb& box, const Camera& camera, float aspect) {
+    const glm::vec3 forward = glm::normalize(camera.target - camera.position);
+    const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
+    const glm::vec3 up = glm::cross(right, forward);
+    const float tanY = std::tan(glm::radians(camera.fovYDeg) * 0.5f);
+    const float tanX = tanY * aspect;
+    // Inward normals: the eye plane, then left, right, bottom, top.
+    const std::array<glm::vec3, 5> normals = {
+        forward, glm::normalize(right + tanX * forward), glm::normalize(-right + tanX * forward),
+        glm::normalize(up + tanY * forward), glm::normalize(-up + tanY * forward)};
+    for (const glm::vec3& n : normals) {
+        // The box's corner furthest along n: outside when even it is behind the plane.
+        const glm::vec3 corner =
+            glm::mix(box.lo, box.hi, glm::vec3(glm::greaterThan(n, glm::vec3(0.0f))));
+        if (glm::dot(n, corner - camera.position) < 0.0f) return false;
+    }
+    return true;
+}
+
+double computeViewedArea(const std::vector<double>& areas, const std::vector<Aabb>& boxes,
+                         const std::optional<Camera>& viewer, float aspect) {
+    double all = 0.0;
+    double viewed = 0.0;
+    for (size_t i = 0; i < areas.size(); ++i) {
+        all += areas[i];
+        if (viewer && meetsViewPyramid(boxes[i], *viewer, aspect)) viewed += areas[i];
+    }
+    return viewed > 0.0 ? viewed : all;
 }
 
 // The floor of the shaders' ray offsets (computeRayOffset in lib/scene_buffers.glsl, which
@@ -119,7 +156,7 @@ GpuScene::GpuScene(const Scene& scene, int lightResolution) : mLightResolution(l
     const std::vector<glm::mat4> transforms = getTransforms(mInstances);
     mPreviousTransforms =
         gl::Buffer::fromSpan<glm::mat4>("previous instance transforms", transforms);
-    mSurfaceAreaM2 = computeSceneSurfaceArea(scene);
+    mInstanceAreasM2 = computeInstanceAreas(scene);
     uploadTopLevel();
     uploadLights(scene);
 }
@@ -142,7 +179,7 @@ void GpuScene::updateDynamic(const Scene& scene) {
     mInstances = buildInstances(scene, mBvh);
     mInstanceBuffer.upload<gpu::GpuInstance>(mInstances);
     mTransformsMoved = true;
-    mSurfaceAreaM2 = computeSceneSurfaceArea(scene); // scaled instances change it
+    mInstanceAreasM2 = computeInstanceAreas(scene); // scaled instances change them
     uploadLights(scene);
 }
 
@@ -150,6 +187,7 @@ void GpuScene::uploadLights(const Scene& scene) {
     mInstanceBounds = scene.computeInstanceBounds();
     mBounds = computeUnion(mInstanceBounds);
     mRayEpsilon = computeRayEpsilon(mBounds, mInstanceBounds);
+    mSurfaceAreaM2 = computeViewedArea(mInstanceAreasM2, mInstanceBounds, mViewer, mViewerAspect);
     mLightCameras = computeLightCameras(scene, mLightResolution);
     // Shadow-only views after every light's own, so the emitting views keep their indices.
     std::vector<uint32_t> fittedView(scene.lights.size(), 0u);

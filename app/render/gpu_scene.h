@@ -53,7 +53,10 @@ class GpuScene {
     const Aabb& getBounds() const { return mBounds; }
     // Each instance's world box (Scene::computeInstanceBounds), kept with getBounds.
     const std::vector<Aabb>& getInstanceBounds() const { return mInstanceBounds; }
-    // Total area of every instance's triangles in world space (m^2), for derived splat radii.
+    // The area photons are spread over, for derived splat radii (m^2): of the instances whose
+    // boxes meet the viewer's view pyramid (setViewer; photons go where the viewer looks), or
+    // of every instance before a viewer is set or when none meets it. A huge object out of
+    // view no longer widens the discs of the room in view.
     double getSurfaceArea() const { return mSurfaceAreaM2; }
     size_t getGpuBytes() const;
     const BvhScene& getBvh() const { return mBvh; }
@@ -82,8 +85,9 @@ class GpuScene {
     int mLightResolution = 0;
     Aabb mBounds;
     std::vector<Aabb> mInstanceBounds;
-    float mRayEpsilon = 0.0f; // with the bounds
-    double mSurfaceAreaM2 = 0.0;
+    float mRayEpsilon = 0.0f;             // with the bounds
+    std::vector<double> mInstanceAreasM2; // each instance's, world space
+    double mSurfaceAreaM2 = 0.0;          // getSurfaceArea, with the bounds
     gl::Buffer mPositions;
     gl::Buffer mTriangles;
     gl::Buffer mInstanceBuffer;

@@ -26,9 +26,9 @@ struct SplatRadii {
 };
 
 // Settings where given, else derived: a base radius r0 such that `photons` discs of radius r0
-// cover the scene's surface area kSplatOverlap times; radius_min = r0 / 2 at dist_min = 0,
-// radius_max = 2 r0 at dist_max = the scene's diagonal. radius_scale multiplies both radii.
-// `surfaceAreaM2` and `diagonalM` describe the scene (GpuScene keeps both up to date).
+// cover the area in view (GpuScene::getSurfaceArea) kSplatOverlap times; radius_min = r0 / 2 at
+// dist_min = 0, radius_max = 2 r0 at dist_max = the scene's diagonal. radius_scale multiplies both
+// radii. `surfaceAreaM2` and `diagonalM` describe the scene (GpuScene keeps both up to date).
 SplatRadii computeSplatRadii(double surfaceAreaM2, float diagonalM, const FrameSettings& settings,
                              float radiusScale);
 

@@ -185,7 +185,8 @@ const std::vector<SettingDesc>& table() {
          1e6,
          "m",
          "travel: splat radius at dist_min or less; path_density: the smallest radius; derived: "
-         "r0 / 2, where `photons` discs of radius r0 cover the scene's surface area 32 times; "
+         "r0 / 2, where `photons` discs of radius r0 cover the area in view 32 times (of the "
+         "objects whose boxes meet the view pyramid); "
          "density: a floor when set",
          {},
          true},
