@@ -4,9 +4,9 @@
 // lights or the camera. They agree only if the BRDF is reciprocal and each sampler's weight is
 // f cos / pdf, so agreement checks both.
 #include "support/gl_fixture.h"
+#include "support/render_support.h"
 
 #include "image/metrics.h"
-#include "render/reference_pass.h"
 #include "scene/scene_loader.h"
 
 namespace ispm::test {
@@ -15,18 +15,6 @@ namespace {
 class GlossyReferenceTest : public GlTest {};
 
 constexpr int kSize = 32; // px
-
-Image renderReference(const Scene& scene, const char* method, int spp, int bounces) {
-    Settings settings;
-    settings.set("width", kSize, "test");
-    settings.set("height", kSize, "test");
-    settings.set("bounces", bounces, "test");
-    settings.setEnum("reference_method", method, "test");
-    ReferencePass reference(scene, settings);
-    for (int s = 0; s < spp; ++s)
-        reference.addSample();
-    return reference.readMean();
-}
 
 TEST_F(GlossyReferenceTest, PathAndLightTracerAgreeOnAGlossyCornellBox) {
     Scene scene = loadScene(std::string(ISPM_ASSET_DIR) + "/scenes/cornell.json");
@@ -40,8 +28,8 @@ TEST_F(GlossyReferenceTest, PathAndLightTracerAgreeOnAGlossyCornellBox) {
         m.specular = glm::vec3(kSpecular);
         m.phongExponent = kExponent;
     }
-    const Image light = renderReference(scene, "light", 256, 3);
-    const Image path = renderReference(scene, "path", 64, 3);
+    const Image light = renderReference(scene, "light", kSize, 256, 3);
+    const Image path = renderReference(scene, "path", kSize, 64, 3);
     const ImageMetrics m = computeMetrics(light, path);
     std::printf("glossy cornell light vs path: energy %.4f rel RMSE 4x4 %.3f\n", m.energy,
                 m.relRmse4);

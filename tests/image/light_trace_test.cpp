@@ -3,9 +3,9 @@
 // path tracer on a diffuse scene.
 #include "support/analytic_scenes.h"
 #include "support/gl_fixture.h"
+#include "support/render_support.h"
 
 #include "image/metrics.h"
-#include "render/reference_pass.h"
 #include "scene/mesh_builder.h"
 #include "scene/scene_loader.h"
 
@@ -23,18 +23,6 @@ constexpr int kSize = 32;           // px; one light path per pixel per sample
 constexpr int kBlockPx = 8;         // closed forms are compared on 8x8-pixel block means
 constexpr float kRho = 0.5f;        // the floor's diffuse reflectance
 constexpr float kIntensity = 10.0f; // W/sr
-
-Image renderReference(const Scene& scene, const char* method, int spp, int bounces) {
-    Settings settings;
-    settings.set("width", kSize, "test");
-    settings.set("height", kSize, "test");
-    settings.set("bounces", bounces, "test");
-    settings.setEnum("reference_method", method, "test");
-    ReferencePass reference(scene, settings);
-    for (int s = 0; s < spp; ++s)
-        reference.addSample();
-    return reference.readMean();
-}
 
 Material makeMaterial(const char* name) {
     Material m;
@@ -76,7 +64,7 @@ TEST_F(LightTraceTest, PointLightOverPlaneMatchesClosedForm) {
     scene.camera.fovYDeg = 40.0f;
     // 512 samples: ~19% of the light's paths land in view, ~100k in all, ~6k per block: the
     // block means scatter by ~1.5% (measured 0.4-3%), the image mean by ~0.4%.
-    const Image image = renderReference(scene, "light", 512, 0);
+    const Image image = renderReference(scene, "light", kSize, 512, 0);
     const double ratio = compareBlocks(
         image, scene,
         [&](const glm::dvec3& p) { return computePlaneRadiance(kRho, kIntensity, kHeight, p); },
@@ -120,13 +108,13 @@ TEST_F(LightTraceTest, MirrorAddsTheLightsImage) {
     };
     // Bounces 1: the floor's light after one reflection (off the mirror); the floor-mirror-floor
     // light is bounce 2 and left out of the closed form.
-    const Image light = renderReference(scene, "light", 512, 1);
+    const Image light = renderReference(scene, "light", kSize, 512, 1);
     const double ratio = compareBlocks(light, scene, expectedAt, 0.06);
     std::printf("mirror: light tracer mean ratio %.4f\n", ratio);
     // 1.5% as above. The mirror adds ~35% here: without it (or with it twice) this fails.
     EXPECT_NEAR(ratio, 1.0, 0.015);
     // Camera paths never find the point light in the mirror: they see the direct part only.
-    const Image path = renderReference(scene, "path", 16, 1);
+    const Image path = renderReference(scene, "path", kSize, 16, 1);
     double pathSum = 0.0;
     double expectedSum = 0.0;
     for (int y = 0; y < kSize; ++y) {
@@ -175,7 +163,7 @@ TEST_F(LightTraceTest, GlassSlabTransmitsTheSun) {
         double(kRho) / glm::pi<double>() * double(kIrradiance) * (1.0 - r) * (1.0 - r);
     // 1024 samples: the view is ~14% of the sun's disc (radius 1.49 m), ~150k paths reach it:
     // ~1% noise per block, ~0.3% on the mean (8192 samples measured 1.0008).
-    const Image image = renderReference(scene, "light", 1024, 2);
+    const Image image = renderReference(scene, "light", kSize, 1024, 2);
     const double ratio = compareBlocks(
         image, scene, [&](const glm::dvec3&) { return expected; }, 0.06);
     std::printf("glass slab: mean ratio %.4f (transmittance %.4f)\n", ratio, (1 - r) * (1 - r));
@@ -186,8 +174,8 @@ TEST_F(LightTraceTest, GlassSlabTransmitsTheSun) {
 
 TEST_F(LightTraceTest, AgreesWithThePathTracerOnTheCornellBox) {
     const Scene scene = loadScene(std::string(ISPM_ASSET_DIR) + "/scenes/cornell.json");
-    const Image light = renderReference(scene, "light", 256, 3);
-    const Image path = renderReference(scene, "path", 64, 3);
+    const Image light = renderReference(scene, "light", kSize, 256, 3);
+    const Image path = renderReference(scene, "path", kSize, 64, 3);
     const ImageMetrics m = computeMetrics(light, path);
     std::printf("cornell light vs path: energy %.4f rel RMSE 4x4 %.3f\n", m.energy, m.relRmse4);
     // Measured 1.0089 and 0.077 (both estimators' noise; 64x64, 64 samples each: 0.999, 0.12).

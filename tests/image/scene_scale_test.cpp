@@ -4,6 +4,7 @@
 // clip planes, the sun's footprint and the light's distance floor all follow the scene's size;
 // offsets fixed in metres lost the indirect light at 1e-4 and blackened the image at 1e-6.
 #include "support/gl_fixture.h"
+#include "support/render_support.h"
 
 #include "image/metrics.h"
 #include "render/frame.h"
@@ -19,6 +20,15 @@ class SceneScaleTest : public GlTest {};
 
 constexpr int kSize = 64;
 
+Settings makeSettings(const Scene& scene) {
+    Settings s = scene.settings;
+    s.set("width", kSize, "test");
+    s.set("height", kSize, "test");
+    s.set("photons", 20000, "test");
+    s.set("shadow_map_size", 512, "test");
+    return s;
+}
+
 Image renderScaled(float k, Aov aov) {
     Scene scene = loadScene(std::string(ISPM_ASSET_DIR) + "/scenes/cornell.json");
     const glm::mat4 scale = glm::scale(glm::mat4(1.0f), glm::vec3(k));
@@ -30,14 +40,7 @@ Image renderScaled(float k, Aov aov) {
         light.position *= k;
         light.intensity *= k * k;
     }
-    Settings s = scene.settings;
-    s.set("width", kSize, "test");
-    s.set("height", kSize, "test");
-    s.set("photons", 20000, "test");
-    s.set("shadow_map_size", 512, "test");
-    FrameRunner runner(scene, s, gl::TimingMethod::CpuFinish);
-    runner.renderFrame();
-    return readTextureImage(runner.getAov(aov));
+    return renderAov(scene, makeSettings(scene), aov);
 }
 
 TEST_F(SceneScaleTest, TheCornellBoxLooksTheSameAtAnySize) {
@@ -72,16 +75,7 @@ TEST_F(SceneScaleTest, AHugeDistantObjectLeavesTheRoomAsItWas) {
     block.triangleMaterials = {0, 0, 0, 0};
     scene.instances.push_back({static_cast<uint32_t>(scene.meshes.size()), glm::mat4(1.0f)});
     scene.meshes.push_back(std::move(block));
-    const auto render = [](const Scene& s, Aov aov) {
-        Settings settings = s.settings;
-        settings.set("width", kSize, "test");
-        settings.set("height", kSize, "test");
-        settings.set("photons", 20000, "test");
-        settings.set("shadow_map_size", 512, "test");
-        FrameRunner runner(s, settings, gl::TimingMethod::CpuFinish);
-        runner.renderFrame();
-        return readTextureImage(runner.getAov(aov));
-    };
+    const auto render = [](const Scene& s, Aov aov) { return renderAov(s, makeSettings(s), aov); };
     for (Aov aov : {Aov::Direct, Aov::Indirect}) {
         const Image expected = render(plain, aov);
         const Image actual = render(scene, aov);

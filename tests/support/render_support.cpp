@@ -23,6 +23,18 @@ Image renderAov(const Scene& scene, const Settings& settings, Aov aov) {
     return readTextureImage(runner.getAov(aov));
 }
 
+Image renderReference(const Scene& scene, const char* method, int sizePx, int spp, int bounces) {
+    Settings settings;
+    settings.set("width", sizePx, "test");
+    settings.set("height", sizePx, "test");
+    settings.set("bounces", bounces, "test");
+    settings.setEnum("reference_method", method, "test");
+    ReferencePass reference(scene, settings);
+    for (int s = 0; s < spp; ++s)
+        reference.addSample();
+    return reference.readMean();
+}
+
 Image renderReferenceIndirect(const Scene& scene, const Settings& settings, int spp) {
     ReferencePass withBounces(scene, settings);
     Settings directOnly = settings;

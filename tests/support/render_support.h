@@ -12,6 +12,10 @@ namespace ispm::test {
 
 Image renderAov(const Scene& scene, const Settings& settings, Aov aov);
 
+// The mean of `spp` samples of the reference (`method` path or light, reference_method) at
+// sizePx x sizePx, light cut at `bounces`.
+Image renderReference(const Scene& scene, const char* method, int sizePx, int spp, int bounces);
+
 // The reference path tracer's indirect light: reference(bounces) - reference(0), both at `spp`.
 Image renderReferenceIndirect(const Scene& scene, const Settings& settings, int spp);
 
