@@ -48,11 +48,11 @@ FrameRunner::FrameRunner(const Scene& scene, const Settings& settings, gl::Timin
                                              mPhotonBuffers);
     mTrace = std::make_unique<PhotonTracePass>(mPhotonBuffers);
     mDensity = std::make_unique<PhotonDensityPass>(mPhotonBuffers);
-    mSplat =
-        std::make_unique<SplatPass>(mGBuffer->getGBuffer(), mPhotonBuffers, mDensity->getClip());
+    mSplat = std::make_unique<SplatPass>(mGBuffer->getGBuffer(), mPhotonBuffers, *mDensity);
     mDenoise = std::make_unique<DenoisePass>(mGBuffer->getGBuffer(), mSplat->getOutput());
     mDirect = std::make_unique<DirectPass>(mGBuffer->getGBuffer(), mLightViews->getGBuffer());
-    mUpsample = std::make_unique<UpsamplePass>(mGBuffer->getGBuffer(), mDenoise->getOutput());
+    mUpsample = std::make_unique<UpsamplePass>(mGBuffer->getGBuffer(), mDenoise->getOutput(),
+                                               mSplat->getCaustics());
     mAccumulate = std::make_unique<AccumulatePass>(mGBuffer->getGBuffer(), mDirect->getOutput(),
                                                    mUpsample->getOutput());
     mCompose = std::make_unique<ComposePass>(mGBuffer->getGBuffer(), mAccumulate->getDirect(),

@@ -98,12 +98,21 @@ void PhotonDensityPass::executeSlice(const FrameInputs& inputs, uint32_t stage, 
     }
     const uint32_t slots =
         std::bit_ceil(std::max(mBuffers.getResultCapacity(), 1u) * kSlotsPerPhoton);
-    const size_t cellBytes = size_t(slots) * gpu::kDensitySlotUints * sizeof(uint32_t);
+    // The table, then the caustic photons' draw command and list (a slot is 32 bytes: the
+    // list's offset suits any storage-buffer alignment up to 32 x slots).
+    mCausticOffset = size_t(slots) * gpu::kDensitySlotUints * sizeof(uint32_t);
+    const size_t cellBytes = mCausticOffset + gpu::kSplatDrawUvec4s * sizeof(glm::uvec4) +
+                             size_t(std::max(mBuffers.getResultCapacity(), 1u)) * sizeof(uint32_t);
     if (cellBytes != mCells.getSize()) mCells = gl::Buffer("photon density cells", cellBytes);
     const size_t clipBytes =
         size_t(std::max(mBuffers.getResultCapacity(), 1u)) * gpu::kClipVec4s * sizeof(glm::vec4);
     if (mClip.getSize() != clipBytes) mClip = gl::Buffer("splat clip distances", clipBytes);
-    if (stage == 0 && slice == 0) mCells.clearToZero();
+    if (stage == 0 && slice == 0) {
+        mCells.clearToZero();
+        const glm::uvec4 draw[gpu::kSplatDrawUvec4s] = {{gpu::kSplatCubeVertices, 0, 0, 0},
+                                                        {0, 0, 0, 0}};
+        mCells.upload(mCausticOffset, sizeof(draw), draw);
+    }
     const int neighbours = std::max(int(std::lround(float(inputs.settings.splatNeighbours) *
                                                     inputs.progressive.neighbourFactor)),
                                     1);
@@ -136,8 +145,9 @@ void PhotonDensityPass::executeSlice(const FrameInputs& inputs, uint32_t stage, 
     // The block is written anew for every dispatch (the GL orders the update after the
     // dispatch before it that read the last one).
     dispatch(sliceParams);
-    // The radius stage reads the counted table; the splat's vertex stage reads the radii.
-    gl::memoryBarrier(gl::Barrier::Storage);
+    // The radius stage reads the counted table; the splat's vertex stage reads the radii and
+    // the caustic list, its draw the caustic photons' count.
+    gl::memoryBarrier(gl::Barrier::Storage | gl::Barrier::Command);
 }
 
 } // namespace ispm

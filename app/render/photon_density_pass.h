@@ -33,6 +33,11 @@ class PhotonDensityPass final : public Pass {
     void reloadPrograms(ShaderReloadReport& report) override { mProgram.reloadIfChanged(report); }
     // Per result photon: its disc's clip lines and box extents (shared/splat_clip.h).
     const gl::Buffer& getClip() const { return mClip; }
+    // The caustic photons in view (radius_mode density), at getCausticOffset() bytes into this
+    // buffer (after the table): an indexed draw command whose instance count the radius stage
+    // sets, then their indices (bound at kBindingCausticList for splat.vert).
+    const gl::Buffer& getCausticList() const { return mCells; }
+    size_t getCausticOffset() const { return mCausticOffset; }
     size_t getGpuBytes() const { return mCells.getSize() + mClip.getSize(); }
 
   private:
@@ -47,6 +52,7 @@ class PhotonDensityPass final : public Pass {
     gl::Buffer mParams; // gpu::DensityParams
     gl::Buffer mCells;
     gl::Buffer mClip;
+    size_t mCausticOffset = 0;
 };
 
 } // namespace ispm

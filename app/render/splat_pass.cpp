@@ -88,8 +88,9 @@ std::string describeOversizedSplats(double surfaceAreaM2, float diagonalM,
                   "radius_mode=density");
 }
 
-SplatPass::SplatPass(const GBuffer& viewer, const PhotonBuffers& buffers, const gl::Buffer& clip)
-    : mViewer(viewer), mBuffers(buffers), mClip(clip),
+SplatPass::SplatPass(const GBuffer& viewer, const PhotonBuffers& buffers,
+                     const PhotonDensityPass& density)
+    : mViewer(viewer), mBuffers(buffers), mDensity(density),
       mProgram(ReloadableProgram({.label = "splat",
                                   .stages = {{gl::ShaderStage::Vertex, "splat/splat.vert"},
                                              {gl::ShaderStage::Fragment, "splat/splat.frag"}},
@@ -107,23 +108,39 @@ SplatPass::SplatPass(const GBuffer& viewer, const PhotonBuffers& buffers, const 
     mDiscVertexArray.setElementBuffer(mDiscIndices);
 }
 
-void SplatPass::resizeBuffer(int width, int height) {
-    if (mIndirect.getWidth() == width && mIndirect.getHeight() == height) return;
-    mIndirect = gl::Texture::create2D("indirect", gl::Format::RGBA32F, width, height);
-    mFramebuffer = gl::Framebuffer("indirect target");
-    mFramebuffer.attachColor(0, mIndirect);
-    mFramebuffer.setDrawBufferCount(1);
-    mFramebuffer.checkComplete();
+bool SplatPass::separatesCaustics(const FrameSettings& settings) {
+    return settings.radiusMode == gpu::kRadiusDensity;
+}
+
+namespace {
+
+void resizeTarget(gl::Texture& texture, gl::Framebuffer& framebuffer, const char* label, int width,
+                  int height) {
+    if (texture.getWidth() == width && texture.getHeight() == height) return;
+    texture = gl::Texture::create2D(label, gl::Format::RGBA32F, width, height);
+    framebuffer = gl::Framebuffer(strCat(label, " target"));
+    framebuffer.attachColor(0, texture);
+    framebuffer.setDrawBufferCount(1);
+    framebuffer.checkComplete();
+}
+
+} // namespace
+
+void SplatPass::resizeBuffers(const FrameInputs& inputs) {
+    resizeTarget(mIndirect, mFramebuffer, "indirect", inputs.settings.splatSize.x,
+                 inputs.settings.splatSize.y);
+    resizeTarget(mCaustics, mCausticFramebuffer, "caustics", inputs.width, inputs.height);
 }
 
 void SplatPass::clear(const FrameInputs& inputs) {
-    resizeBuffer(inputs.settings.splatSize.x, inputs.settings.splatSize.y);
+    resizeBuffers(inputs);
     mFramebuffer.clearColor(0, glm::vec4(0.0f));
+    mCausticFramebuffer.clearColor(0, glm::vec4(0.0f));
 }
 
 void SplatPass::executeGather(const FrameInputs& inputs) {
     const glm::ivec2 size = inputs.settings.splatSize;
-    resizeBuffer(size.x, size.y);
+    clear(inputs); // the caustic buffer, which the gather does not write
     const unsigned tilesX = divideRoundingUp(unsigned(size.x), gpu::kGatherTilePx);
     const unsigned tilesY = divideRoundingUp(unsigned(size.y), gpu::kGatherTilePx);
     const size_t tileBytes = sizeof(glm::uvec4) + size_t(tilesX) * tilesY * sizeof(gpu::GatherTile);
@@ -131,13 +148,15 @@ void SplatPass::executeGather(const FrameInputs& inputs) {
     mTiles.clearToZero();
     gpu::GatherParams params{
         .tiles = glm::uvec4(tilesX, tilesY, tilesX * tilesY, inputs.settings.radiusMode),
-        .splat = glm::uvec4(size.x, size.y, inputs.settings.splatDivisor, 0),
+        .splat = glm::uvec4(size.x, size.y, inputs.settings.splatDivisor,
+                            separatesCaustics(inputs.settings) ? gpu::kSplatDiffusePhotons
+                                                               : gpu::kSplatAllPhotons),
         .shape = glm::vec4(inputs.settings.squash, 0.0f, 0.0f, 0.0f)};
     mGatherParams.upload(0, sizeof(params), &params);
     mGatherParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
     mBuffers.bind();
-    mClip.bindBase(gl::BufferTarget::Storage, gpu::kBindingSplatClip);
+    mDensity.getClip().bindBase(gl::BufferTarget::Storage, gpu::kBindingSplatClip);
     mTiles.bindBase(gl::BufferTarget::Storage, gpu::kBindingGatherTiles);
     const unsigned binGroups =
         divideRoundingUp(mBuffers.getResultCapacity(), gpu::kGatherBinGroupSize);
@@ -163,6 +182,12 @@ void SplatPass::executeGather(const FrameInputs& inputs) {
     mGather.use();
     gl::dispatchCompute(tilesX, tilesY);
     gl::memoryBarrier(gl::Barrier::TextureFetch | gl::Barrier::Framebuffer);
+    if (!separatesCaustics(inputs.settings)) return;
+    // The caustic photons as the raster draws them.
+    uploadParams(inputs);
+    bindRaster(inputs);
+    drawCaustics(inputs);
+    gl::applyState({});
 }
 
 void SplatPass::execute(const FrameInputs& inputs) {
@@ -173,11 +198,26 @@ void SplatPass::execute(const FrameInputs& inputs) {
     executeDraws(inputs, 0, inputs.splatDraws);
 }
 
-void SplatPass::executeDraws(const FrameInputs& inputs, uint32_t firstDraw, uint32_t drawCount) {
-    assert(inputs.settings.splatMode != gpu::kSplatModeGather);
-    assert(firstDraw + drawCount <= inputs.splatDraws && inputs.splatDraws <= gpu::kMaxSplatDraws);
-    if (firstDraw == 0) clear(inputs);
-    mFramebuffer.bind();
+void SplatPass::uploadParams(const FrameInputs& inputs) {
+    const uint32_t draws = inputs.splatDraws;
+    const bool apart = separatesCaustics(inputs.settings);
+    std::vector<gpu::SplatParams> params(size_t(draws) + 1);
+    for (uint32_t p = 0; p <= draws; ++p) {
+        const bool caustic = p == draws; // at the image's resolution, its photons from the list
+        params[p].control =
+            glm::uvec4(inputs.settings.radiusMode, inputs.settings.splatShape, p, draws);
+        params[p].shape =
+            glm::vec4(inputs.settings.squash, caustic ? 1.0f : float(inputs.settings.splatDivisor),
+                      0.0f, 0.0f);
+        params[p].photons = glm::uvec4(!apart    ? gpu::kSplatAllPhotons
+                                       : caustic ? gpu::kSplatCausticPhotons
+                                                 : gpu::kSplatDiffusePhotons,
+                                       0u, 0u, 0u);
+    }
+    mParams.upload(params);
+}
+
+void SplatPass::bindRaster(const FrameInputs& inputs) {
     // Additive float accumulation. A flat disc covers a pixel once from either side; of a box,
     // only the back faces count.
     const bool isBox = inputs.settings.splatShape == gpu::kSplatShapeBox;
@@ -185,26 +225,43 @@ void SplatPass::executeDraws(const FrameInputs& inputs, uint32_t firstDraw, uint
     mProgram.use();
     (isBox ? mCubeVertexArray : mDiscVertexArray).bind();
     mBuffers.bind();
-    mClip.bindBase(gl::BufferTarget::Storage, gpu::kBindingSplatClip);
+    mDensity.getClip().bindBase(gl::BufferTarget::Storage, gpu::kBindingSplatClip);
+    const gl::Buffer& list = mDensity.getCausticList();
+    const size_t offset = mDensity.getCausticOffset();
+    if (offset < list.getSize())
+        list.bindRange(gl::BufferTarget::Storage, gpu::kBindingCausticList, offset,
+                       list.getSize() - offset);
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
     mViewer.bindTextures(gpu::kUnitGBufferFirst);
-    // Every draw's block is uploaded with the first: a later slice binds its own.
-    const uint32_t draws = inputs.splatDraws;
+}
+
+void SplatPass::drawSplats(uint32_t p) {
+    mParams.bind(p);
+    gl::drawElementsIndirect(gl::Primitive::Triangles, mBuffers.getSplatDraws(),
+                             p * gpu::kSplatDrawUvec4s * sizeof(glm::uvec4));
+}
+
+void SplatPass::drawCaustics(const FrameInputs& inputs) {
+    mCausticFramebuffer.bind();
+    mParams.bind(inputs.splatDraws);
+    gl::drawElementsIndirect(gl::Primitive::Triangles, mDensity.getCausticList(),
+                             mDensity.getCausticOffset());
+}
+
+void SplatPass::executeDraws(const FrameInputs& inputs, uint32_t firstDraw, uint32_t drawCount) {
+    assert(inputs.settings.splatMode != gpu::kSplatModeGather);
+    assert(firstDraw + drawCount <= inputs.splatDraws && inputs.splatDraws <= gpu::kMaxSplatDraws);
+    // Every draw's blocks are uploaded with the first: a later slice binds its own.
     if (firstDraw == 0) {
-        std::vector<gpu::SplatParams> params(draws);
-        for (uint32_t p = 0; p < draws; ++p) {
-            params[p].control =
-                glm::uvec4(inputs.settings.radiusMode, inputs.settings.splatShape, p, draws);
-            params[p].shape =
-                glm::vec4(inputs.settings.squash, float(inputs.settings.splatDivisor), 0.0f, 0.0f);
-        }
-        mParams.upload(params);
+        clear(inputs);
+        uploadParams(inputs);
     }
-    for (uint32_t p = firstDraw; p < firstDraw + drawCount; ++p) {
-        mParams.bind(p);
-        gl::drawElementsIndirect(gl::Primitive::Triangles, mBuffers.getSplatDraws(),
-                                 p * gpu::kSplatDrawUvec4s * sizeof(glm::uvec4));
-    }
+    bindRaster(inputs);
+    mFramebuffer.bind();
+    for (uint32_t p = firstDraw; p < firstDraw + drawCount; ++p)
+        drawSplats(p);
+    // The caustic photons (few, small discs) in one draw, with the first slice.
+    if (firstDraw == 0 && separatesCaustics(inputs.settings)) drawCaustics(inputs);
     gl::applyState({});
 }
 

@@ -5,13 +5,16 @@
 // The draw count comes from the GPU (glDrawArraysIndirect), split into `splat_passes` calls
 // (more when the viewer draws a frame in slices).
 // The buffer may be smaller than the image (`splat_resolution`): each of its pixels then shades
-// one viewer G-buffer pixel of the block it covers, and UpsamplePass brings it back.
+// one viewer G-buffer pixel of the block it covers, and UpsamplePass brings it back. In
+// radius_mode density the caustic photons (shared/photon_data.h, kSplatCausticPhotons) are drawn
+// apart, into a buffer of the image's size that the filter leaves alone and UpsamplePass adds.
 #pragma once
 
 #include "render/gbuffer.h"
 #include "render/param_blocks.h"
 #include "render/pass.h"
 #include "render/photon_buffers.h"
+#include "render/photon_density_pass.h"
 #include "scene/scene.h"
 
 #include <shared/photon_data.h>
@@ -43,8 +46,10 @@ std::string describeOversizedSplats(double surfaceAreaM2, float diagonalM,
 
 class SplatPass final : public Pass {
   public:
-    // `clip`: the density pass's clip distances, used when radius_mode is density.
-    SplatPass(const GBuffer& viewer, const PhotonBuffers& buffers, const gl::Buffer& clip);
+    // The density pass's clip distances and list of caustic photons are read when radius_mode
+    // is density.
+    SplatPass(const GBuffer& viewer, const PhotonBuffers& buffers,
+              const PhotonDensityPass& density);
     const char* getName() const override { return "splat"; }
     // The buffer follows the image size and `splat_resolution` at each execute.
     void execute(const FrameInputs& inputs) override;
@@ -58,6 +63,10 @@ class SplatPass final : public Pass {
     // The tiled gather's buffers (they grow to the largest frame's need).
     size_t getGpuBytes() const { return mTiles.getSize() + mList.getSize(); }
     const gl::Texture& getOutput() const { return mIndirect; }
+    // The caustic photons' light at the image's resolution (black unless separatesCaustics).
+    const gl::Texture& getCaustics() const { return mCaustics; }
+    // Whether the caustic photons are splatted apart: in radius_mode density.
+    static bool separatesCaustics(const FrameSettings& settings);
     // The raster splat's draws [firstDraw, firstDraw + drawCount) of inputs.splatDraws, each a
     // share of the photons in order (so slices add up to execute()'s image exactly); the first
     // clears the buffer. Not for splat_mode gather.
@@ -66,12 +75,20 @@ class SplatPass final : public Pass {
     void clear(const FrameInputs& inputs);
 
   private:
-    void resizeBuffer(int width, int height);
+    void resizeBuffers(const FrameInputs& inputs);
     void executeGather(const FrameInputs& inputs);
+    // Binds what every raster draw reads and sets the blend and cull state.
+    void bindRaster(const FrameInputs& inputs);
+    // Draw p of inputs.splatDraws with parameter block p.
+    void drawSplats(uint32_t p);
+    // The caustic photons' draw, into the caustic buffer (its block follows the draws').
+    void drawCaustics(const FrameInputs& inputs);
+    // Writes the parameter blocks of every draw, then the caustic draw's.
+    void uploadParams(const FrameInputs& inputs);
 
     const GBuffer& mViewer;
     const PhotonBuffers& mBuffers;
-    const gl::Buffer& mClip;
+    const PhotonDensityPass& mDensity;
     ReloadableProgram mProgram;
     gl::VertexArray mCubeVertexArray; // splat_shape box
     gl::VertexArray mDiscVertexArray; // splat_shape disc
@@ -80,6 +97,8 @@ class SplatPass final : public Pass {
     ParamBlocks<gpu::SplatParams> mParams{"splat parameters"}; // one per draw
     gl::Texture mIndirect;
     gl::Framebuffer mFramebuffer;
+    gl::Texture mCaustics;
+    gl::Framebuffer mCausticFramebuffer;
     // splat_mode gather: binning (count, then fill), the tiles' list offsets, the gather.
     ReloadableProgram mBinCount;
     ReloadableProgram mBinFill;

@@ -1,15 +1,17 @@
 // Upsample: one full-screen draw at the image's resolution, or a copy when the splats were drawn
-// at it.
+// at it and no caustic light is added.
 #include "render/upsample_pass.h"
 
 #include "gl/gl.h"
 #include "gl/state.h"
+#include "render/splat_pass.h"
 
 #include <shared/scene_data.h>
 
 namespace ispm {
-UpsamplePass::UpsamplePass(const GBuffer& viewer, const gl::Texture& filtered)
-    : mViewer(viewer), mFiltered(filtered),
+UpsamplePass::UpsamplePass(const GBuffer& viewer, const gl::Texture& filtered,
+                           const gl::Texture& caustics)
+    : mViewer(viewer), mFiltered(filtered), mCaustics(caustics),
       mProgram(ReloadableProgram({.label = "upsample",
                                   .stages = {{gl::ShaderStage::Vertex, "lib/fullscreen.vert"},
                                              {gl::ShaderStage::Fragment, "denoise/upsample.frag"}},
@@ -18,7 +20,8 @@ UpsamplePass::UpsamplePass(const GBuffer& viewer, const gl::Texture& filtered)
 
 void UpsamplePass::execute(const FrameInputs& inputs) {
     const int divisor = inputs.settings.splatDivisor;
-    if (divisor == 1) {
+    const bool caustics = SplatPass::separatesCaustics(inputs.settings);
+    if (divisor == 1 && !caustics) {
         mTarget.getTexture().copyFrom(mFiltered);
         return;
     }
@@ -29,7 +32,8 @@ void UpsamplePass::execute(const FrameInputs& inputs) {
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
     mViewer.bindTextures(gpu::kUnitGBufferFirst);
     mFiltered.bindUnit(gpu::kUnitFilterSource);
-    const gpu::FilterParams params{glm::ivec4(0, 0, 0, divisor)};
+    mCaustics.bindUnit(gpu::kUnitCaustics);
+    const gpu::FilterParams params{glm::ivec4(caustics ? 1 : 0, 0, 0, divisor)};
     mParams.upload(0, sizeof(params), &params);
     mParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
     drawFullscreenTriangle();

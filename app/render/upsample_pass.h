@@ -3,7 +3,9 @@
 // weighs the buffer pixels around it by distance, by how far their surface turns from its own and
 // by how far their point lies off its plane, so edges stay sharp; the light is divided by the
 // reflectance where it was splatted and multiplied by the pixel's own. At full resolution it
-// passes the light through. Its output is the frame's indirect AOV.
+// passes the light through. In radius_mode density it adds the caustic photons' light, splatted
+// apart at the image's resolution (SplatPass::getCaustics). Its output is the frame's indirect
+// AOV.
 #pragma once
 
 #include "render/fullscreen.h"
@@ -16,7 +18,7 @@ namespace ispm {
 
 class UpsamplePass final : public Pass {
   public:
-    UpsamplePass(const GBuffer& viewer, const gl::Texture& filtered);
+    UpsamplePass(const GBuffer& viewer, const gl::Texture& filtered, const gl::Texture& caustics);
     const char* getName() const override { return "upsample"; }
     void resize(int width, int height) override { mTarget.resize(width, height); }
     void execute(const FrameInputs& inputs) override;
@@ -26,6 +28,7 @@ class UpsamplePass final : public Pass {
   private:
     const GBuffer& mViewer;
     const gl::Texture& mFiltered;
+    const gl::Texture& mCaustics;
     ReloadableProgram mProgram;
     gl::Buffer mParams{"upsample parameters", sizeof(gpu::FilterParams)};
     gl::VertexArray mVertexArray;

@@ -165,8 +165,9 @@ const std::vector<SettingDesc>& table() {
          "splat radius from travel distance (travel, the thesis), from path density alone "
          "(path_density, McGuire and Luebke 2009: radius_max / sqrt(path density), at least "
          "radius_min) or from the local density of stored photons (density: each disc holds about "
-         "splat_neighbours photons; a photon focused by mirrors or glass since its last diffuse "
-         "bounce, a caustic, takes that radius / sqrt(path density))",
+         "splat_neighbours photons; photons focused by mirrors, glass or a glossy lobe since their "
+         "last diffuse bounce, caustics, hold their own kind's neighbours and are splatted at "
+         "the image's resolution, unfiltered)",
          toChoices(kRadiusModeChoices)},
         {"splat_neighbours",
          SettingType::Int,
@@ -247,7 +248,8 @@ const std::vector<SettingDesc>& table() {
         {"splat_resolution", SettingType::Enum, 0, 0, 3, "",
          "resolution of the splat buffer against the image: 1, 1/2 or 1/4, upsampled by a "
          "joint-bilateral filter on the viewer G-buffer (normals, planes, reflectance); auto: "
-         "1/2 from 256 px on (min(width, height)), else 1",
+         "1/2 from 256 px on (min(width, height)), else 1; caustics (radius_mode density) are "
+         "splatted at 1",
          toChoices(kSplatResolutionChoices)},
         {"denoise",
          SettingType::Int,
@@ -256,8 +258,9 @@ const std::vector<SettingDesc>& table() {
          8,
          "",
          "iterations of an edge-aware a-trous filter on the indirect light (steps of 1, 2, 4 ... "
-         "pixels of the splat buffer, guided by normals and planes of the viewer G-buffer); 0 = "
-         "the splats as they are; derived: log2(min(w, h) / 32) of the splat buffer's size, at "
+         "pixels of the splat buffer, guided by normals and planes of the viewer G-buffer; not "
+         "the caustics of radius_mode density); 0 = the splats as they are; derived: log2(min(w, "
+         "h) / 32) of the splat buffer's size, at "
          "most 3 (2 at 256 px with the splats at 1/2)",
          {},
          true},

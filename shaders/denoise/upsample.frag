@@ -4,11 +4,14 @@
 // and the off-plane distance of the filter (atrous.frag), and read as irradiance (divided by the
 // reflectance at its own G-buffer pixel); the sum is multiplied by the pixel's reflectance. A
 // pixel no buffer pixel shares a surface with (a feature thinner than d pixels) takes the tent
-// alone.
+// alone. At a buffer of the image's size the light passes as it is. The caustic photons'
+// light, splatted apart at the image's size and unfiltered (shared/photon_data.h,
+// kSplatCausticPhotons), is added when iteration.x is 1.
 #include "lib/frame_constants.glsl"
 #include "lib/gbuffer_filter.glsl"
 
 layout(binding = kUnitFilterSource) uniform sampler2D uSource;
+layout(binding = kUnitCaustics) uniform sampler2D uCaustics;
 
 layout(std140, binding = kBindingPassParams) uniform FilterParamsBlock { FilterParams params; };
 
@@ -16,13 +19,18 @@ layout(location = 0) out vec4 outRadiance;
 
 const float kMinWeight = 1e-4; // below: no buffer pixel shares the surface
 
+vec3 upsample(ivec2 pixel);
+
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
+    vec3 caustics = params.iteration.x == 1 ? texelFetch(uCaustics, pixel, 0).rgb : vec3(0.0);
+    outRadiance = vec4(upsample(pixel) + caustics, 1.0);
+}
+
+vec3 upsample(ivec2 pixel) {
+    if (params.iteration.w == 1) return texelFetch(uSource, pixel, 0).rgb;
     vec4 position = texelFetch(uPosition, pixel, 0);
-    if (position.w < 0.5) {
-        outRadiance = vec4(0.0, 0.0, 0.0, 1.0);
-        return;
-    }
+    if (position.w < 0.5) return vec3(0.0);
     ivec2 size = textureSize(uSource, 0);
     vec3 n = texelFetch(uNormal, pixel, 0).xyz;
     // Footprints of a buffer pixel on this surface.
@@ -51,5 +59,5 @@ void main() {
     }
     vec3 irradiance = weights > kMinWeight ? sum / weights
                                             : (tentWeights > 0.0 ? tentSum / tentWeights : vec3(0.0));
-    outRadiance = vec4(irradiance * getReflectance(pixel), 1.0);
+    return irradiance * getReflectance(pixel);
 }

@@ -35,6 +35,8 @@ layout(std430, binding = kBindingSplatClip) writeonly buffer SplatClip { vec4 sp
 // bits) at S + 2; at S + 4 .. S + 7 the extent of its photons along the two axes of the plane
 // their facing is closest to, as fixed-point fractions of the cell (kExtentOne = the whole
 // cell): M - min u, max u, M - min v, max v, all kept by atomicMax from a cleared table.
+// After the table's slots: the caustic photons in view, for their own splat draw: its command
+// (kSplatDrawUvec4s uvec4s, the instance count added here), then their indices.
 layout(std430, binding = kBindingDensityCells) buffer DensityCells { uint cells[]; };
 
 layout(std140, binding = kBindingPassParams) uniform DensityParamsBlock { DensityParams params; };
@@ -55,15 +57,20 @@ bool isOutsideView(vec3 centre, float radius) {
 }
 
 // Photons are counted apart by the side they face (the major axis of the normal and its sign):
-// the two faces of a thin wall, or a floor and the wall it meets, do not share a density.
-uint getFacing(vec3 n) {
+// the two faces of a thin wall, or a floor and the wall it meets, do not share a density. And
+// apart by their path (kCausticMap): photons focused by mirrors, glass or a glossy lobe since
+// their last diffuse bounce (path density above 1) form a caustic map of their own, as in
+// Jensen's photon maps, so a caustic's discs hold its own photons' neighbours, small where
+// they crowd, and the diffuse light around it keeps the radii of its own density.
+const uint kCausticMap = 8u;
+uint getFacing(vec3 n, float pathDensity) {
     vec3 a = abs(n);
     uint axis = a.x >= a.y && a.x >= a.z ? 0u : (a.y >= a.z ? 1u : 2u);
-    return 2u * axis + (n[axis] < 0.0 ? 1u : 0u);
+    return 2u * axis + (n[axis] < 0.0 ? 1u : 0u) + (isCausticPhoton(pathDensity) ? kCausticMap : 0u);
 }
 
 uint hashCell(ivec3 c, uint level, uint facing) {
-    return hashPcg(uint(c.x) ^ hashPcg(uint(c.y) ^ hashPcg(uint(c.z) ^ hashPcg(level * 8u + facing))));
+    return hashPcg(uint(c.x) ^ hashPcg(uint(c.y) ^ hashPcg(uint(c.z) ^ hashPcg(level * 16u + facing))));
 }
 
 // Float addition by compare-and-swap (core GLSL has no float atomics).
@@ -78,11 +85,17 @@ void addFloat(uint index, float value) {
 
 const float kExtentOne = 16777216.0; // 2^24: a whole cell in the extent words
 
+void appendCausticPhoton(uint index) {
+    uint list = (params.control.y + 1u) * kDensitySlotUints;
+    uint at = atomicAdd(cells[list + 1u], 1u);
+    cells[list + 4u * kSplatDrawUvec4s + at] = index;
+}
+
 float getCellSize(uint level) { return params.grid.x * exp2(float(level)); }
 
 // The two axes of the plane a facing is closest to.
 ivec2 getPlaneAxes(uint facing) {
-    int axis = int(facing / 2u);
+    int axis = int((facing % kCausticMap) / 2u);
     return ivec2((axis + 1) % 3, (axis + 2) % 3);
 }
 
@@ -334,7 +347,7 @@ void main() {
     }
     vec3 p = photons[index].positionDistance.xyz;
     float power = getPhotonPower(index);
-    uint facing = getFacing(photons[index].normalDensity.xyz);
+    uint facing = getFacing(photons[index].normalDensity.xyz, photons[index].normalDensity.w);
     if (params.control.x == kDensityStageCount) {
         for (uint level = 0u; level < kDensityLevels; ++level) insertCell(p, level, facing, power);
         return;
@@ -377,11 +390,6 @@ void main() {
         float travel = photons[index].positionDistance.w;
         radius = min(radius, max(params.scales.z * travel, getCellSize(0u)));
     }
-    // A photon focused by mirrors or glass since its last diffuse bounce (path density above 1)
-    // belongs to a caustic: the density of all photons around it measures mostly the diffuse
-    // light, so its disc shrinks by the focus, 1 / sqrt(path density) (McGuire and Luebke's
-    // path-density radius), down to radius_min.
-    radius /= sqrt(max(photons[index].normalDensity.w, 1.0));
     radius = clamp(radius, params.grid.z, params.grid.w);
     if (isOutsideView(p, radius)) {
         photons[index].power.w = 0.0;
@@ -389,5 +397,6 @@ void main() {
     }
     countPhoton(unpackLight(photons[index].incoming.w), 2);
     photons[index].power.w = radius;
+    if (isCausticPhoton(photons[index].normalDensity.w)) appendCausticPhoton(index);
     clipDisc(index, p, photons[index].normalDensity.xyz, radius);
 }

@@ -34,7 +34,8 @@ ISPM_STATIC_ASSERT_SIZE(GatherTile, 16);
 // kBindingPassParams).
 struct GatherParams {
     uvec4 tiles; // x = tiles across, y = tiles down, z = tile count, w = radius mode (kRadius*)
-    uvec4 splat; // x, y = splat buffer size (px), z = image pixels per buffer pixel, w unused
+    uvec4 splat; // x, y = splat buffer size (px), z = image pixels per buffer pixel, w = which
+                 // photons it takes (kSplat*Photons, shared/photon_data.h)
     vec4 shape;  // x = squash (thickness along the normal / radius), yzw unused
 };
 ISPM_STATIC_ASSERT_SIZE(GatherParams, 48);

@@ -77,6 +77,9 @@ ISPM_CONST int kBindingSplatDraws = 14;    // indexed draw commands, kSplatDrawU
 ISPM_CONST int kBindingLightCounts = 19;   // uvec4 per light (LightPhotonCounters)
 ISPM_CONST int kBindingEmissionGrids = 20; // uvec4 per grid: first photon, view, 0, 0
 ISPM_CONST uint kReflectionBits = 8u;      // ResultPhoton.incoming.w: reflections, then light
+ISPM_CONST int kBindingCausticList = 28;   // splat.vert: the caustic photons' draw command
+                                           // (kSplatDrawUvec4s), then their indices (the tail of
+                                           // photon_density.comp's table buffer)
 ISPM_CONST int kBindingDensityCells = 17;  // photon_density.comp's hashed grid (kDensitySlotUints
                                            // a slot)
 
@@ -84,6 +87,25 @@ ISPM_CONST int kBindingDensityCells = 17;  // photon_density.comp's hashed grid 
 // draw of kSplatCubeVertices indices per photon either way.
 ISPM_CONST uint kSplatShapeDisc = 0u;
 ISPM_CONST uint kSplatShapeBox = 1u;
+
+// Which result photons a splat draw or the gather takes (SplatParams.photons.x,
+// GatherParams.splat.w). In radius_mode density a caustic photon (focused by a mirror, glass or a
+// glossy lobe since its last diffuse bounce: path density above 1) has discs sized by the
+// caustic photons around it alone (photon_density.comp); the caustic photons are splatted apart,
+// at the image's resolution and left out of the filter, so that their sharp shapes survive, and
+// the rest at `splat_resolution`, filtered.
+ISPM_CONST uint kSplatAllPhotons = 0u;
+ISPM_CONST uint kSplatDiffusePhotons = 1u;
+ISPM_CONST uint kSplatCausticPhotons = 2u;
+
+ISPM_INLINE bool isCausticPhoton(float pathDensity) {
+    return pathDensity > 1.0f;
+}
+
+ISPM_INLINE bool isSplatTaken(uint which, float pathDensity) {
+    if (which == kSplatAllPhotons) return true;
+    return isCausticPhoton(pathDensity) == (which == kSplatCausticPhotons);
+}
 
 // Splat radius modes (setting radius_mode, checked against the table in splat_pass.cpp).
 ISPM_CONST uint kRadiusTravel = 0u;
@@ -146,8 +168,9 @@ struct SplatParams {
                    // w = draw count
     vec4 shape;    // x = squash (thickness along the normal / radius), y = image pixels per
                    // splat-buffer pixel along an axis, zw unused
+    uvec4 photons; // x = which photons the draw takes (kSplat*Photons), yzw unused
 };
-ISPM_STATIC_ASSERT_SIZE(SplatParams, 32);
+ISPM_STATIC_ASSERT_SIZE(SplatParams, 48);
 
 // photon_density.comp's stages: count photons into the grid, then radii and clip lines; in the
 // travel modes only the cull (travel radii against the view frustum, in-view counts).

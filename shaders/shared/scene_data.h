@@ -98,6 +98,7 @@ ISPM_CONST int kUnitHistoryLength = 22;
 ISPM_CONST int kUnitHistoryPosition = 23;
 ISPM_CONST int kUnitHistoryNormal = 24;
 // The scene's colour textures: one sRGB 2D array, a layer per texture (GpuMaterial::diffuse.w).
+ISPM_CONST int kUnitCaustics = 29; // the caustic photons' splats, at the image's size (upsample)
 ISPM_CONST int kUnitSceneTextures = 28; // after the post passes' 25..27 (post_data.h)
 
 // Per-frame values every pass may read (std140).
@@ -131,8 +132,9 @@ ISPM_STATIC_ASSERT_SIZE(AccumulateParams, 96);
 // Parameters of one iteration of atrous.frag, and of upsample.frag (std140, at
 // kBindingPassParams; the filter's iterations are bound by range).
 struct FilterParams {
-    ivec4 iteration; // x = step (px), y = 1: demodulate the input by reflectance, z = 1:
-                     // modulate the output, w = image pixels per buffer pixel along an axis
+    ivec4 iteration; // x = step (px; upsample: 1 = add the caustic buffer), y = 1: demodulate
+                     // the input by reflectance, z = 1: modulate the output, w = image pixels
+                     // per buffer pixel along an axis
 };
 ISPM_STATIC_ASSERT_SIZE(FilterParams, 16);
 

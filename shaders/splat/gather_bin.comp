@@ -33,7 +33,7 @@ void main() {
     uint id = gl_GlobalInvocationID.x;
     if (id >= min(counters.result.x, counters.result.y)) return;
     SplatShape shape = loadSplatShape(id, params.tiles.w);
-    if (!(shape.radius > 0.0)) return;
+    if (!(shape.radius > 0.0) || !isSplatTaken(params.splat.w, photons[id].normalDensity.w)) return;
     vec3 n = photons[id].normalDensity.xyz;
     vec3 t;
     vec3 b;

@@ -12,6 +12,10 @@ layout(std430, binding = kBindingResultPhotons) readonly buffer ResultBuffer { R
 layout(std430, binding = kBindingPhotonCounters) readonly buffer CounterBuffer { PhotonCounters counters; };
 layout(std430, binding = kBindingSplatClip) readonly buffer SplatClip { vec4 splatClip[]; };
 layout(std140, binding = kBindingPassParams) uniform SplatParamsBlock { SplatParams params; };
+layout(std430, binding = kBindingCausticList) readonly buffer CausticList {
+    uvec4 causticDraw[kSplatDrawUvec4s];
+    uint causticPhotons[];
+};
 
 #include "lib/splat_kernel.glsl"
 
@@ -32,7 +36,10 @@ flat out vec2 vPoles[kClipRays];
 
 void main() {
     uint stored = counters.splatDraw.y;
-    uint id = stored * params.control.z / params.control.w + uint(gl_InstanceID);
+    // The caustic draw's instances are the density pass's list of caustic photons in view.
+    uint id = params.photons.x == kSplatCausticPhotons
+                  ? causticPhotons[gl_InstanceID]
+                  : stored * params.control.z / params.control.w + uint(gl_InstanceID);
     ResultPhoton photon = photons[id];
     vec3 n = photon.normalDensity.xyz;
     vec3 t;
@@ -43,6 +50,11 @@ void main() {
     // the box or square shrinks to the lines across the basis axes (a box scene's walls), and
     // the fragment stage drops what lies beyond any line.
     SplatShape shape = loadSplatShape(id, params.control.x);
+    // A photon this draw does not take (the caustic photons are drawn apart) collapses too.
+    if (!isSplatTaken(params.photons.x, photon.normalDensity.w)) {
+        shape.radius = 0.0;
+        shape.extent = vec4(0.0);
+    }
     float radius = shape.radius;
     vec4 extent = shape.extent; // along +t, -t, +b, -b
     vLines = shape.lines;

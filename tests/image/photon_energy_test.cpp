@@ -4,6 +4,7 @@
 #include "support/gl_fixture.h"
 #include "support/render_support.h"
 
+#include "render/photon_density_pass.h"
 #include "render/readback.h"
 #include "render/splat_pass.h"
 
@@ -152,8 +153,8 @@ TEST_P(SplatShapeEnergyTest, OneSplatOnAPlaneIntegratesToBrdfTimesPower) {
                                                     {0, 0, 0, 0}};
     buffers.getSplatDraws().upload(0, sizeof(draw), draw);
 
-    const gl::Buffer noClip; // travel radii: the splat reads no clip distances
-    SplatPass splat(runner.getViewerGBuffer(), buffers, noClip);
+    const PhotonDensityPass density(buffers); // travel radii: the splat reads none of its buffers
+    SplatPass splat(runner.getViewerGBuffer(), buffers, density);
     splat.resize(kSize, kSize);
     splat.execute(runner.getFrameInputs());
     const std::vector<glm::vec4> radiance = splat.getOutput().readRgba();

@@ -1,0 +1,55 @@
+#!/usr/bin/python3
+"""Side-by-side figure of linear images (PFM) under one exposure, for README figures.
+
+Usage: tools/caustics_figure.py OUT.png "TITLE=IMAGE.pfm" ... (/usr/bin/python3: numpy, matplotlib)
+
+Every image is scaled so that the 99th percentile of the last one's luminance maps to white,
+clipped and encoded with the sRGB curve, so the panels compare like for like.
+"""
+import sys
+
+import matplotlib
+import numpy as np
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+WHITE_PERCENTILE = 99.0
+
+
+def read_pfm(path):
+    with open(path, "rb") as f:
+        if f.readline().strip() != b"PF":
+            sys.exit(f"{path}: expected a colour PFM")
+        width, height = map(int, f.readline().split())
+        scale = float(f.readline())
+        dtype = "<f4" if scale < 0 else ">f4"
+        data = np.frombuffer(f.read(), dtype=dtype)
+    if data.size != width * height * 3:
+        sys.exit(f"{path}: expected {width}x{height} RGB floats")
+    return data.reshape(height, width, 3)[::-1].astype(np.float64)  # PFM rows start at the bottom
+
+
+def encode_srgb(linear):
+    c = np.clip(linear, 0.0, 1.0)
+    return np.where(c <= 0.0031308, 12.92 * c, 1.055 * c ** (1.0 / 2.4) - 0.055)
+
+
+def main():
+    if len(sys.argv) < 3 or any("=" not in a for a in sys.argv[2:]):
+        sys.exit(__doc__)
+    panels = [a.split("=", 1) for a in sys.argv[2:]]
+    images = [read_pfm(path) for _, path in panels]
+    luminance = images[-1] @ np.array([0.2126, 0.7152, 0.0722])
+    white = np.percentile(luminance[luminance > 0.0], WHITE_PERCENTILE)
+    fig, axes = plt.subplots(1, len(images), figsize=(3.2 * len(images), 3.5))
+    for ax, (title, _), image in zip(np.atleast_1d(axes), panels, images):
+        ax.imshow(encode_srgb(image / white), interpolation="nearest")
+        ax.set_title(title, fontsize=9)
+        ax.axis("off")
+    fig.tight_layout()
+    fig.savefig(sys.argv[1], dpi=100)
+
+
+if __name__ == "__main__":
+    main()
