@@ -10,24 +10,12 @@ import sys
 
 import matplotlib
 import numpy as np
+from measure_caustics import read_pfm
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 WHITE_PERCENTILE = 99.0
-
-
-def read_pfm(path):
-    with open(path, "rb") as f:
-        if f.readline().strip() != b"PF":
-            sys.exit(f"{path}: expected a colour PFM")
-        width, height = map(int, f.readline().split())
-        scale = float(f.readline())
-        dtype = "<f4" if scale < 0 else ">f4"
-        data = np.frombuffer(f.read(), dtype=dtype)
-    if data.size != width * height * 3:
-        sys.exit(f"{path}: expected {width}x{height} RGB floats")
-    return data.reshape(height, width, 3)[::-1].astype(np.float64)  # PFM rows start at the bottom
 
 
 def encode_srgb(linear):
@@ -39,7 +27,7 @@ def main():
     if len(sys.argv) < 3 or any("=" not in a for a in sys.argv[2:]):
         sys.exit(__doc__)
     panels = [a.split("=", 1) for a in sys.argv[2:]]
-    images = [read_pfm(path) for _, path in panels]
+    images = [read_pfm(path)[::-1] for _, path in panels]  # PFM rows start at the bottom
     luminance = images[-1] @ np.array([0.2126, 0.7152, 0.0722])
     white = np.percentile(luminance[luminance > 0.0], WHITE_PERCENTILE)
     fig, axes = plt.subplots(1, len(images), figsize=(3.2 * len(images), 3.5))

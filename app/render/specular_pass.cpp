@@ -12,7 +12,8 @@
 namespace ispm {
 namespace {
 
-constexpr GLuint kImageUnitTotal = 0; // binding of uTotal in specular_trace.comp
+// Image unit 0: uSpecularLight in specular_trace.comp, uTotal in specular_filter.comp.
+constexpr GLuint kImageUnit = 0;
 // A hit reprojected onto a visible pixel counts as that pixel's point when their distances from
 // the eye differ by less than this share: G-buffer positions are exact to float rounding, and
 // the pixel's point lies up to half a pixel's footprint off the hit.
@@ -27,6 +28,10 @@ SpecularPass::SpecularPass(const GBuffer& viewer, const gl::Texture& indirect,
           ReloadableProgram({.label = "specular trace",
                              .stages = {{gl::ShaderStage::Compute, "specular/specular_trace.comp"}},
                              .defines = getGBufferDefines()})),
+      mFilter(ReloadableProgram(
+          {.label = "specular filter",
+           .stages = {{gl::ShaderStage::Compute, "specular/specular_filter.comp"}},
+           .defines = getGBufferDefines()})),
       mParams("specular parameters", sizeof(gpu::SpecularParams)) {}
 
 bool SpecularPass::isOn(const FrameSettings& settings) {
@@ -48,12 +53,21 @@ void SpecularPass::execute(const FrameInputs& inputs) {
     mParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
     mViewer.bindTextures(gpu::kUnitGBufferFirst);
     mIndirect.bindUnit(gpu::kUnitIndirect);
-    mTotal.bindImage(kImageUnitTotal, true, true);
+    if (mLight.getWidth() != inputs.width || mLight.getHeight() != inputs.height) {
+        mLight = gl::Texture::create2D("specular light", gl::Format::RGBA32F, inputs.width,
+                                       inputs.height);
+    }
+    mLight.bindImage(kImageUnit, false, true);
     mProgram.use();
     const auto groups = [](int size) {
         return (static_cast<unsigned>(size) + gpu::kSpecularGroupSize - 1) /
                gpu::kSpecularGroupSize;
     };
+    gl::dispatchCompute(groups(inputs.width), groups(inputs.height));
+    gl::memoryBarrier(gl::Barrier::TextureFetch);
+    mLight.bindUnit(gpu::kUnitFilterSource);
+    mTotal.bindImage(kImageUnit, true, true);
+    mFilter.use();
     gl::dispatchCompute(groups(inputs.width), groups(inputs.height));
     // The post passes and the tone map sample the image written here.
     gl::memoryBarrier(gl::Barrier::TextureFetch | gl::Barrier::ImageAccess);

@@ -3,7 +3,8 @@
 // reflected and a refracted ray through the BVH, `specular_depth` levels deep, shades each hit
 // with direct light (shadow rays) and the indirect light of the visible pixel showing the same
 // point (else the view's ambient estimate), and adds the result into the composed image in
-// place. Other pixels are left as they were.
+// place, a glossy lobe's ray blurred over its surface by the lobe's spread
+// (specular/specular_filter.comp). Other pixels are left as they were.
 #pragma once
 
 #include "gl/objects.h"
@@ -20,7 +21,10 @@ class SpecularPass final : public Pass {
     SpecularPass(const GBuffer& viewer, const gl::Texture& indirect, const gl::Texture& total);
     const char* getName() const override { return "specular"; }
     void execute(const FrameInputs& inputs) override;
-    void reloadPrograms(ShaderReloadReport& report) override { mProgram.reloadIfChanged(report); }
+    void reloadPrograms(ShaderReloadReport& report) override {
+        mProgram.reloadIfChanged(report);
+        mFilter.reloadIfChanged(report);
+    }
     // Whether the pass has anything to do this frame (specular_depth and bounces > 0).
     static bool isOn(const FrameSettings& settings);
 
@@ -29,7 +33,9 @@ class SpecularPass final : public Pass {
     const gl::Texture& mIndirect;
     const gl::Texture& mTotal;
     ReloadableProgram mProgram;
+    ReloadableProgram mFilter;
     gl::Buffer mParams;
+    gl::Texture mLight; // what each pixel's rays see; alpha: a glossy ray's spread (px)
 };
 
 } // namespace ispm

@@ -7,7 +7,9 @@
 // over a grid of visible pixels (E / pi of the view's average indirect irradiance).
 // Weights follow the reference's camera paths (reference.comp, photon_scatter.h): the Phong
 // lobe's f cos / pdf at its axis, Fresnel (exact, for dielectrics) times the transmittance for
-// glass, and (n_i / n_t)^2 on radiance across a refraction.
+// glass, and (n_i / n_t)^2 on radiance across a refraction. What a pixel sees is written to
+// uSpecularLight, with the spread in pixels of a glossy lobe's ray in alpha (0 for glass and
+// untraced pixels); specular_filter.comp blurs it by that spread and adds it to the image.
 #include "lib/scene_buffers.glsl"
 #include "lib/frame_constants.glsl"
 #include "lib/bvh.glsl"
@@ -19,7 +21,7 @@
 layout(binding = kUnitIndirect) uniform sampler2D uIndirect;
 
 layout(local_size_x = kSpecularGroupSize, local_size_y = kSpecularGroupSize) in;
-layout(binding = 0, rgba32f) uniform image2D uTotal;
+layout(binding = 0, rgba32f) writeonly uniform image2D uSpecularLight;
 
 layout(std140, binding = kBindingPassParams) uniform SpecularParamsBlock { SpecularParams params; };
 
@@ -142,15 +144,34 @@ vec3 lookUpIndirect(vec3 position, vec3 diffuse) {
     return texelFetch(uIndirect, pixel, 0).rgb;
 }
 
+// The angle one pixel spans at the eye, across the image's middle.
+float computePixelAngle() {
+    vec4 a = frame.worldFromClip * vec4(0.0, 0.0, 0.5, 1.0);
+    vec4 b = frame.worldFromClip * vec4(0.0, 2.0 * frame.imageSize.w, 0.5, 1.0);
+    vec3 eye = frame.cameraPosition.xyz;
+    return acos(clamp(dot(normalize(a.xyz / a.w - eye), normalize(b.xyz / b.w - eye)), -1.0, 1.0));
+}
+
+// A glossy lobe's mirror ray, hit `t` away from a surface `eyeDistance` from the eye, stands for
+// rays spread by 1 / sqrt(e) radians per axis (cos^e ~ exp(-e a^2 / 2)): t / sqrt(e) across
+// at the hit, seen from the eye along the unfolded path, in pixels.
+float computeGlossySpread(float exponent, float t, float eyeDistance) {
+    return t * inversesqrt(exponent) / ((eyeDistance + t) * computePixelAngle());
+}
+
 void main() {
     computeAmbient(); // before any invocation leaves: the group shares the work
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(pixel, ivec2(frame.imageSize.xy)))) return;
+    imageStore(uSpecularLight, pixel, vec4(0.0)); // what a pixel that traces nothing adds
     vec4 position = texelFetch(uPosition, pixel, 0);
     if (position.w < 0.5) return;
     vec4 specular = texelFetch(uSpecular, pixel, 0);
     vec4 transmissive = texelFetch(uTransmissive, pixel, 0);
     if (!isMirrorLobe(specular) && !isTransmissive(transmissive)) return; // left as composed
+    // A glossy surface (not glass) sends one ray from the pixel: the first popped.
+    bool glossy = !isTransmissive(transmissive);
+    float spread = 0.0;
     vec4 normal = texelFetch(uNormal, pixel, 0); // faces the eye; w: +1 on the front face
     vec3 dir = normalize(position.xyz - frame.cameraPosition.xyz);
     uint levels = params.control.x;
@@ -162,6 +183,10 @@ void main() {
         PendingRay ray = gStack[--gTop];
         RayHit hit;
         if (!traceRay(ray.origin, ray.dir, kNoHitDistance, hit)) continue; // the background lights nothing
+        if (glossy && ray.level == 1u) {
+            spread = computeGlossySpread(specular.w, hit.t,
+                                         distance(position.xyz, frame.cameraPosition.xyz));
+        }
         vec3 hitPosition = ray.origin + ray.dir * hit.t;
         vec3 geometric = computeHitNormal(hit);
         bool frontFace = dot(geometric, ray.dir) < 0.0;
@@ -173,6 +198,7 @@ void main() {
                         ray.weight, ray.level + 1u);
         }
     }
-    vec4 total = imageLoad(uTotal, pixel);
-    imageStore(uTotal, pixel, vec4(total.rgb + radiance, total.a));
+    // A glossy pixel is marked (alpha above 0) even when its spread is tiny: the filter reads
+    // only marked pixels as taps.
+    imageStore(uSpecularLight, pixel, vec4(radiance, glossy ? max(spread, 1e-6) : 0.0));
 }
