@@ -8,6 +8,7 @@
 #include <shared/specular_data.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace ispm {
 namespace {
@@ -18,6 +19,22 @@ constexpr GLuint kImageUnit = 0;
 // the eye differ by less than this share: G-buffer positions are exact to float rounding, and
 // the pixel's point lies up to half a pixel's footprint off the hit.
 constexpr float kReprojectionDepthTolerance = 0.02f;
+
+// The angle one pixel spans at the eye across the image's middle (the glossy rays' spread is
+// measured in it): two points a pixel apart vertically, unprojected at mid depth.
+float computePixelAngle(const FrameInputs& inputs) {
+    // In double: the two directions' cosine lies within 1e-5 of 1, where float's acos errs by a
+    // few percent (and GLSL's, on llvmpipe, by more).
+    const glm::dmat4 worldFromClip = glm::inverse(glm::dmat4(inputs.clipFromWorld));
+    const auto unproject = [&](double ndcY) {
+        const glm::dvec4 p = worldFromClip * glm::dvec4(0.0, ndcY, 0.5, 1.0);
+        return glm::normalize(glm::dvec3(p) / p.w - glm::dvec3(inputs.cameraPosition));
+    };
+    const glm::dvec3 a = unproject(0.0);
+    const glm::dvec3 b = unproject(2.0 / double(inputs.height));
+    // atan2 of the cross and dot products: exact for small angles, where acos is not.
+    return static_cast<float>(std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b)));
+}
 
 } // namespace
 
@@ -46,7 +63,8 @@ void SpecularPass::execute(const FrameInputs& inputs) {
     // levels as it caps the reference's camera paths.
     params.control = glm::uvec4(
         static_cast<uint32_t>(std::min(settings.specularDepth, settings.bounces)), 0u, 0u, 0u);
-    params.ray = glm::vec4(inputs.scene.getRayEpsilon(), kReprojectionDepthTolerance, 0.0f, 0.0f);
+    params.ray = glm::vec4(inputs.scene.getRayEpsilon(), kReprojectionDepthTolerance,
+                           computePixelAngle(inputs), 0.0f);
     mParams.upload(0, sizeof(params), &params);
     inputs.scene.bind();
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);

@@ -129,13 +129,17 @@ void resizeTarget(gl::Texture& texture, gl::Framebuffer& framebuffer, const char
 void SplatPass::resizeBuffers(const FrameInputs& inputs) {
     resizeTarget(mIndirect, mFramebuffer, "indirect", inputs.settings.splatSize.x,
                  inputs.settings.splatSize.y);
-    resizeTarget(mCaustics, mCausticFramebuffer, "caustics", inputs.width, inputs.height);
+    // The caustic buffer exists where it is drawn and read (radius_mode density): 1x1 elsewhere,
+    // so the upsample's unused sampler still has a texture.
+    const bool apart = separatesCaustics(inputs.settings);
+    resizeTarget(mCaustics, mCausticFramebuffer, "caustics", apart ? inputs.width : 1,
+                 apart ? inputs.height : 1);
 }
 
 void SplatPass::clear(const FrameInputs& inputs) {
     resizeBuffers(inputs);
     mFramebuffer.clearColor(0, glm::vec4(0.0f));
-    mCausticFramebuffer.clearColor(0, glm::vec4(0.0f));
+    if (separatesCaustics(inputs.settings)) mCausticFramebuffer.clearColor(0, glm::vec4(0.0f));
 }
 
 void SplatPass::executeGather(const FrameInputs& inputs) {

@@ -23,7 +23,8 @@ ISPM_CONST uint kMaxSpecularDepth = 6u;
 struct SpecularParams {
     uvec4 control; // x = levels traced (specular_depth, at most bounces), yzw unused
     vec4 ray;      // x = ray offset floor (m, GpuScene::getRayEpsilon), y = depth tolerance of
-                   // a hit's reprojection onto a visible pixel (relative), zw unused
+                   // a hit's reprojection onto a visible pixel (relative), z = the angle one
+                   // pixel spans at the eye across the image's middle (rad), w unused
 };
 ISPM_STATIC_ASSERT_SIZE(SpecularParams, 32);
 

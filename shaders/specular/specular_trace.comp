@@ -144,19 +144,11 @@ vec3 lookUpIndirect(vec3 position, vec3 diffuse) {
     return texelFetch(uIndirect, pixel, 0).rgb;
 }
 
-// The angle one pixel spans at the eye, across the image's middle.
-float computePixelAngle() {
-    vec4 a = frame.worldFromClip * vec4(0.0, 0.0, 0.5, 1.0);
-    vec4 b = frame.worldFromClip * vec4(0.0, 2.0 * frame.imageSize.w, 0.5, 1.0);
-    vec3 eye = frame.cameraPosition.xyz;
-    return acos(clamp(dot(normalize(a.xyz / a.w - eye), normalize(b.xyz / b.w - eye)), -1.0, 1.0));
-}
-
 // A glossy lobe's mirror ray, hit `t` away from a surface `eyeDistance` from the eye, stands for
 // rays spread by 1 / sqrt(e) radians per axis (cos^e ~ exp(-e a^2 / 2)): t / sqrt(e) across
-// at the hit, seen from the eye along the unfolded path, in pixels.
+// at the hit, seen from the eye along the unfolded path, in pixels (params.ray.z: a pixel's angle).
 float computeGlossySpread(float exponent, float t, float eyeDistance) {
-    return t * inversesqrt(exponent) / ((eyeDistance + t) * computePixelAngle());
+    return t * inversesqrt(exponent) / ((eyeDistance + t) * params.ray.z);
 }
 
 void main() {
