@@ -347,8 +347,9 @@ void FrameRunner::addFrameSteps(double sliceMs) {
                           ++mFramesDrawn;
                       }});
     addPassStep(*mCompose);
-    // Off (specular_depth 0), the composed image is left exactly as it was.
-    if (SpecularPass::isOn(mFrameSettings)) addPassStep(*mSpecular);
+    // Off (specular_depth 0, or nothing in the scene to trace), the composed image is left
+    // exactly as it was.
+    if (SpecularPass::isOn(mFrameSettings, mGpuScene)) addPassStep(*mSpecular);
     mSteps.push_back({"post and tone map", [this] {
                           mTotal = &runPostPasses(*mInputs);
                           mTonemap->setInput(*mTotal);

@@ -3,6 +3,8 @@
 
 #include "render/scene_texture_array.h"
 
+#include <shared/specular_data.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -148,6 +150,9 @@ GpuScene::GpuScene(const Scene& scene, int lightResolution) : mLightResolution(l
     mTextures = buildSceneTextureArray(scene.textures);
     mHasTextures = std::any_of(scene.materials.begin(), scene.materials.end(),
                                [](const Material& m) { return m.diffuseTexture != kNoTexture; });
+    mHasTracedSpecular = std::any_of(materials.begin(), materials.end(), [](const auto& m) {
+        return gpu::isMirrorLobe(m.specular) || gpu::isTransmissive(m.transmissive);
+    });
     mBvh = buildSceneBvh(scene);
     mBlasNodes = gl::Buffer::fromSpan<gpu::GpuBvhNode>("bvh bottom-level nodes", mBvh.blasNodes);
     mBlasOrder = gl::Buffer::fromSpan<uint32_t>("bvh triangle order", mBvh.blasTriangleOrder);

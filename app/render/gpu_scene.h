@@ -25,6 +25,9 @@ class GpuScene {
     void bind() const; // binds every buffer (scene and BVH) to its kBinding* point
     // Whether any material has a texture (the G-buffer then draws with its textured variant).
     bool hasTextures() const { return mHasTextures; }
+    // Whether any material is a mirror-like lobe or transmissive (isMirrorLobe, isTransmissive
+    // of shared/specular_data.h): the surfaces SpecularPass traces; without one it does nothing.
+    bool hasTracedSpecular() const { return mHasTracedSpecular; }
 
     // The instances' transforms of the frame drawn last (kBindingPreviousTransforms), which
     // reproject its pixels onto objects that moved since: FrameRunner keeps them after each
@@ -96,6 +99,7 @@ class GpuScene {
     gl::Buffer mTexcoords; // kBindingTexcoords
     gl::Texture mTextures;
     bool mHasTextures = false; // kUnitSceneTextures (scene_texture_array.h)
+    bool mHasTracedSpecular = false;
     gl::Buffer mLights;
     gl::Buffer mLightViews;
     BvhScene mBvh;

@@ -41,6 +41,10 @@ float computePixelAngle(const FrameInputs& inputs) {
 SpecularPass::SpecularPass(const GBuffer& viewer, const gl::Texture& indirect,
                            const gl::Texture& total)
     : mViewer(viewer), mIndirect(indirect), mTotal(total),
+      mAmbientProgram(ReloadableProgram(
+          {.label = "specular ambient",
+           .stages = {{gl::ShaderStage::Compute, "specular/specular_ambient.comp"}},
+           .defines = getGBufferDefines()})),
       mProgram(
           ReloadableProgram({.label = "specular trace",
                              .stages = {{gl::ShaderStage::Compute, "specular/specular_trace.comp"}},
@@ -49,15 +53,16 @@ SpecularPass::SpecularPass(const GBuffer& viewer, const gl::Texture& indirect,
           {.label = "specular filter",
            .stages = {{gl::ShaderStage::Compute, "specular/specular_filter.comp"}},
            .defines = getGBufferDefines()})),
-      mParams("specular parameters", sizeof(gpu::SpecularParams)) {}
+      mParams("specular parameters", sizeof(gpu::SpecularParams)),
+      mAmbient(gl::Texture::create2D("specular ambient", gl::Format::RGBA32F, 1, 1)) {}
 
-bool SpecularPass::isOn(const FrameSettings& settings) {
-    return settings.specularDepth > 0 && settings.bounces > 0;
+bool SpecularPass::isOn(const FrameSettings& settings, const GpuScene& scene) {
+    return settings.specularDepth > 0 && settings.bounces > 0 && scene.hasTracedSpecular();
 }
 
 void SpecularPass::execute(const FrameInputs& inputs) {
     const FrameSettings& settings = inputs.settings;
-    if (!isOn(settings)) return;
+    if (!isOn(settings, inputs.scene)) return;
     gpu::SpecularParams params{};
     // Light seen in a mirror reflected once more than the mirror's own: `bounces` caps the
     // levels as it caps the reference's camera paths.
@@ -75,6 +80,12 @@ void SpecularPass::execute(const FrameInputs& inputs) {
         mLight = gl::Texture::create2D("specular light", gl::Format::RGBA32F, inputs.width,
                                        inputs.height);
     }
+    // One work group samples the view for the ambient estimate, once for every traced pixel.
+    mAmbient.bindImage(gpu::kSpecularAmbientImage, false, true);
+    mAmbientProgram.use();
+    gl::dispatchCompute(1, 1);
+    gl::memoryBarrier(gl::Barrier::ImageAccess);
+    mAmbient.bindImage(gpu::kSpecularAmbientImage, true, false);
     mLight.bindImage(kImageUnit, false, true);
     mProgram.use();
     const auto groups = [](int size) {

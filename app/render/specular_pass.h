@@ -22,20 +22,24 @@ class SpecularPass final : public Pass {
     const char* getName() const override { return "specular"; }
     void execute(const FrameInputs& inputs) override;
     void reloadPrograms(ShaderReloadReport& report) override {
+        mAmbientProgram.reloadIfChanged(report);
         mProgram.reloadIfChanged(report);
         mFilter.reloadIfChanged(report);
     }
-    // Whether the pass has anything to do this frame (specular_depth and bounces > 0).
-    static bool isOn(const FrameSettings& settings);
+    // Whether the pass has anything to do this frame: specular_depth and bounces > 0, and the
+    // scene has a surface it traces (GpuScene::hasTracedSpecular).
+    static bool isOn(const FrameSettings& settings, const GpuScene& scene);
 
   private:
     const GBuffer& mViewer;
     const gl::Texture& mIndirect;
     const gl::Texture& mTotal;
+    ReloadableProgram mAmbientProgram;
     ReloadableProgram mProgram;
     ReloadableProgram mFilter;
     gl::Buffer mParams;
-    gl::Texture mLight; // what each pixel's rays see; alpha: a glossy ray's spread (px)
+    gl::Texture mAmbient; // 1x1: the view's indirect light per unit reflectance
+    gl::Texture mLight;   // what each pixel's rays see; alpha: a glossy ray's spread (px)
 };
 
 } // namespace ispm

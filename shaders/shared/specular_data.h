@@ -15,6 +15,8 @@ ISPM_NAMESPACE_BEGIN
 ISPM_CONST float kSpecularTraceMinExponent = 64.0f;
 // Work group of specular_trace.comp (square tiles of pixels).
 ISPM_CONST uint kSpecularGroupSize = 8u;
+// Image unit of the 1x1 ambient estimate (specular_ambient.comp writes it, the trace reads it).
+ISPM_CONST int kSpecularAmbientImage = 1;
 // The most levels a pixel traces (setting specular_depth's maximum): the depth-first stack holds
 // at most one ray more than the levels.
 ISPM_CONST uint kMaxSpecularDepth = 6u;

@@ -3,8 +3,8 @@
 // depth first, and adds what they see into the composed image. A hit is shaded with direct
 // light (a shadow ray to each light, as the reference does) and the indirect light of the
 // visible pixel it reprojects onto at the same depth; where no visible pixel shows it, an
-// ambient estimate: its diffuse reflectance times the mean indirect light per unit reflectance
-// over a grid of visible pixels (E / pi of the view's average indirect irradiance).
+// ambient estimate: its diffuse reflectance times the view's mean indirect light per unit
+// reflectance (specular_ambient.comp, run before).
 // Weights follow the reference's camera paths (reference.comp, photon_scatter.h): the Phong
 // lobe's f cos / pdf at its axis, Fresnel (exact, for dielectrics) times the transmittance for
 // glass, and (n_i / n_t)^2 on radiance across a refraction. What a pixel sees is written to
@@ -22,6 +22,7 @@ layout(binding = kUnitIndirect) uniform sampler2D uIndirect;
 
 layout(local_size_x = kSpecularGroupSize, local_size_y = kSpecularGroupSize) in;
 layout(binding = 0, rgba32f) writeonly uniform image2D uSpecularLight;
+layout(binding = kSpecularAmbientImage, rgba32f) readonly uniform image2D uAmbient;
 
 layout(std140, binding = kBindingPassParams) uniform SpecularParamsBlock { SpecularParams params; };
 
@@ -35,17 +36,6 @@ struct PendingRay {
     uint level; // 1 for the rays leaving the visible surface
 };
 
-// The ambient estimate samples the view on this many pixels per axis, each group all of them
-// (kSpecularGroupSize^2 invocations share the fetches); 256 samples of already smoothed
-// splats average to a few percent.
-const uint kAmbientGrid = 16u;
-const uint kGroupInvocations = kSpecularGroupSize * kSpecularGroupSize;
-// Pixels darker in diffuse reflectance than this are left out: dividing their indirect light
-// by it would magnify the splats' noise.
-const float kMinAmbientReflectance = 0.02;
-shared vec4 sAmbient[kGroupInvocations]; // rgb = sum of indirect / diffuse, a = samples
-
-vec3 gAmbient = vec3(0.0); // computeAmbient's result
 PendingRay gStack[kMaxSpecularDepth + 1u];
 uint gTop = 0u;
 
@@ -97,40 +87,10 @@ vec3 shadeDirect(vec3 position, vec3 n, vec3 wo, GpuMaterial m) {
     return radiance;
 }
 
-// The view's mean indirect light per unit diffuse reflectance, over kAmbientGrid^2 pixels that
-// show a diffuse surface the pass does not trace. Every invocation of the group must call it.
-void computeAmbient() {
-    uint local = gl_LocalInvocationIndex;
-    vec4 sum = vec4(0.0);
-    for (uint i = local; i < kAmbientGrid * kAmbientGrid; i += kGroupInvocations) {
-        vec2 cell = (vec2(i % kAmbientGrid, i / kAmbientGrid) + 0.5) / float(kAmbientGrid);
-        ivec2 pixel = ivec2(cell * frame.imageSize.xy);
-        if (texelFetch(uPosition, pixel, 0).w < 0.5) continue;
-        if (isMirrorLobe(texelFetch(uSpecular, pixel, 0)) ||
-            isTransmissive(texelFetch(uTransmissive, pixel, 0))) {
-            continue;
-        }
-        vec3 diffuse = texelFetch(uDiffuse, pixel, 0).rgb;
-        if (min(diffuse.r, min(diffuse.g, diffuse.b)) < kMinAmbientReflectance) continue;
-        sum += vec4(texelFetch(uIndirect, pixel, 0).rgb / diffuse, 1.0);
-    }
-    sAmbient[local] = sum;
-    barrier();
-    if (local == 0u) {
-        vec4 total = vec4(0.0);
-        for (uint i = 0u; i < kGroupInvocations; ++i)
-            total += sAmbient[i];
-        sAmbient[0] = total;
-    }
-    barrier();
-    vec4 total = sAmbient[0];
-    gAmbient = total.a > 0.0 ? total.rgb / total.a : vec3(0.0);
-}
-
 // The indirect light of a hit: that of the visible pixel it projects onto when that pixel shows
 // the same point (its distance from the eye alike), else the ambient estimate.
 vec3 lookUpIndirect(vec3 position, vec3 diffuse) {
-    vec3 ambient = diffuse * gAmbient;
+    vec3 ambient = diffuse * imageLoad(uAmbient, ivec2(0)).rgb;
     vec4 clip = frame.clipFromWorld * vec4(position, 1.0);
     if (clip.w <= 0.0) return ambient;
     vec2 ndc = clip.xy / clip.w;
@@ -152,7 +112,6 @@ float computeGlossySpread(float exponent, float t, float eyeDistance) {
 }
 
 void main() {
-    computeAmbient(); // before any invocation leaves: the group shares the work
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(pixel, ivec2(frame.imageSize.xy)))) return;
     imageStore(uSpecularLight, pixel, vec4(0.0)); // what a pixel that traces nothing adds
