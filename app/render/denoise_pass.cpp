@@ -40,8 +40,10 @@ void DenoisePass::execute(const FrameInputs& inputs) {
     mViewer.bindTextures(gpu::kUnitGBufferFirst);
     std::vector<gpu::FilterParams> params(static_cast<size_t>(iterations));
     for (int i = 0; i < iterations; ++i) {
-        const bool last = i + 1 >= iterations;
-        params[size_t(i)].iteration = glm::ivec4(1 << i, i == 0 ? 1 : 0, last ? 1 : 0, divisor);
+        // The last iteration multiplies the reflectance back only at the image's resolution:
+        // the upsample to it reads irradiance (UpsamplePass).
+        const bool modulate = i + 1 >= iterations && divisor == 1;
+        params[size_t(i)].iteration = glm::ivec4(1 << i, i == 0 ? 1 : 0, modulate ? 1 : 0, divisor);
     }
     mParams.upload(params);
     const gl::Texture* source = &mIndirect;

@@ -19,6 +19,8 @@ class DenoisePass final : public Pass {
     // The targets follow the splat buffer's size at each execute.
     void execute(const FrameInputs& inputs) override;
     void reloadPrograms(ShaderReloadReport& report) override { mProgram.reloadIfChanged(report); }
+    // Radiance; irradiance (divided by the reflectance) when the buffer is smaller than the
+    // image and the filter ran, for UpsamplePass to multiply by each image pixel's own.
     const gl::Texture& getOutput() const { return mTargets[kOutput].getTexture(); }
 
   private:

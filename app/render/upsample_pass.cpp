@@ -33,7 +33,10 @@ void UpsamplePass::execute(const FrameInputs& inputs) {
     mViewer.bindTextures(gpu::kUnitGBufferFirst);
     mFiltered.bindUnit(gpu::kUnitFilterSource);
     mCaustics.bindUnit(gpu::kUnitCaustics);
-    const gpu::FilterParams params{glm::ivec4(caustics ? 1 : 0, 0, 0, divisor)};
+    // The filter leaves irradiance in a buffer smaller than the image; the splats as they are
+    // (denoise 0) are radiance, divided by the reflectance where they were splatted.
+    const bool demodulate = inputs.progressive.denoiseIterations == 0;
+    const gpu::FilterParams params{glm::ivec4(caustics ? 1 : 0, demodulate ? 1 : 0, 0, divisor)};
     mParams.upload(0, sizeof(params), &params);
     mParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
     drawFullscreenTriangle();

@@ -2,7 +2,8 @@
 // a 5x5 B3-spline kernel with holes of `step` pixels, each tap weighted down where the surface
 // turns (normals) or steps away from the pixel's plane (positions, in pixel footprints). The
 // first iteration divides the light by the diffuse reflectance, so the filter smooths irradiance
-// and keeps texture and colour edges; the last multiplies it back.
+// and keeps texture and colour edges; the last multiplies it back, unless an upsample to the
+// image's resolution follows, which reads irradiance.
 #include "lib/frame_constants.glsl"
 #include "lib/gbuffer_filter.glsl"
 

@@ -1,8 +1,9 @@
 // Joint-bilateral upsample of the indirect light (UpsamplePass): the buffer pixel i stands for
 // the viewer G-buffer pixel i d + d / 2 (splat.frag), so an image pixel lies between four of
 // them. Each of the 4x4 nearest is weighted by a tent over two buffer pixels, by the normal test
-// and the off-plane distance of the filter (atrous.frag), and read as irradiance (divided by the
-// reflectance at its own G-buffer pixel); the sum is multiplied by the pixel's reflectance. A
+// and the off-plane distance of the filter (atrous.frag), and read as irradiance (the filter's
+// output is; the splats as they are are divided by the reflectance at their own G-buffer pixel);
+// the sum is multiplied by the pixel's reflectance. A
 // pixel no buffer pixel shares a surface with (a feature thinner than d pixels) takes the tent
 // alone. At a buffer of the image's size the light passes as it is. The caustic photons'
 // light, splatted apart at the image's size and unfiltered (shared/photon_data.h,
@@ -48,9 +49,11 @@ vec3 upsample(ivec2 pixel) {
             vec2 offset = abs(vec2(q) - at);
             float tent = max(1.0 - 0.5 * offset.x, 0.0) * max(1.0 - 0.5 * offset.y, 0.0);
             ivec2 qg = getBlockGBufferPixel(q, params.iteration.w);
-            if (tent <= 0.0 || texelFetch(uPosition, qg, 0).w < 0.5) continue;
-            vec3 irradiance = texelFetch(uSource, q, 0).rgb / getReflectance(qg);
-            float w = tent * weighTap(qg, n, position.xyz, planeScale);
+            vec4 qPosition = texelFetch(uPosition, qg, 0);
+            if (tent <= 0.0 || qPosition.w < 0.5) continue;
+            vec3 irradiance = texelFetch(uSource, q, 0).rgb;
+            if (params.iteration.y == 1) irradiance /= getReflectance(qg);
+            float w = tent * weighTapAt(qg, qPosition, n, position.xyz, planeScale);
             sum += w * irradiance;
             weights += w;
             tentSum += tent * irradiance;

@@ -32,11 +32,14 @@ float computePlaneScale(ivec2 g, vec3 position, int step) {
     return 1.0 / max(kPlaneFootprints * footprint, 1e-30);
 }
 
-// A tap at G-buffer pixel q weighed against the surface (n, position): normal and plane tests;
-// 0 where q shows no surface.
-float weighTap(ivec2 q, vec3 n, vec3 position, float planeScale) {
-    vec4 qPosition = texelFetch(uPosition, q, 0);
+// A tap at G-buffer pixel q, whose position channel the caller read (qPosition), weighed
+// against the surface (n, position): normal and plane tests; 0 where q shows no surface.
+float weighTapAt(ivec2 q, vec4 qPosition, vec3 n, vec3 position, float planeScale) {
     if (qPosition.w < 0.5) return 0.0;
     return weighNormals(dot(n, texelFetch(uNormal, q, 0).xyz)) *
            exp(-abs(dot(n, qPosition.xyz - position)) * planeScale);
+}
+
+float weighTap(ivec2 q, vec3 n, vec3 position, float planeScale) {
+    return weighTapAt(q, texelFetch(uPosition, q, 0), n, position, planeScale);
 }

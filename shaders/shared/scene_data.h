@@ -133,8 +133,8 @@ ISPM_STATIC_ASSERT_SIZE(AccumulateParams, 96);
 // kBindingPassParams; the filter's iterations are bound by range).
 struct FilterParams {
     ivec4 iteration; // x = step (px; upsample: 1 = add the caustic buffer), y = 1: demodulate
-                     // the input by reflectance, z = 1: modulate the output, w = image pixels
-                     // per buffer pixel along an axis
+                     // the input by reflectance (upsample: 0 = the input is irradiance already),
+                     // z = 1: modulate the output, w = image pixels per buffer pixel along an axis
 };
 ISPM_STATIC_ASSERT_SIZE(FilterParams, 16);
 
