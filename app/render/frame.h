@@ -71,8 +71,7 @@ class FrameRunner {
     // frame adapts at once (a still render).
     void setTimeStep(double seconds) { mTimeStepS = seconds; }
     // Viewer edits (both cheap when nothing relevant changed). setSettings resizes the passes when
-    // width/height change and re-uploads the scene when shadow_map_size (set, or derived from
-    // the image's size below 129 px) changes; every other
+    // width/height change and re-uploads the scene when shadow_map_size changes; every other
     // setting is read by the passes each frame. updateScene re-uploads instance transforms and
     // lights after the caller edited the Scene this runner was built on; rebuildScene uploads it
     // anew (BVH included) when lights or instances were added or removed.

@@ -8,7 +8,6 @@
 #include <shared/scene_data.h>
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 
 namespace ispm {
@@ -72,16 +71,6 @@ constexpr double kPixelsPerIteration = 32.0;
 // llvmpipe); larger images keep the filter's reach in pixels, not in image fractions.
 constexpr int kMaxDerivedIterations = 3;
 
-// Derived shadow_map_size: light texels per image pixel along the image's larger side. A light
-// view spans about the scene the viewer sees, so at 4 texels a pixel shadow edges stay within a
-// pixel or so; at 128x128 (Cornell box, courtyard outside and room) 512 texels keep the
-// indirect light's error as at 1,024 (seeds 1-4) and the whole image's within 7% (shadow edges;
-// 256 texels: 30%), and take the light views from 21-85 ms to 6-25 ms on llvmpipe. Capped at the
-// former fixed 1,024, so images from 129 px on are as before.
-constexpr int kShadowTexelsPerPixel = 4;
-constexpr int kMinDerivedShadowMap = 256;
-constexpr int kMaxDerivedShadowMap = 1024;
-
 std::optional<float> getIfSet(const Settings& settings, std::string_view name) {
     return settings.isSet(name) ? std::optional<float>(settings.getFloat(name)) : std::nullopt;
 }
@@ -110,13 +99,6 @@ glm::ivec2 computeSplatSize(const Settings& settings, int width, int height) {
     return {(width + divisor - 1) / divisor, (height + divisor - 1) / divisor};
 }
 
-int computeShadowMapSize(const Settings& settings, int width, int height) {
-    if (settings.isSet("shadow_map_size")) return settings.getInt("shadow_map_size");
-    const auto texels =
-        std::bit_ceil(static_cast<unsigned>(kShadowTexelsPerPixel * std::max(width, height)));
-    return std::clamp(static_cast<int>(texels), kMinDerivedShadowMap, kMaxDerivedShadowMap);
-}
-
 int computeDenoiseIterations(const Settings& settings, int width, int height) {
     if (settings.isSet("denoise")) return settings.getInt("denoise");
     const double iterations = std::log2(double(std::min(width, height)) / kPixelsPerIteration);
@@ -132,7 +114,7 @@ FrameSettings resolveFrameSettings(const Settings& settings) {
     f.gamma = settings.getFloat("gamma");
     f.luminanceMax = getIfSet(settings, "luminance_max");
     f.eyeAdaptationS = settings.getFloat("eye_adaptation_s");
-    f.shadowMapSize = computeShadowMapSize(settings, f.width, f.height);
+    f.shadowMapSize = settings.getInt("shadow_map_size");
     f.shadowBiasTexels = settings.getFloat("shadow_bias");
     f.seed = static_cast<uint32_t>(settings.getInt("seed"));
     f.photons = settings.getInt("photons");

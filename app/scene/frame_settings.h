@@ -94,7 +94,5 @@ int computeSplatNeighbours(const Settings& settings);
 int computeSplatDivisor(const Settings& settings, int width, int height);
 glm::ivec2 computeSplatSize(const Settings& settings, int width, int height);
 int computeDenoiseIterations(const Settings& settings, int width, int height);
-// shadow_map_size as set, else derived from the image's size (kShadowTexelsPerPixel).
-int computeShadowMapSize(const Settings& settings, int width, int height);
 
 } // namespace ispm

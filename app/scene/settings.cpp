@@ -72,10 +72,8 @@ const std::vector<SettingDesc>& table() {
          16,
          8192,
          "px",
-         "resolution of every light camera's G-buffer and shadow map; derived: 4x the image's "
-         "larger side rounded up to a power of two, 256 to 1024 (1024 from 129 px on)",
-         {},
-         true},
+         "resolution of every light camera's G-buffer and shadow map",
+         {}},
         {"shadow_bias",
          SettingType::Float,
          1.0,
