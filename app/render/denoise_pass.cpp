@@ -22,6 +22,10 @@ DenoisePass::DenoisePass(const GBuffer& viewer, const gl::Texture& indirect)
       mTargets({ColorTarget("indirect (denoised)", gl::Format::RGBA32F),
                 ColorTarget("denoise intermediate", gl::Format::RGBA32F)}) {}
 
+bool DenoisePass::leavesIrradiance(const FrameInputs& inputs) {
+    return inputs.progressive.denoiseIterations > 0 && inputs.settings.splatDivisor > 1;
+}
+
 void DenoisePass::execute(const FrameInputs& inputs) {
     const int width = mIndirect.getWidth();
     const int height = mIndirect.getHeight();
@@ -40,9 +44,7 @@ void DenoisePass::execute(const FrameInputs& inputs) {
     mViewer.bindTextures(gpu::kUnitGBufferFirst);
     std::vector<gpu::FilterParams> params(static_cast<size_t>(iterations));
     for (int i = 0; i < iterations; ++i) {
-        // The last iteration multiplies the reflectance back only at the image's resolution:
-        // the upsample to it reads irradiance (UpsamplePass).
-        const bool modulate = i + 1 >= iterations && divisor == 1;
+        const bool modulate = i + 1 >= iterations && !leavesIrradiance(inputs);
         params[size_t(i)].iteration = glm::ivec4(1 << i, i == 0 ? 1 : 0, modulate ? 1 : 0, divisor);
     }
     mParams.upload(params);

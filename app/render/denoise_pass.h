@@ -19,9 +19,11 @@ class DenoisePass final : public Pass {
     // The targets follow the splat buffer's size at each execute.
     void execute(const FrameInputs& inputs) override;
     void reloadPrograms(ShaderReloadReport& report) override { mProgram.reloadIfChanged(report); }
-    // Radiance; irradiance (divided by the reflectance) when the buffer is smaller than the
-    // image and the filter ran, for UpsamplePass to multiply by each image pixel's own.
+    // Radiance, or irradiance (divided by the reflectance) where leavesIrradiance.
     const gl::Texture& getOutput() const { return mTargets[kOutput].getTexture(); }
+    // Whether the output is irradiance: when the filter runs on a buffer smaller than the
+    // image, whose upsample (UpsamplePass) multiplies by each image pixel's own reflectance.
+    static bool leavesIrradiance(const FrameInputs& inputs);
 
   private:
     // The output and one more target: iterations alternate between them so that the last

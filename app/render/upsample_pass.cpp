@@ -4,6 +4,7 @@
 
 #include "gl/gl.h"
 #include "gl/state.h"
+#include "render/denoise_pass.h"
 #include "render/splat_pass.h"
 
 #include <shared/scene_data.h>
@@ -33,9 +34,9 @@ void UpsamplePass::execute(const FrameInputs& inputs) {
     mViewer.bindTextures(gpu::kUnitGBufferFirst);
     mFiltered.bindUnit(gpu::kUnitFilterSource);
     mCaustics.bindUnit(gpu::kUnitCaustics);
-    // The filter leaves irradiance in a buffer smaller than the image; the splats as they are
-    // (denoise 0) are radiance, divided by the reflectance where they were splatted.
-    const bool demodulate = inputs.progressive.denoiseIterations == 0;
+    // The splats as they are (denoise 0) are radiance, divided by the reflectance where they
+    // were splatted; at the image's resolution the light passes through as it is.
+    const bool demodulate = !DenoisePass::leavesIrradiance(inputs);
     const gpu::FilterParams params{glm::ivec4(caustics ? 1 : 0, demodulate ? 1 : 0, 0, divisor)};
     mParams.upload(0, sizeof(params), &params);
     mParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);

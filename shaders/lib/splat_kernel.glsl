@@ -53,14 +53,8 @@ float computeSplatWeight(vec4 centre, vec3 pn, vec3 tangent, vec3 bitangent, uin
     float z = along / (radius * squash);
     if (s2 + z * z > 1.0) return -1.0;
     vec2 x = vec2(dot(inPlane, tangent), dot(inPlane, bitangent));
-    // The lines are the first `lines` poles, all nonzero: one pass tests each and sums the mass
-    // the pixel's disc loses beyond it (computeKeptMass of shared/splat_clip.h, term for term).
-    float lost = 0.0;
-    for (uint i = 0u; i < lines; ++i) {
-        if (isBeyondLine(x, poles[i])) return -1.0;
-        lost += computeMassBeyondLine(x, poles[i], radius);
-    }
-    float keptMass = max(1.0 - lost, kMinKeptMass);
+    float keptMass = computeKeptMass(x, poles, lines, radius);
+    if (keptMass < 0.0) return -1.0; // beyond a clip line
     float kernel = 2.0 * kInvPi / (radius * radius) * (1.0 - s2);
     return kernel / keptMass;
 }

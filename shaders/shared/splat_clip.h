@@ -114,12 +114,15 @@ ISPM_INLINE float computeMassBeyondLine(vec2 x, vec2 pole, float radiusM) {
 }
 
 // Kernel mass that the disc of radius r around in-plane offset x keeps on the photon's side of
-// distinct lines (removeRepeatedLines; the corners two walls cut off together are counted twice,
-// and the floor keeps the result positive).
-ISPM_INLINE float computeKeptMass(vec2 x, const vec2 poles[kClipRays], float radiusM) {
+// the first `lines` poles, distinct lines all nonzero (removeRepeatedLines, then packed to the
+// front as loadSplatShape does; the corners two walls cut off together are counted twice, and
+// the floor keeps the result positive); -1 when x itself lies beyond one of them. One pass over
+// the lines: the splat's fragment stage runs it per covered pixel.
+ISPM_INLINE float computeKeptMass(vec2 x, const vec2 poles[kClipRays], uint lines, float radiusM) {
     float lost = 0.0f;
-    for (uint i = 0u; i < kClipRays; ++i) {
-        if (dot(poles[i], poles[i]) > 0.0f) lost += computeMassBeyondLine(x, poles[i], radiusM);
+    for (uint i = 0u; i < lines; ++i) {
+        if (isBeyondLine(x, poles[i])) return -1.0f;
+        lost += computeMassBeyondLine(x, poles[i], radiusM);
     }
     return max(1.0f - lost, kMinKeptMass);
 }

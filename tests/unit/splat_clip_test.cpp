@@ -50,7 +50,9 @@ TEST(SplatClip, KeptMassOfACornerCountsEachWallOnce) {
     gpu::removeRepeatedLines(poles, 1.0f);
     EXPECT_EQ(poles[1], gpu::vec2(0.0f));
     EXPECT_EQ(poles[7], gpu::vec2(0.0f));
-    const float computed = gpu::computeKeptMass(gpu::vec2(0.0f), poles, 1.0f);
+    // The distinct lines packed to the front, as loadSplatShape hands them to the kernel.
+    const gpu::vec2 lines[gpu::kClipRays] = {poles[0], poles[6]};
+    const float computed = gpu::computeKeptMass(gpu::vec2(0.0f), lines, 2u, 1.0f);
     // The corner region both lines cut off is counted twice: measured 0.617 against 0.643, so
     // 0.03 allows it and still fails a formula that ignores a wall (off by 0.17) or counts the
     // first wall three times (off by 0.4).
@@ -59,9 +61,11 @@ TEST(SplatClip, KeptMassOfACornerCountsEachWallOnce) {
     // grows (measured 0.458 against 0.508); 0.06 still fails a missing wall (off by 0.17).
     const double keptNearWall =
         integrateKernel([](double x, double y) { return x + 0.2 < 0.3 && y > -0.5; });
-    EXPECT_NEAR(gpu::computeKeptMass(gpu::vec2(0.2f, 0.0f), poles, 1.0f), keptNearWall, 0.06);
+    EXPECT_NEAR(gpu::computeKeptMass(gpu::vec2(0.2f, 0.0f), lines, 2u, 1.0f), keptNearWall, 0.06);
+    // Beyond a line the pixel receives nothing; with no lines the whole disc is kept.
+    EXPECT_LT(gpu::computeKeptMass(gpu::vec2(0.31f, 0.0f), lines, 2u, 1.0f), 0.0f);
     const gpu::vec2 none[gpu::kClipRays] = {};
-    EXPECT_FLOAT_EQ(gpu::computeKeptMass(gpu::vec2(0.0f), none, 1.0f), 1.0f);
+    EXPECT_FLOAT_EQ(gpu::computeKeptMass(gpu::vec2(0.0f), none, 0u, 1.0f), 1.0f);
     EXPECT_FALSE(gpu::isBeyondLine(gpu::vec2(0.29f, 0.0f), poles[0]));
     EXPECT_TRUE(gpu::isBeyondLine(gpu::vec2(0.31f, 0.5f), poles[0]));
     EXPECT_FALSE(gpu::isBeyondLine(gpu::vec2(5.0f, 5.0f), none[0]));
