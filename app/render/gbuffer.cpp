@@ -23,7 +23,7 @@ constexpr GBufferChannel kChannels[] = {
      "specular reflectance rgb; w = Phong exponent"},
     {"transmissive", "GBUFFER_TRANSMISSIVE", gl::Format::RGBA16F,
      "transmittance rgb; w = index of refraction"},
-    {"emission", "GBUFFER_EMISSION", gl::Format::RGBA16F, "emitted radiance rgb, W/(m^2 sr)"},
+    {"emission", "GBUFFER_EMISSION", gl::Format::RGBA16F, "emitted radiance rgb, W/(m^2 sr)", true},
     {"velocity", "GBUFFER_VELOCITY", gl::Format::RG16F,
      "screen-space motion since the last frame drawn, in pixels (x right, y up): where this "
      "surface point was, moved with its instance and seen through the last frame's camera; 0 where "
@@ -149,10 +149,13 @@ void drawSceneGBuffer(const gl::Program& program, const GpuScene& scene,
 
 namespace {
 
-ReloadableProgram buildGBufferProgram(bool textured) {
+ReloadableProgram buildGBufferProgram(bool textured, bool lightViews) {
     std::vector<std::string> defines = getGBufferDefines();
     defines.push_back(textured ? "GBUFFER_TEXTURES 1" : "GBUFFER_TEXTURES 0");
-    return ReloadableProgram({.label = textured ? "gbuffer textured" : "gbuffer",
+    defines.push_back(lightViews ? "GBUFFER_LIGHT_VIEWS 1" : "GBUFFER_LIGHT_VIEWS 0");
+    const std::string label =
+        std::string(lightViews ? "light view gbuffer" : "gbuffer") + (textured ? " textured" : "");
+    return ReloadableProgram({.label = label,
                               .stages = {{gl::ShaderStage::Vertex, "gbuffer/gbuffer.vert"},
                                          {gl::ShaderStage::Fragment, "gbuffer/gbuffer.frag"}},
                               .defines = defines});
@@ -160,11 +163,12 @@ ReloadableProgram buildGBufferProgram(bool textured) {
 
 } // namespace
 
-GBufferPrograms::GBufferPrograms() : mPlain(buildGBufferProgram(false)) {}
+GBufferPrograms::GBufferPrograms(bool lightViews)
+    : mLightViews(lightViews), mPlain(buildGBufferProgram(false, lightViews)) {}
 
 const gl::Program& GBufferPrograms::get(bool textured) {
     if (!textured) return mPlain.get();
-    if (!mTextured) mTextured = buildGBufferProgram(true);
+    if (!mTextured) mTextured = buildGBufferProgram(true, mLightViews);
     return mTextured->get();
 }
 

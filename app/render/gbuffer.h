@@ -24,8 +24,8 @@ struct GBufferChannel {
     std::string_view define; // GLSL output location macro
     gl::Format format;
     std::string_view meaning;
-    // Written for the viewer only (light views have no such attachment; their draws' writes to
-    // its location are dropped). Such channels come last, so the others' indices match.
+    // Written for the viewer only (light views have no such attachment, and their program
+    // writes no such output). Such channels come last, so the others' indices match.
     bool viewerOnly = false;
 };
 
@@ -84,11 +84,14 @@ void drawSceneGBuffer(const gl::Program& program, const GpuScene& scene,
 // when a scene with textures is first drawn.
 class GBufferPrograms {
   public:
-    GBufferPrograms();
+    // lightViews: the light cameras' variant (GBUFFER_LIGHT_VIEWS 1), which writes no
+    // viewer-only channel and interpolates nothing for them.
+    explicit GBufferPrograms(bool lightViews);
     const gl::Program& get(bool textured);
     void reloadIfChanged(ShaderReloadReport& report);
 
   private:
+    bool mLightViews;
     ReloadableProgram mPlain;
     std::optional<ReloadableProgram> mTextured;
 };

@@ -8,7 +8,8 @@
 
 namespace ispm {
 
-GBufferPass::GBufferPass() : mParams("gbuffer parameters"), mVertexArray("gbuffer vao") {}
+GBufferPass::GBufferPass()
+    : mPrograms(false), mParams("gbuffer parameters"), mVertexArray("gbuffer vao") {}
 
 void GBufferPass::resize(int width, int height) {
     if (mGBuffer.getWidth() != width || mGBuffer.getHeight() != height) {
@@ -38,7 +39,8 @@ void GBufferPass::execute(const FrameInputs& inputs) {
     drawSceneGBuffer(mPrograms.get(inputs.scene.hasTextures()), inputs.scene, mParams, 0);
 }
 
-LightViewPass::LightViewPass() : mParams("light view parameters"), mVertexArray("light view vao") {}
+LightViewPass::LightViewPass()
+    : mPrograms(true), mParams("light view parameters"), mVertexArray("light view vao") {}
 
 void LightViewPass::execute(const FrameInputs& inputs) {
     executeViews(inputs, 0, getViewCount(inputs));

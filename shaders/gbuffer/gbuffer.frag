@@ -10,8 +10,10 @@ in vec3 vPositionW;
 #if GBUFFER_TEXTURES
 in vec2 vTexcoord;
 #endif
+#if !GBUFFER_LIGHT_VIEWS
 in vec4 vClip;
 in vec4 vPreviousClip;
+#endif
 flat in vec3 vNormalW;
 flat in uint vMaterial;
 flat in uint vInstance;
@@ -21,8 +23,10 @@ layout(location = GBUFFER_NORMAL) out vec4 outNormal;
 layout(location = GBUFFER_DIFFUSE) out vec4 outDiffuse;
 layout(location = GBUFFER_SPECULAR) out vec4 outSpecular;
 layout(location = GBUFFER_TRANSMISSIVE) out vec4 outTransmissive;
+#if !GBUFFER_LIGHT_VIEWS // the viewer-only channels
 layout(location = GBUFFER_EMISSION) out vec4 outEmission;
-layout(location = GBUFFER_VELOCITY) out vec2 outVelocity; // viewer only (dropped for lights)
+layout(location = GBUFFER_VELOCITY) out vec2 outVelocity;
+#endif
 
 void main() {
     vec4 eye = params.eye;
@@ -47,10 +51,12 @@ void main() {
     outDiffuse = vec4(diffuse, 0.0);
     outSpecular = m.specular;
     outTransmissive = m.transmissive;
+#if !GBUFFER_LIGHT_VIEWS
     outEmission = vec4(m.emission.rgb, 0.0);
     // A point behind the last frame's eye has no place in its image: no motion.
     vec2 motionNdc = vPreviousClip.w > 0.0
                          ? vClip.xy / vClip.w - vPreviousClip.xy / vPreviousClip.w
                          : vec2(0.0);
     outVelocity = motionNdc * params.pixelScale.xy - params.pixelScale.zw;
+#endif
 }

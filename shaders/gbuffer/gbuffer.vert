@@ -15,9 +15,11 @@ out vec3 vPositionW;
 #if GBUFFER_TEXTURES
 out vec2 vTexcoord;
 #endif
+#if !GBUFFER_LIGHT_VIEWS
 // This frame's and the last frame's clip positions (velocity), divided per fragment.
 out vec4 vClip;
 out vec4 vPreviousClip;
+#endif
 flat out vec3 vNormalW;
 flat out uint vMaterial;
 flat out uint vInstance;
@@ -40,7 +42,9 @@ void main() {
     vMaterial = tri.w;
     vInstance = instance;
     gl_Position = params.clipFromWorld * positionW;
+#if !GBUFFER_LIGHT_VIEWS
     vClip = gl_Position;
     vPreviousClip =
         params.previousClipFromWorld * (previousWorldFromObject[instance] * vec4(p, 1.0));
+#endif
 }
