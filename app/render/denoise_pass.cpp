@@ -1,4 +1,5 @@
-// Denoise: ping-pong a-trous iterations, the last into the output target.
+// Denoise: the filter's input and guide, then ping-pong a-trous iterations, the last draw into
+// the output target.
 #include "render/denoise_pass.h"
 
 #include "gl/gl.h"
@@ -6,56 +7,80 @@
 
 #include <shared/scene_data.h>
 
-#include <cstring>
+#include <string>
 #include <vector>
 
 namespace ispm {
-namespace {} // namespace
 
 DenoisePass::DenoisePass(const GBuffer& viewer, const gl::Texture& indirect)
     : mViewer(viewer), mIndirect(indirect),
+      mInputProgram(
+          ReloadableProgram({.label = "filter input",
+                             .stages = {{gl::ShaderStage::Vertex, "lib/fullscreen.vert"},
+                                        {gl::ShaderStage::Fragment, "denoise/filter_input.frag"}},
+                             .defines = getGBufferDefines()})),
       mProgram(ReloadableProgram({.label = "denoise",
                                   .stages = {{gl::ShaderStage::Vertex, "lib/fullscreen.vert"},
                                              {gl::ShaderStage::Fragment, "denoise/atrous.frag"}},
                                   .defines = getGBufferDefines()})),
-      mVertexArray("denoise vao"),
-      mTargets({ColorTarget("indirect (denoised)", gl::Format::RGBA32F),
-                ColorTarget("denoise intermediate", gl::Format::RGBA32F)}) {}
+      mVertexArray("denoise vao") {}
 
 bool DenoisePass::leavesIrradiance(const FrameInputs& inputs) {
-    return inputs.progressive.denoiseIterations > 0 && inputs.settings.splatDivisor > 1;
+    return inputs.settings.splatDivisor > 1;
+}
+
+void DenoisePass::resize(int width, int height) {
+    if (mGuide.getWidth() == width && mGuide.getHeight() == height) return;
+    const std::array<const char*, 2> labels = {"indirect (denoised)", "denoise intermediate"};
+    mGuide = gl::Texture::create2D("filter guide", gl::Format::RGBA32F, width, height);
+    for (size_t i = 0; i < mTextures.size(); ++i) {
+        mTextures[i] = gl::Texture::create2D(labels[i], gl::Format::RGBA32F, width, height);
+        mTargets[i] = gl::Framebuffer(std::string(labels[i]) + " target");
+        mTargets[i].attachColor(0, mTextures[i]);
+        mTargets[i].setDrawBufferCount(1);
+        mTargets[i].checkComplete();
+        mInputTargets[i] = gl::Framebuffer(std::string(labels[i]) + " and guide target");
+        mInputTargets[i].attachColor(0, mTextures[i]);
+        mInputTargets[i].attachColor(1, mGuide);
+        mInputTargets[i].setDrawBufferCount(2);
+        mInputTargets[i].checkComplete();
+    }
 }
 
 void DenoisePass::execute(const FrameInputs& inputs) {
-    const int width = mIndirect.getWidth();
-    const int height = mIndirect.getHeight();
-    for (ColorTarget& target : mTargets)
-        target.resize(width, height);
+    resize(mIndirect.getWidth(), mIndirect.getHeight());
     const int iterations = inputs.progressive.denoiseIterations;
     const int divisor = inputs.settings.splatDivisor;
-    if (iterations == 0) {
-        mTargets[kOutput].getTexture().copyFrom(mIndirect); // the splats as they are
+    if (iterations == 0 && divisor == 1) {
+        mTextures[kOutput].copyFrom(mIndirect); // the splats as they are
         return;
     }
     gl::applyState({});
-    mProgram.use();
     mVertexArray.bind();
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
     mViewer.bindTextures(gpu::kUnitGBufferFirst);
-    std::vector<gpu::FilterParams> params(static_cast<size_t>(iterations));
+    // Draw 0 writes the input and guide, draw i + 1 is iteration i.
+    std::vector<gpu::FilterParams> params = {{glm::ivec4(0, 0, 0, divisor)}};
     for (int i = 0; i < iterations; ++i) {
         const bool modulate = i + 1 >= iterations && !leavesIrradiance(inputs);
-        params[size_t(i)].iteration = glm::ivec4(1 << i, i == 0 ? 1 : 0, modulate ? 1 : 0, divisor);
+        params.push_back({glm::ivec4(1 << i, modulate ? 1 : 0, 0, divisor)});
     }
     mParams.upload(params);
-    const gl::Texture* source = &mIndirect;
+    const auto targetOf = [&](int draw) {
+        return (iterations - draw) % 2 == 0 ? kOutput : 1 - kOutput;
+    };
+    mInputTargets[targetOf(0)].bind();
+    mInputProgram.use();
+    mIndirect.bindUnit(gpu::kUnitFilterSource);
+    mParams.bind(0);
+    drawFullscreenTriangle();
+    mProgram.use();
+    mGuide.bindUnit(gpu::kUnitFilterGuide);
     for (int i = 0; i < iterations; ++i) {
-        const size_t target = (iterations - 1 - i) % 2 == 0 ? kOutput : 1 - kOutput;
-        mTargets[target].bind();
-        source->bindUnit(gpu::kUnitFilterSource);
-        mParams.bind(size_t(i));
+        mTextures[targetOf(i)].bindUnit(gpu::kUnitFilterSource);
+        mTargets[targetOf(i + 1)].bind();
+        mParams.bind(size_t(i) + 1);
         drawFullscreenTriangle();
-        source = &mTargets[target].getTexture();
     }
 }
 

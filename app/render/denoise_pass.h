@@ -1,6 +1,9 @@
 // DenoisePass: the splats' indirect light through `denoise` iterations of an edge-aware a-trous
 // filter (steps 1, 2, 4, ... pixels of the splat buffer) guided by the viewer G-buffer; 0 passes
-// it through. It works at the splat buffer's resolution; UpsamplePass follows.
+// it through. It works at the splat buffer's resolution; UpsamplePass follows. A first draw
+// (filter_input.frag) divides the splats by the reflectance and writes the guide: the surface
+// (position, normal) each buffer pixel stands for, which the filter's and the upsample's taps
+// read in one fetch of a texture the buffer's size.
 #pragma once
 
 #include "render/fullscreen.h"
@@ -18,23 +21,34 @@ class DenoisePass final : public Pass {
     const char* getName() const override { return "denoise"; }
     // The targets follow the splat buffer's size at each execute.
     void execute(const FrameInputs& inputs) override;
-    void reloadPrograms(ShaderReloadReport& report) override { mProgram.reloadIfChanged(report); }
+    void reloadPrograms(ShaderReloadReport& report) override {
+        mInputProgram.reloadIfChanged(report);
+        mProgram.reloadIfChanged(report);
+    }
     // Radiance, or irradiance (divided by the reflectance) where leavesIrradiance.
-    const gl::Texture& getOutput() const { return mTargets[kOutput].getTexture(); }
-    // Whether the output is irradiance: when the filter runs on a buffer smaller than the
-    // image, whose upsample (UpsamplePass) multiplies by each image pixel's own reflectance.
+    const gl::Texture& getOutput() const { return mTextures[kOutput]; }
+    // The guide of this frame's buffer (lib/gbuffer_filter.glsl), written unless the light
+    // passed through as it was (denoise 0 at the image's resolution).
+    const gl::Texture& getGuide() const { return mGuide; }
+    // Whether the output is irradiance: when the buffer is smaller than the image, whose
+    // upsample (UpsamplePass) multiplies by each image pixel's own reflectance.
     static bool leavesIrradiance(const FrameInputs& inputs);
 
   private:
-    // The output and one more target: iterations alternate between them so that the last
-    // writes the output.
+    // The output and one more target: the draws alternate between them so that the last writes
+    // the output.
     static constexpr size_t kOutput = 0;
+    void resize(int width, int height);
     const GBuffer& mViewer;
     const gl::Texture& mIndirect;
+    ReloadableProgram mInputProgram;
     ReloadableProgram mProgram;
-    ParamBlocks<gpu::FilterParams> mParams{"filter parameters"}; // one per iteration
+    ParamBlocks<gpu::FilterParams> mParams{"filter parameters"}; // one per draw
     gl::VertexArray mVertexArray;
-    std::array<ColorTarget, 2> mTargets;
+    std::array<gl::Texture, 2> mTextures;
+    gl::Texture mGuide;
+    std::array<gl::Framebuffer, 2> mTargets;      // mTextures[i]
+    std::array<gl::Framebuffer, 2> mInputTargets; // mTextures[i] and the guide
 };
 
 } // namespace ispm

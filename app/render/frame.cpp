@@ -52,7 +52,7 @@ FrameRunner::FrameRunner(const Scene& scene, const Settings& settings, gl::Timin
     mDenoise = std::make_unique<DenoisePass>(mGBuffer->getGBuffer(), mSplat->getOutput());
     mDirect = std::make_unique<DirectPass>(mGBuffer->getGBuffer(), mLightViews->getGBuffer());
     mUpsample = std::make_unique<UpsamplePass>(mGBuffer->getGBuffer(), mDenoise->getOutput(),
-                                               mSplat->getCaustics());
+                                               mDenoise->getGuide(), mSplat->getCaustics());
     mAccumulate = std::make_unique<AccumulatePass>(mGBuffer->getGBuffer(), mDirect->getOutput(),
                                                    mUpsample->getOutput());
     mCompose = std::make_unique<ComposePass>(mGBuffer->getGBuffer(), mAccumulate->getDirect(),

@@ -4,15 +4,14 @@
 
 #include "gl/gl.h"
 #include "gl/state.h"
-#include "render/denoise_pass.h"
 #include "render/splat_pass.h"
 
 #include <shared/scene_data.h>
 
 namespace ispm {
 UpsamplePass::UpsamplePass(const GBuffer& viewer, const gl::Texture& filtered,
-                           const gl::Texture& caustics)
-    : mViewer(viewer), mFiltered(filtered), mCaustics(caustics),
+                           const gl::Texture& guide, const gl::Texture& caustics)
+    : mViewer(viewer), mFiltered(filtered), mGuide(guide), mCaustics(caustics),
       mProgram(ReloadableProgram({.label = "upsample",
                                   .stages = {{gl::ShaderStage::Vertex, "lib/fullscreen.vert"},
                                              {gl::ShaderStage::Fragment, "denoise/upsample.frag"}},
@@ -33,11 +32,11 @@ void UpsamplePass::execute(const FrameInputs& inputs) {
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
     mViewer.bindTextures(gpu::kUnitGBufferFirst);
     mFiltered.bindUnit(gpu::kUnitFilterSource);
+    mGuide.bindUnit(gpu::kUnitFilterGuide);
     mCaustics.bindUnit(gpu::kUnitCaustics);
-    // The splats as they are (denoise 0) are radiance, divided by the reflectance where they
-    // were splatted; at the image's resolution the light passes through as it is.
-    const bool demodulate = !DenoisePass::leavesIrradiance(inputs);
-    const gpu::FilterParams params{glm::ivec4(caustics ? 1 : 0, demodulate ? 1 : 0, 0, divisor)};
+    // Irradiance from a smaller buffer (DenoisePass::leavesIrradiance); at the image's
+    // resolution the light passes through as it is.
+    const gpu::FilterParams params{glm::ivec4(caustics ? 1 : 0, 0, 0, divisor)};
     mParams.upload(0, sizeof(params), &params);
     mParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
     drawFullscreenTriangle();

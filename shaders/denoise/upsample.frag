@@ -1,24 +1,25 @@
 // Joint-bilateral upsample of the indirect light (UpsamplePass): the buffer pixel i stands for
 // the viewer G-buffer pixel i d + d / 2 (splat.frag), so an image pixel lies between four of
-// them. Each of the 4x4 nearest is weighted by a tent over two buffer pixels, by the normal test
-// and the off-plane distance of the filter (atrous.frag), and read as irradiance (the filter's
-// output is; the splats as they are are divided by the reflectance at their own G-buffer pixel);
-// the sum is multiplied by the pixel's reflectance. A
-// pixel no buffer pixel shares a surface with (a feature thinner than d pixels) takes the tent
-// alone. At a buffer of the image's size the light passes as it is. The caustic photons'
-// light, splatted apart at the image's size and unfiltered (shared/photon_data.h,
-// kSplatCausticPhotons), is added when iteration.x is 1.
+// them. Each of the four is weighted bilinearly, by the normal test and the off-plane distance
+// of the filter (atrous.frag) on its guide texel (filter_input.frag), and read as irradiance;
+// the sum is multiplied by the pixel's reflectance. A pixel none of the four shares a surface
+// with (a feature thinner than d pixels) takes the bilinear weights alone. At a buffer of the
+// image's size the light passes as it is. The caustic photons' light, splatted apart at the
+// image's size and unfiltered (shared/photon_data.h, kSplatCausticPhotons), is added when
+// iteration.x is 1.
 #include "lib/frame_constants.glsl"
 #include "lib/gbuffer_filter.glsl"
 
 layout(binding = kUnitFilterSource) uniform sampler2D uSource;
 layout(binding = kUnitCaustics) uniform sampler2D uCaustics;
+layout(binding = kUnitFilterGuide) uniform sampler2D uGuide;
 
 layout(std140, binding = kBindingPassParams) uniform FilterParamsBlock { FilterParams params; };
 
 layout(location = 0) out vec4 outRadiance;
 
-const float kMinWeight = 1e-4; // below: no buffer pixel shares the surface
+const float kMinWeight = 1e-6; // below: no buffer pixel shares the surface
+const float kTentFloor = 1e-2;
 
 vec3 upsample(ivec2 pixel);
 
@@ -37,23 +38,23 @@ vec3 upsample(ivec2 pixel) {
     // Footprints of a buffer pixel on this surface.
     float planeScale = computePlaneScale(pixel, position.xyz, params.iteration.w);
     vec2 at = (vec2(pixel) - float(params.iteration.w / 2)) / float(params.iteration.w); // in buffer pixels
-    ivec2 first = ivec2(floor(at)) - 1;
+    ivec2 first = ivec2(floor(at));
     vec3 sum = vec3(0.0);
     float weights = 0.0;
     vec3 tentSum = vec3(0.0);
     float tentWeights = 0.0;
-    for (int y = 0; y < 4; ++y) {
-        for (int x = 0; x < 4; ++x) {
+    for (int y = 0; y < 2; ++y) {
+        for (int x = 0; x < 2; ++x) {
             ivec2 q = first + ivec2(x, y);
             if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
             vec2 offset = abs(vec2(q) - at);
-            float tent = max(1.0 - 0.5 * offset.x, 0.0) * max(1.0 - 0.5 * offset.y, 0.0);
-            ivec2 qg = getBlockGBufferPixel(q, params.iteration.w);
-            vec4 qPosition = texelFetch(uPosition, qg, 0);
-            if (tent <= 0.0 || qPosition.w < 0.5) continue;
+            // Bilinear, with a floor that lets a tap on the pixel's own surface count where
+            // the nearer ones lie on another.
+            float tent = max(1.0 - offset.x, kTentFloor) * max(1.0 - offset.y, kTentFloor);
+            vec4 guide = texelFetch(uGuide, q, 0);
+            if (guide.w == kGuideNoSurface) continue;
             vec3 irradiance = texelFetch(uSource, q, 0).rgb;
-            if (params.iteration.y == 1) irradiance /= getReflectance(qg);
-            float w = tent * weighTapAt(qg, qPosition, n, position.xyz, planeScale);
+            float w = tent * weighGuide(guide, n, position.xyz, planeScale);
             sum += w * irradiance;
             weights += w;
             tentSum += tent * irradiance;

@@ -43,3 +43,13 @@ float weighTapAt(ivec2 q, vec4 qPosition, vec3 n, vec3 position, float planeScal
 float weighTap(ivec2 q, vec3 n, vec3 position, float planeScale) {
     return weighTapAt(q, texelFetch(uPosition, q, 0), n, position, planeScale);
 }
+
+// The filter guide's encoding.
+#include "../shared/filter_guide.h"
+
+// weighTapAt for a guide texel.
+float weighGuide(vec4 guide, vec3 n, vec3 position, float planeScale) {
+    if (guide.w == kGuideNoSurface) return 0.0;
+    return weighNormals(dot(n, decodeGuideNormal(guide.w))) *
+           exp(-abs(dot(n, guide.xyz - position)) * planeScale);
+}

@@ -99,6 +99,8 @@ ISPM_CONST int kUnitHistoryPosition = 23;
 ISPM_CONST int kUnitHistoryNormal = 24;
 // The scene's colour textures: one sRGB 2D array, a layer per texture (GpuMaterial::diffuse.w).
 ISPM_CONST int kUnitCaustics = 29; // the caustic photons' splats, at the image's size (upsample)
+// The filter guide (denoise/filter_input.frag): the surface each splat buffer pixel stands for.
+ISPM_CONST int kUnitFilterGuide = 30;
 ISPM_CONST int kUnitSceneTextures = 28; // after the post passes' 25..27 (post_data.h)
 
 // Per-frame values every pass may read (std140).
@@ -132,9 +134,9 @@ ISPM_STATIC_ASSERT_SIZE(AccumulateParams, 96);
 // Parameters of one iteration of atrous.frag, and of upsample.frag (std140, at
 // kBindingPassParams; the filter's iterations are bound by range).
 struct FilterParams {
-    ivec4 iteration; // x = step (px; upsample: 1 = add the caustic buffer), y = 1: demodulate
-                     // the input by reflectance (upsample: 0 = the input is irradiance already),
-                     // z = 1: modulate the output, w = image pixels per buffer pixel along an axis
+    ivec4 iteration; // x = step (px; upsample: 1 = add the caustic buffer), y = 1: multiply
+                     // the output by the reflectance (the filter's last iteration at the
+                     // image's size), z unused, w = image pixels per buffer pixel along an axis
 };
 ISPM_STATIC_ASSERT_SIZE(FilterParams, 16);
 
