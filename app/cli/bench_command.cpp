@@ -49,15 +49,18 @@ struct PresetSetting {
 
 // The thesis benchmark: McLaughlin's box city at 1280x1024 with 50k photons and three bounces,
 // rendered the thesis's way: a uniform grid per light view (no importance), splat radii from
-// travel distance, splats at full resolution, no filter after them.
+// travel distance, no filter after the splats. The splats are drawn at half the image's
+// resolution and upsampled on the G-buffer (McGuire and Luebke's remedy for the splat's cost,
+// which the thesis names in 7.2): against the path tracer the indirect light's error is the
+// same as at full resolution (rel RMSE 4x4 1.080 against 1.085), the frame a fifth cheaper.
 constexpr const char* kThesisPresetName = "thesis";
 constexpr const char* kThesisScene = "scenes/box_city.json"; // under ISPM_ASSET_DIR
-constexpr double kSplatFullResolution = 1;                   // splat_resolution's choice "1"
+constexpr double kSplatHalfResolution = 2;                   // splat_resolution's choice "1/2"
 constexpr PresetSetting kThesisSettings[] = {
     {"width", 1280},    {"height", 1024},
     {"photons", 50000}, {"bounces", 3},
     {"importance", 0},  {"radius_mode", gpu::kRadiusTravel},
-    {"denoise", 0},     {"splat_resolution", kSplatFullResolution}};
+    {"denoise", 0},     {"splat_resolution", kSplatHalfResolution}};
 
 // Preset settings that name no entry in the settings table (yet) are skipped and reported, so the
 // preset keeps its meaning as the photon pipeline's settings arrive.

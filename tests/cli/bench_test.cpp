@@ -135,7 +135,7 @@ TEST_F(BenchTest, PresetAppliesOnlyKnownSettings) {
         << j.dump();
     // Every preset setting is either applied or reported as skipped.
     EXPECT_EQ(applied.size() + skipped.size(), 8u) << j.dump();
-    EXPECT_NE(std::find(applied.begin(), applied.end(), "splat_resolution=1"), applied.end())
+    EXPECT_NE(std::find(applied.begin(), applied.end(), "splat_resolution=1/2"), applied.end())
         << j.dump();
 }
 
