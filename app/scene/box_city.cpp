@@ -284,17 +284,17 @@ void addBoxCity(Scene& scene, const BoxCityParams& params, const glm::mat4& worl
     Mesh mesh;
     mesh.name = "box_city";
     for (const CityBox& b : layout.boxes) {
-        if (b.kind == CityBoxKind::Ground) {
-            const glm::vec3 lo = b.box.lo;
-            const glm::vec3 hi = b.box.hi;
-            appendQuad(mesh, {lo.x, 0.0f, lo.z}, {lo.x, 0.0f, hi.z}, {hi.x, 0.0f, hi.z},
-                       {hi.x, 0.0f, lo.z}, ground);
-            continue;
-        }
+        if (b.kind == CityBoxKind::Ground) continue;
         // A box standing on the ground never shows its bottom face.
         const bool withBottom = b.box.lo.y > 0.0f;
         appendBox(mesh, b.box.lo, b.box.hi, palette[b.paletteIndex], withBottom);
     }
+    // The ground last: every camera sees it behind buildings, and drawn after them the
+    // rasteriser's early depth test rejects it there instead of shading it under each one.
+    const glm::vec3 lo = layout.groundBounds.lo;
+    const glm::vec3 hi = layout.groundBounds.hi;
+    appendQuad(mesh, {lo.x, 0.0f, lo.z}, {lo.x, 0.0f, hi.z}, {hi.x, 0.0f, hi.z}, {hi.x, 0.0f, lo.z},
+               ground);
     scene.meshes.push_back(std::move(mesh));
     scene.instances.push_back({static_cast<uint32_t>(scene.meshes.size() - 1), worldFromObject});
 }
