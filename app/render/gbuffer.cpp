@@ -5,6 +5,9 @@
 #include "render/gpu_scene.h"
 #include "render/shader_root.h"
 
+#include <algorithm>
+#include <cassert>
+#include <numeric>
 #include <stdexcept>
 
 namespace ispm {
@@ -136,11 +139,29 @@ void appendGBufferParams(std::vector<gpu::GBufferParams>& blocks, const GpuScene
                           .control = {i, 0, 0, 0}});
 }
 
+std::vector<uint32_t> computeDrawOrder(const GpuScene& scene, const glm::vec4& eye) {
+    const std::vector<Aabb>& bounds = scene.getInstanceBounds();
+    std::vector<float> depth(bounds.size());
+    for (size_t i = 0; i < bounds.size(); ++i) {
+        const glm::vec3 centre = 0.5f * (bounds[i].lo + bounds[i].hi);
+        // An orthographic eye lies along eye.xyz: depth grows against it.
+        depth[i] =
+            eye.w > 0.5f ? glm::length(centre - glm::vec3(eye)) : -glm::dot(centre, glm::vec3(eye));
+    }
+    std::vector<uint32_t> order(bounds.size());
+    std::iota(order.begin(), order.end(), 0u);
+    std::stable_sort(order.begin(), order.end(),
+                     [&depth](uint32_t a, uint32_t b) { return depth[a] < depth[b]; });
+    return order;
+}
+
 void drawSceneGBuffer(const gl::Program& program, const GpuScene& scene,
-                      const ParamBlocks<gpu::GBufferParams>& blocks, size_t first) {
+                      const ParamBlocks<gpu::GBufferParams>& blocks, size_t first,
+                      std::span<const uint32_t> order) {
+    assert(order.size() == scene.getInstanceCount());
     gl::applyState({.depthTest = gl::DepthTest::Less, .depthWrite = true});
     program.use();
-    for (uint32_t i = 0; i < scene.getInstanceCount(); ++i) {
+    for (const uint32_t i : order) {
         blocks.bind(first + i);
         const auto vertexCount = static_cast<int>(scene.getInstance(i).range.y * 3u);
         gl::drawArrays(gl::Primitive::Triangles, 0, vertexCount);

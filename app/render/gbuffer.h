@@ -74,10 +74,16 @@ void appendGBufferParams(std::vector<gpu::GBufferParams>& blocks, const GpuScene
                          const glm::mat4& previousClipFromWorld, glm::vec2 targetSizePx,
                          glm::vec2 jitterMotionPx = glm::vec2(0.0f));
 
+// The order to draw the scene's instances in, seen from `eye` (as appendGBufferParams takes
+// it): by the depth of their boxes' centres, nearest first, so the rasteriser's early depth test
+// rejects what they hide instead of shading it first (llvmpipe shades on the CPU).
+std::vector<uint32_t> computeDrawOrder(const GpuScene& scene, const glm::vec4& eye);
+
 // Rasterises every instance of the scene into the bound G-buffer target, instance i with
-// blocks[first + i] (appendGBufferParams).
+// blocks[first + i] (appendGBufferParams), in `order` (computeDrawOrder).
 void drawSceneGBuffer(const gl::Program& program, const GpuScene& scene,
-                      const ParamBlocks<gpu::GBufferParams>& blocks, size_t first);
+                      const ParamBlocks<gpu::GBufferParams>& blocks, size_t first,
+                      std::span<const uint32_t> order);
 
 // The G-buffer program in two variants: without textures (GBUFFER_TEXTURES 0: no texture
 // coordinates fetched or interpolated, as fast as before textures existed) and with them, built

@@ -36,7 +36,8 @@ void GBufferPass::execute(const FrameInputs& inputs) {
                         glm::vec4(inputs.cameraPosition, 1.0f), previous,
                         glm::vec2(inputs.width, inputs.height), jitterMotion);
     mParams.upload(blocks);
-    drawSceneGBuffer(mPrograms.get(inputs.scene.hasTextures()), inputs.scene, mParams, 0);
+    drawSceneGBuffer(mPrograms.get(inputs.scene.hasTextures()), inputs.scene, mParams, 0,
+                     computeDrawOrder(inputs.scene, glm::vec4(inputs.cameraPosition, 1.0f)));
 }
 
 LightViewPass::LightViewPass()
@@ -69,7 +70,7 @@ void LightViewPass::executeViews(const FrameInputs& inputs, size_t firstView, si
             mGBuffer.bindTarget(layer);
         }
         drawSceneGBuffer(mPrograms.get(inputs.scene.hasTextures()), inputs.scene, mParams,
-                         i * inputs.scene.getInstanceCount());
+                         i * inputs.scene.getInstanceCount(), mDrawOrders[i]);
     }
 }
 
@@ -83,6 +84,7 @@ void LightViewPass::prepare(const FrameInputs& inputs) {
     }
     // Every view's blocks in one upload: view i's instances from i * instances on.
     std::vector<gpu::GBufferParams> blocks;
+    mDrawOrders.clear();
     for (size_t i = 0; i < cameras.size(); ++i) {
         const LightCamera& cam = cameras[i];
         const glm::vec4 eye =
@@ -90,6 +92,7 @@ void LightViewPass::prepare(const FrameInputs& inputs) {
         const glm::mat4 clipFromWorld = inputs.scene.getLightClipFromWorld(i);
         appendGBufferParams(blocks, inputs.scene, clipFromWorld, eye, clipFromWorld,
                             glm::vec2(float(resolution)));
+        mDrawOrders.push_back(computeDrawOrder(inputs.scene, eye));
     }
     mParams.upload(blocks);
 }

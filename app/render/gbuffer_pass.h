@@ -44,6 +44,7 @@ class LightViewPass final : public Pass {
     void prepare(const FrameInputs& inputs); // the G-buffer's size, every view's blocks
     GBufferPrograms mPrograms;
     ParamBlocks<gpu::GBufferParams> mParams;
+    std::vector<std::vector<uint32_t>> mDrawOrders; // per view (computeDrawOrder)
     gl::VertexArray mVertexArray;
     GBuffer mGBuffer;
 };
