@@ -1,7 +1,8 @@
-// What the edge-aware filters on the indirect light share (atrous.frag, upsample.frag): the
-// viewer G-buffer channels they read, the weight of a tap on a turned surface or off the
-// pixel's plane, and the reflectance the light is divided by, so they smooth irradiance and
-// keep texture and colour edges. Needs frame_constants.glsl included before.
+// What the edge-aware filters on the indirect light share (filter_input.frag, atrous.frag,
+// upsample.frag, specular_filter.comp): the viewer G-buffer channels they read, the filter
+// guide's encoding, the weight of a tap on a turned surface or off the pixel's plane, and the
+// reflectance the light is divided by, so they smooth irradiance and keep texture and colour
+// edges. Needs frame_constants.glsl included before.
 
 #include "viewer_gbuffer.glsl"
 
