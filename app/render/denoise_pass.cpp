@@ -23,7 +23,9 @@ DenoisePass::DenoisePass(const GBuffer& viewer, const gl::Texture& indirect)
                                   .stages = {{gl::ShaderStage::Vertex, "lib/fullscreen.vert"},
                                              {gl::ShaderStage::Fragment, "denoise/atrous.frag"}},
                                   .defines = getGBufferDefines()})),
-      mVertexArray("denoise vao") {}
+      mVertexArray("denoise vao"),
+      mTargets({ColorTarget("indirect (denoised)", gl::Format::RGBA32F),
+                ColorTarget("denoise intermediate", gl::Format::RGBA32F)}) {}
 
 bool DenoisePass::leavesIrradiance(const FrameInputs& inputs) {
     return inputs.settings.splatDivisor > 1;
@@ -31,16 +33,11 @@ bool DenoisePass::leavesIrradiance(const FrameInputs& inputs) {
 
 void DenoisePass::resize(int width, int height) {
     if (mGuide.getWidth() == width && mGuide.getHeight() == height) return;
-    const std::array<const char*, 2> labels = {"indirect (denoised)", "denoise intermediate"};
     mGuide = gl::Texture::create2D("filter guide", gl::Format::RGBA32F, width, height);
-    for (size_t i = 0; i < mTextures.size(); ++i) {
-        mTextures[i] = gl::Texture::create2D(labels[i], gl::Format::RGBA32F, width, height);
-        mTargets[i] = gl::Framebuffer(std::string(labels[i]) + " target");
-        mTargets[i].attachColor(0, mTextures[i]);
-        mTargets[i].setDrawBufferCount(1);
-        mTargets[i].checkComplete();
-        mInputTargets[i] = gl::Framebuffer(std::string(labels[i]) + " and guide target");
-        mInputTargets[i].attachColor(0, mTextures[i]);
+    for (size_t i = 0; i < mTargets.size(); ++i) {
+        mTargets[i].resize(width, height);
+        mInputTargets[i] = gl::Framebuffer("filter input target " + std::to_string(i));
+        mInputTargets[i].attachColor(0, mTargets[i].getTexture());
         mInputTargets[i].attachColor(1, mGuide);
         mInputTargets[i].setDrawBufferCount(2);
         mInputTargets[i].checkComplete();
@@ -52,7 +49,7 @@ void DenoisePass::execute(const FrameInputs& inputs) {
     const int iterations = inputs.progressive.denoiseIterations;
     const int divisor = inputs.settings.splatDivisor;
     if (iterations == 0 && divisor == 1) {
-        mTextures[kOutput].copyFrom(mIndirect); // the splats as they are
+        mTargets[kOutput].getTexture().copyFrom(mIndirect); // the splats as they are
         return;
     }
     gl::applyState({});
@@ -77,7 +74,7 @@ void DenoisePass::execute(const FrameInputs& inputs) {
     mProgram.use();
     mGuide.bindUnit(gpu::kUnitFilterGuide);
     for (int i = 0; i < iterations; ++i) {
-        mTextures[targetOf(i)].bindUnit(gpu::kUnitFilterSource);
+        mTargets[targetOf(i)].getTexture().bindUnit(gpu::kUnitFilterSource);
         mTargets[targetOf(i + 1)].bind();
         mParams.bind(size_t(i) + 1);
         drawFullscreenTriangle();

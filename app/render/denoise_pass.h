@@ -26,7 +26,7 @@ class DenoisePass final : public Pass {
         mProgram.reloadIfChanged(report);
     }
     // Radiance, or irradiance (divided by the reflectance) where leavesIrradiance.
-    const gl::Texture& getOutput() const { return mTextures[kOutput]; }
+    const gl::Texture& getOutput() const { return mTargets[kOutput].getTexture(); }
     // The guide of this frame's buffer (lib/gbuffer_filter.glsl), written unless the light
     // passed through as it was (denoise 0 at the image's resolution).
     const gl::Texture& getGuide() const { return mGuide; }
@@ -38,17 +38,16 @@ class DenoisePass final : public Pass {
     // The output and one more target: the draws alternate between them so that the last writes
     // the output.
     static constexpr size_t kOutput = 0;
-    void resize(int width, int height);
+    void resize(int width, int height); // the targets, the guide and the first draw's targets
     const GBuffer& mViewer;
     const gl::Texture& mIndirect;
     ReloadableProgram mInputProgram;
     ReloadableProgram mProgram;
     ParamBlocks<gpu::FilterParams> mParams{"filter parameters"}; // one per draw
     gl::VertexArray mVertexArray;
-    std::array<gl::Texture, 2> mTextures;
+    std::array<ColorTarget, 2> mTargets;
     gl::Texture mGuide;
-    std::array<gl::Framebuffer, 2> mTargets;      // mTextures[i]
-    std::array<gl::Framebuffer, 2> mInputTargets; // mTextures[i] and the guide
+    std::array<gl::Framebuffer, 2> mInputTargets; // mTargets[i]'s texture and the guide
 };
 
 } // namespace ispm

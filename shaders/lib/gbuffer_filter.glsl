@@ -33,24 +33,24 @@ float computePlaneScale(ivec2 g, vec3 position, int step) {
     return 1.0 / max(kPlaneFootprints * footprint, 1e-30);
 }
 
-// A tap at G-buffer pixel q, whose position channel the caller read (qPosition), weighed
-// against the surface (n, position): normal and plane tests; 0 where q shows no surface.
-float weighTapAt(ivec2 q, vec4 qPosition, vec3 n, vec3 position, float planeScale) {
-    if (qPosition.w < 0.5) return 0.0;
-    return weighNormals(dot(n, texelFetch(uNormal, q, 0).xyz)) *
-           exp(-abs(dot(n, qPosition.xyz - position)) * planeScale);
+// A tap's surface (its point and unit normal) weighed against the pixel's (n, position): the
+// normal test times the off-plane distance's.
+float weighSurface(vec3 qPosition, vec3 qNormal, vec3 n, vec3 position, float planeScale) {
+    return weighNormals(dot(n, qNormal)) * exp(-abs(dot(n, qPosition - position)) * planeScale);
 }
 
+// A tap at G-buffer pixel q; 0 where q shows no surface.
 float weighTap(ivec2 q, vec3 n, vec3 position, float planeScale) {
-    return weighTapAt(q, texelFetch(uPosition, q, 0), n, position, planeScale);
+    vec4 qPosition = texelFetch(uPosition, q, 0);
+    if (qPosition.w < 0.5) return 0.0;
+    return weighSurface(qPosition.xyz, texelFetch(uNormal, q, 0).xyz, n, position, planeScale);
 }
 
 // The filter guide's encoding.
 #include "../shared/filter_guide.h"
 
-// weighTapAt for a guide texel.
+// A tap read from the guide; 0 where its buffer pixel shows no surface.
 float weighGuide(vec4 guide, vec3 n, vec3 position, float planeScale) {
     if (guide.w == kGuideNoSurface) return 0.0;
-    return weighNormals(dot(n, decodeGuideNormal(guide.w))) *
-           exp(-abs(dot(n, guide.xyz - position)) * planeScale);
+    return weighSurface(guide.xyz, decodeGuideNormal(guide.w), n, position, planeScale);
 }

@@ -1,6 +1,7 @@
 // The GPU traversal (shaders/lib/bvh.glsl through shaders/debug/trace_rays.comp) against the CPU
 // traversal over the same BvhScene arrays: per ray the same hit or miss, triangle, instance and
 // distance, on a two-instance box city and on a scene the rays miss.
+#include "support/analytic_scenes.h"
 #include "support/gl_fixture.h"
 
 #include "bvh/bvh_traversal.h"
@@ -246,19 +247,8 @@ TEST_F(BvhGpuTest, ReportsNoHitForRaysThatMissEverything) {
     // One 2 m square facing +z at z = -10: a scene with almost nothing in it.
     constexpr float kQuadZ = -10.0f;
     constexpr float kShortRayM = 5.0f; // stops halfway to the square
-    Scene scene;
-    Material grey;
-    grey.name = "grey";
-    grey.diffuse = glm::vec3(0.5f);
-    scene.materials.push_back(grey);
-    Mesh quad;
-    quad.name = "quad";
-    quad.positions = {
-        {-1.0f, -1.0f, kQuadZ}, {1.0f, -1.0f, kQuadZ}, {1.0f, 1.0f, kQuadZ}, {-1.0f, 1.0f, kQuadZ}};
-    quad.triangles = {{0, 1, 2}, {0, 2, 3}};
-    quad.triangleMaterials = {0, 0};
-    scene.meshes.push_back(quad);
-    scene.instances.push_back({0, glm::mat4(1.0f)});
+    const glm::mat4 atQuadZ = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, kQuadZ));
+    const Scene scene = makeGreySquares({&atQuadZ, 1});
 
     const glm::vec3 towardQuad(0.0f, 0.0f, -1.0f);
     const glm::vec3 alongQuad = glm::normalize(glm::vec3(1.0f, 1.0f, 0.0f));

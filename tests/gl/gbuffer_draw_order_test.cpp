@@ -1,6 +1,7 @@
 // The G-buffer passes draw instances nearest first (computeDrawOrder), for a camera at a point
 // and for an orthographic one looking along an axis, so the early depth test can reject what
 // they hide; the order follows the eye, not the scene's listing.
+#include "support/analytic_scenes.h"
 #include "support/gl_fixture.h"
 
 #include "render/gbuffer.h"
@@ -18,23 +19,12 @@ constexpr int kLightResolution = 64; // no lights: any valid size
 
 class GBufferDrawOrderTest : public GlTest {};
 
-// One 2 m square facing +z, instanced at each depth (z) in turn.
+// The grey square, instanced at each depth (z) in turn.
 Scene makeSquaresAt(const std::vector<float>& depths) {
-    Scene scene;
-    Material grey;
-    grey.name = "grey";
-    grey.diffuse = glm::vec3(0.5f);
-    scene.materials.push_back(grey);
-    Mesh quad;
-    quad.name = "quad";
-    quad.positions = {
-        {-1.0f, -1.0f, 0.0f}, {1.0f, -1.0f, 0.0f}, {1.0f, 1.0f, 0.0f}, {-1.0f, 1.0f, 0.0f}};
-    quad.triangles = {{0, 1, 2}, {0, 2, 3}};
-    quad.triangleMaterials = {0, 0};
-    scene.meshes.push_back(quad);
+    std::vector<glm::mat4> placements;
     for (const float z : depths)
-        scene.instances.push_back({0, glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, z))});
-    return scene;
+        placements.push_back(glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, z)));
+    return makeGreySquares(placements);
 }
 
 TEST_F(GBufferDrawOrderTest, InstancesNearestTheEyeComeFirst) {

@@ -30,6 +30,25 @@ Scene makeLitPlane(float rho, float intensity, float heightM, float halfSizeM) {
     return scene;
 }
 
+Scene makeGreySquares(std::span<const glm::mat4> worldFromSquare) {
+    Scene scene;
+    scene.sourcePath = "grey squares";
+    Material grey;
+    grey.name = "grey";
+    grey.diffuse = glm::vec3(0.5f);
+    scene.materials.push_back(grey);
+    Mesh square;
+    square.name = "square";
+    square.positions = {
+        {-1.0f, -1.0f, 0.0f}, {1.0f, -1.0f, 0.0f}, {1.0f, 1.0f, 0.0f}, {-1.0f, 1.0f, 0.0f}};
+    square.triangles = {{0, 1, 2}, {0, 2, 3}};
+    square.triangleMaterials = {0, 0};
+    scene.meshes.push_back(square);
+    for (const glm::mat4& m : worldFromSquare)
+        scene.instances.push_back({0, m});
+    return scene;
+}
+
 glm::dvec3 projectToGround(const Scene& scene, int width, int height, double px, double py) {
     // The same camera math the renderer uses.
     float nearM = 0.0f;

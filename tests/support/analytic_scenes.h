@@ -1,14 +1,21 @@
 // Scenes with closed-form answers, shared by the analytic tests: a diffuse ground plane under a
-// point light, and where a camera ray through an image position meets that plane.
+// point light, and where a camera ray through an image position meets that plane; and grey
+// squares placed at will, without lights.
 #pragma once
 
 #include "scene/scene.h"
+
+#include <span>
 
 namespace ispm::test {
 
 // The plane y = 0 (two triangles, half-size halfSizeM), diffuse reflectance rho, under a point
 // light of intensity I (W/sr) at (0, heightM, 0). Camera left at its defaults.
 Scene makeLitPlane(float rho, float intensity, float heightM, float halfSizeM);
+
+// One grey (diffuse 0.5) 2 m square facing +z, centred on the origin, instanced once per
+// transform. No lights; camera left at its defaults.
+Scene makeGreySquares(std::span<const glm::mat4> worldFromSquare);
 
 // Where the camera ray through image position (px, py) meets y = 0; (px, py) in pixels with
 // (0, 0) at the image's top-left corner, so pixel centres are at +0.5.
