@@ -15,7 +15,12 @@ in vec4 vClip;
 in vec4 vPreviousClip;
 #endif
 flat in vec3 vNormalW;
-flat in uint vMaterial;
+flat in vec4 vDiffuse;
+flat in vec4 vSpecular;
+flat in vec4 vTransmissive;
+#if !GBUFFER_LIGHT_VIEWS
+flat in vec3 vEmission;
+#endif
 flat in uint vInstance;
 
 layout(location = GBUFFER_POSITION) out vec4 outPosition;
@@ -34,7 +39,12 @@ void main() {
     // Surfaces are two-sided: the normal faces whoever looks at it.
     bool frontFace = dot(vNormalW, toEye) >= 0.0;
     vec3 n = frontFace ? vNormalW : -vNormalW;
-    GpuMaterial m = materials[vMaterial];
+#if GBUFFER_LIGHT_VIEWS
+    const vec3 emission = vec3(0.0); // light views keep no emission
+#else
+    vec3 emission = vEmission;
+#endif
+    GpuMaterial m = GpuMaterial(vDiffuse, vSpecular, vTransmissive, vec4(emission, 0.0));
     // Instance + 1: >= 1 on a surface (exact in float up to 2^24 instances).
     outPosition = vec4(vPositionW, float(vInstance + 1u));
     outNormal = vec4(n, frontFace ? 1.0 : -1.0);
