@@ -58,8 +58,8 @@ void TonemapPass::execute(const FrameInputs& inputs) {
         mExposure.clearRangeToZero(0, offsetof(gpu::ExposureData, luminanceMax));
         mHistogram.use();
         const auto groups = [](int size) {
-            return (static_cast<unsigned>(size) + gpu::kExposureGroupSize - 1) /
-                   gpu::kExposureGroupSize;
+            const unsigned pixels = gpu::kExposureGroupSize * gpu::kExposurePixelsPerSide;
+            return (static_cast<unsigned>(size) + pixels - 1) / pixels;
         };
         gl::dispatchCompute(groups(inputs.width), groups(inputs.height));
         gl::memoryBarrier(gl::Barrier::Storage);

@@ -15,14 +15,19 @@ void main() {
         sHistogram[b] = 0u;
     }
     barrier();
-    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-    if (all(lessThan(pixel, textureSize(uHdr, 0)))) {
-        vec3 c = texelFetch(uHdr, pixel, 0).rgb;
-        float y = dot(c, vec3(0.3, 0.6, 0.1));
-        if (y > exp2(kLog2LuminanceMin)) {
-            float t = (log2(y) - kLog2LuminanceMin) / (kLog2LuminanceMax - kLog2LuminanceMin);
-            uint bin = uint(clamp(t, 0.0, 1.0) * float(kLuminanceBins - 1u));
-            atomicAdd(sHistogram[bin], 1u);
+    ivec2 size = textureSize(uHdr, 0);
+    ivec2 first = ivec2(gl_GlobalInvocationID.xy) * int(kExposurePixelsPerSide);
+    for (int dy = 0; dy < int(kExposurePixelsPerSide); ++dy) {
+        for (int dx = 0; dx < int(kExposurePixelsPerSide); ++dx) {
+            ivec2 pixel = first + ivec2(dx, dy);
+            if (any(greaterThanEqual(pixel, size))) continue;
+            vec3 c = texelFetch(uHdr, pixel, 0).rgb;
+            float y = dot(c, vec3(0.3, 0.6, 0.1));
+            if (y > exp2(kLog2LuminanceMin)) {
+                float t = (log2(y) - kLog2LuminanceMin) / (kLog2LuminanceMax - kLog2LuminanceMin);
+                uint bin = uint(clamp(t, 0.0, 1.0) * float(kLuminanceBins - 1u));
+                atomicAdd(sHistogram[bin], 1u);
+            }
         }
     }
     barrier();
