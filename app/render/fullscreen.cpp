@@ -29,9 +29,11 @@ FullscreenTarget::FullscreenTarget(std::string label, gl::Format format,
                                   .defines = std::move(defines)})),
       mVertexArray(label + " vao") {}
 
-void FullscreenTarget::draw() const {
+void FullscreenTarget::draw(const gl::PipelineState& state,
+                            const std::optional<PixelRect>& rect) const {
     mTarget.bind();
-    gl::applyState({});
+    if (rect) gl::setViewport(rect->x, rect->y, rect->width, rect->height);
+    gl::applyState(state);
     mProgram.use();
     mVertexArray.bind();
     drawFullscreenTriangle();

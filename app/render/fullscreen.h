@@ -2,8 +2,11 @@
 #pragma once
 
 #include "gl/objects.h"
+#include "gl/state.h"
+#include "render/pixel_rect.h"
 #include "render/reloadable_program.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,7 +38,10 @@ class FullscreenTarget {
                      std::vector<std::string> defines);
     void resize(int width, int height) { mTarget.resize(width, height); }
     // Binds the target, applies a plain state (no depth, no blending) and draws.
-    void draw() const;
+    void draw() const { draw({}, std::nullopt); }
+    // Binds the target, applies `state` and draws over `rect` alone (the viewport; gl_FragCoord
+    // stays the target's pixel) or, without one, the whole target.
+    void draw(const gl::PipelineState& state, const std::optional<PixelRect>& rect) const;
     const gl::Texture& getTexture() const { return mTarget.getTexture(); }
     void reloadProgram(ShaderReloadReport& report) { mProgram.reloadIfChanged(report); }
 

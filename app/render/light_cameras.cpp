@@ -202,4 +202,31 @@ std::vector<LightCamera> computeLightCameras(const Scene& scene, int resolution)
     return cameras;
 }
 
+std::optional<Aabb> computeLitBounds(const Light& light, const Aabb& sceneBounds) {
+    if (light.type != LightType::Spot || !(light.outerDeg < kMaxBoundedSpotDeg))
+        return std::nullopt;
+    if (sceneBounds.isEmpty()) return Aabb{};
+    const glm::vec3 axis = glm::normalize(light.direction);
+    // A lit point p has t = dot(p - apex, axis) >= |p - apex| cos(outer) and lies within
+    // t tan(outer) of the axis: inside the cone of height `reach`, the farthest the scene's box
+    // extends along the axis, which is the hull of the apex and the disc that caps it.
+    float reach = 0.0f;
+    for (int i = 0; i < kAabbCornerCount; ++i)
+        reach = std::max(reach, glm::dot(sceneBounds.getCorner(i) - light.position, axis));
+    if (reach <= 0.0f) return Aabb{}; // the scene lies behind the light
+    const glm::vec3 capCentre = light.position + axis * reach;
+    const float capRadius = reach * std::tan(glm::radians(std::max(light.outerDeg, 0.0f)));
+    // A disc of radius r and unit normal a reaches r sqrt(1 - a_i^2) along axis i.
+    const glm::vec3 capHalf = capRadius * glm::sqrt(glm::max(glm::vec3(1.0f) - axis * axis, 0.0f));
+    Aabb cone;
+    cone.extend(light.position);
+    cone.extend(capCentre - capHalf);
+    cone.extend(capCentre + capHalf);
+    Aabb lit;
+    lit.lo = glm::max(cone.lo, sceneBounds.lo);
+    lit.hi = glm::min(cone.hi, sceneBounds.hi);
+    if (glm::any(glm::lessThan(lit.hi, lit.lo))) return Aabb{};
+    return lit;
+}
+
 } // namespace ispm

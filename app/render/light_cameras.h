@@ -45,6 +45,14 @@ std::vector<glm::vec3> sampleVisiblePoints(const BvhScene& bvh, const Scene& sce
 std::optional<LightCamera> fitSunView(const LightCamera& sun, const std::vector<glm::vec3>& visible,
                                       int resolution);
 
+// A box holding every point of `sceneBounds` the light reaches directly: a spot light's cone
+// (outer half-angle under kMaxBoundedSpotDeg) up to where the scene ends along its axis, cut to
+// the scene. Empty when the cone meets none of it. None for lights that reach every direction
+// (point lights, the sun, wider spots). The direct pass shades such a light only where the box
+// projects (DirectPass).
+std::optional<Aabb> computeLitBounds(const Light& light, const Aabb& sceneBounds);
+inline constexpr float kMaxBoundedSpotDeg = 85.0f; // wider: the cone's box is the scene's
+
 // Near/far planes that enclose `bounds` as seen from `eye` along `axis`. The near plane is
 // kNearFraction of the far one, or nearer where one of `parts` (the instances' boxes) is: half
 // the distance to a part the eye is outside of, that fraction of a part's own depth when the eye

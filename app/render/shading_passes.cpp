@@ -3,26 +3,83 @@
 
 #include "gl/state.h"
 #include "render/gpu_scene.h"
+#include "render/light_cameras.h"
+#include "render/pixel_rect.h"
 #include "render/shader_root.h"
 #include "scene/settings.h"
 
 #include <shared/scene_data.h>
 #include <shared/tonemap_data.h>
 
+#include <algorithm>
 #include <cstddef>
+#include <optional>
+#include <span>
+#include <utility>
+#include <vector>
 
 namespace ispm {
 
 DirectPass::DirectPass(const GBuffer& viewer, const GBuffer& lights)
     : mViewer(viewer), mLights(lights),
-      mTarget("direct", gl::Format::RGBA32F, "direct/direct.frag", getGBufferDefines()) {}
+      mTarget("direct", gl::Format::RGBA32F, "direct/direct.frag", getGBufferDefines()),
+      mParams("direct parameters") {}
 
 void DirectPass::execute(const FrameInputs& inputs) {
     inputs.scene.bind();
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
     mViewer.bindTextures(gpu::kUnitGBufferFirst);
     mLights.bindTextures(gpu::kUnitLightGBufferFirst);
-    mTarget.draw();
+    // A light is shaded only over the pixels it can light: a shader pays for every light it
+    // loops over at every pixel (llvmpipe runs both sides of each branch), so a street light
+    // lighting a hundredth of the image cost as much as the sun. A box that covers more than
+    // this share of the image is shaded with the whole-image lights instead, in one pass over
+    // the G-buffer.
+    constexpr double kWholeImageShare = 0.5;
+    const double imageArea = double(inputs.width) * double(inputs.height);
+    std::vector<uint32_t> whole;
+    std::vector<std::pair<uint32_t, PixelRect>> parts;
+    const std::vector<Light>& lights = inputs.model.lights;
+    for (uint32_t i = 0; i < lights.size(); ++i) {
+        std::optional<PixelRect> rect;
+        if (const std::optional<Aabb> lit = computeLitBounds(lights[i], inputs.scene.getBounds())) {
+            rect = computePixelRect(*lit, inputs.clipFromWorld, inputs.width, inputs.height);
+        }
+        if (rect && rect->isEmpty()) continue; // it lights nothing in view
+        if (rect && rect->getArea() <= kWholeImageShare * imageArea) {
+            parts.emplace_back(i, *rect);
+        } else {
+            whole.push_back(i);
+        }
+    }
+    // The first block writes every pixel (coverage, and black where no light is), even without
+    // a whole-image light.
+    std::vector<gpu::DirectParams> blocks;
+    const auto addBlock = [&blocks](std::span<const uint32_t> indices) {
+        gpu::DirectParams b{};
+        b.control =
+            glm::uvec4(static_cast<uint32_t>(indices.size()), blocks.empty() ? 1u : 0u, 0u, 0u);
+        for (size_t k = 0; k < indices.size(); ++k)
+            b.lights[k / 4][k % 4] = indices[k];
+        blocks.push_back(b);
+    };
+    size_t first = 0;
+    do {
+        const size_t count = std::min<size_t>(gpu::kDirectLightsPerDraw, whole.size() - first);
+        addBlock(std::span(whole).subspan(first, count));
+        first += count;
+    } while (first < whole.size());
+    const size_t wholeBlocks = blocks.size();
+    for (const auto& part : parts)
+        addBlock(std::span(&part.first, 1));
+    mParams.upload(blocks);
+    for (size_t b = 0; b < blocks.size(); ++b) {
+        mParams.bind(b);
+        const gl::PipelineState state{.blend = b == 0 ? gl::Blend::Off : gl::Blend::Additive};
+        mTarget.draw(state, b < wholeBlocks
+                                ? std::nullopt
+                                : std::optional<PixelRect>(parts[b - wholeBlocks].second));
+    }
 }
 
 ComposePass::ComposePass(const GBuffer& viewer, const gl::Texture& direct,

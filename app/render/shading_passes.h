@@ -5,6 +5,7 @@
 
 #include "render/fullscreen.h"
 #include "render/gbuffer.h"
+#include "render/param_blocks.h"
 #include "render/pass.h"
 
 namespace ispm {
@@ -22,6 +23,7 @@ class DirectPass final : public Pass {
     const GBuffer& mViewer;
     const GBuffer& mLights;
     FullscreenTarget mTarget;
+    ParamBlocks<gpu::DirectParams> mParams;
 };
 
 class ComposePass final : public Pass {

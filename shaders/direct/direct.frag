@@ -1,5 +1,7 @@
 // Direct light, deferred: for every viewer G-buffer pixel, the sum over lights of
-// BRDF * irradiance * cos(theta) * visibility. Radiance in W/(m^2 sr).
+// BRDF * irradiance * cos(theta) * visibility. Radiance in W/(m^2 sr). Each draw shades the
+// lights its parameter block lists (DirectPass: the lights that reach every direction over the
+// whole image, a spot light over the pixels its cone can light), and adds to the draws before.
 #include "lib/scene_buffers.glsl"
 #include "lib/frame_constants.glsl"
 #include "lib/brdf.glsl"
@@ -7,13 +9,15 @@
 
 #include "lib/viewer_gbuffer.glsl"
 
+layout(std140, binding = kBindingPassParams) uniform DirectParamsBlock { DirectParams params; };
+
 layout(location = 0) out vec4 outRadiance;
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec4 position = texelFetch(uPosition, pixel, 0);
     if (position.w < 0.5) {
-        outRadiance = vec4(0.0); // alpha: no surface covers the pixel (compose.frag)
+        outRadiance = vec4(0.0); // alpha: no surface covers the pixel (compose.frag); adds 0
         return;
     }
     vec3 n = texelFetch(uNormal, pixel, 0).xyz;
@@ -21,13 +25,14 @@ void main() {
     vec4 specular = texelFetch(uSpecular, pixel, 0);
     vec3 wo = normalize(frame.cameraPosition.xyz - position.xyz);
     vec3 radiance = vec3(0.0);
-    for (uint i = 0u; i < frame.counts.x; ++i) {
-        GpuLight light = lights[i];
+    for (uint k = 0u; k < params.control.x; ++k) {
+        GpuLight light = lights[params.lights[k / 4u][k % 4u]];
         LightSample s = sampleLight(light, position.xyz);
         float cosTheta = dot(n, s.wi);
         if (cosTheta <= 0.0 || all(equal(s.irradiance, vec3(0.0)))) continue;
         float visibility = computeVisibility(light, position.xyz, n);
         radiance += evaluateBrdf(diffuse, specular, n, s.wi, wo) * s.irradiance * cosTheta * visibility;
     }
-    outRadiance = vec4(radiance, 1.0);
+    // Coverage once: the draws after the first add their light and 0.
+    outRadiance = vec4(radiance, params.control.y == 1u ? 1.0 : 0.0);
 }

@@ -3,6 +3,9 @@
 #include "support/gl_fixture.h"
 #include "support/render_support.h"
 
+#include "render/frame_constants.h"
+#include "render/light_cameras.h"
+#include "render/pixel_rect.h"
 #include "scene/scene_loader.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -47,6 +50,74 @@ TEST_F(DirectLightTest, PointLightOverDiffusePlaneMatchesClosedForm) {
         }
     }
     EXPECT_EQ(checked, kSize * kSize);
+}
+
+TEST_F(DirectLightTest, SpotLightShadedOverItsPoolMatchesClosedForm) {
+    // A spot light's pool covers a tenth of the image: the direct pass shades it in a draw over
+    // the pool's pixels alone (computeLitBounds, computePixelRect). Inside, the point light's
+    // closed form times the spot falloff; outside, exactly nothing.
+    constexpr float kRho = 0.5f;
+    constexpr float kIntensity = 10.0f; // W/sr on the axis
+    constexpr float kHeight = 1.0f;     // m
+    constexpr int kSize = 64;
+    Scene scene = makeLitPlane(kRho, kIntensity, kHeight, 10.0f);
+    Light& spot = scene.lights[0];
+    spot.type = LightType::Spot;
+    spot.direction = {0.0f, -1.0f, 0.0f};
+    spot.innerDeg = 15.0f;
+    spot.outerDeg = 30.0f;
+    scene.camera.position = {0.3f, 3.0f, 0.2f};
+    scene.camera.target = {0.3f, 0.0f, 0.2f};
+    scene.camera.up = {0.0f, 0.0f, 1.0f};
+    scene.camera.fovYDeg = 60.0f;
+
+    // The test covers the pool's own draw: its pixels are well under the direct pass's share
+    // for a whole-image draw (kWholeImageShare, 0.5).
+    float nearM = 0.0f;
+    float farM = 0.0f;
+    computeCameraRange(scene.camera, scene.computeWorldBounds(), scene.computeInstanceBounds(),
+                       nearM, farM);
+    const glm::mat4 clipFromWorld =
+        computeClipFromView(scene.camera, 1.0f, nearM, farM) * computeViewFromWorld(scene.camera);
+    const std::optional<Aabb> lit = computeLitBounds(spot, scene.computeWorldBounds());
+    ASSERT_TRUE(lit.has_value());
+    const std::optional<PixelRect> rect = computePixelRect(*lit, clipFromWorld, kSize, kSize);
+    ASSERT_TRUE(rect.has_value());
+    EXPECT_LT(rect->getArea(), 0.25 * kSize * kSize);
+
+    Settings settings;
+    settings.set("width", kSize, "test");
+    settings.set("height", kSize, "test");
+    const Image image = renderAov(scene, settings, Aov::Direct);
+    const double peak = computePlaneRadiance(kRho, kIntensity, kHeight, glm::dvec3(0.0));
+    int inside = 0;
+    int outside = 0;
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) {
+            const glm::dvec3 p = projectToGround(scene, kSize, kSize, x + 0.5, y + 0.5);
+            const double cosAngle =
+                double(kHeight) / glm::length(glm::dvec3(0.0, kHeight, 0.0) - p);
+            const double falloff =
+                computeSpotFalloff(float(cosAngle), spot.innerDeg, spot.outerDeg);
+            const auto expected =
+                float(computePlaneRadiance(kRho, kIntensity, kHeight, p) * falloff);
+            // 1% of the pool's peak: positions and normals are stored in float (relative error
+            // ~1e-3), which moves the steep falloff between the cones by that much.
+            const auto tolerance = float(0.01 * peak);
+            for (int c = 0; c < 3; ++c) {
+                ASSERT_NEAR(image.at(x, y)[c], expected, tolerance)
+                    << "pixel " << x << "," << y << " channel " << c;
+            }
+            if (falloff > 0.5) ++inside;
+            if (falloff == 0.0) {
+                ++outside;
+                EXPECT_EQ(image.at(x, y), glm::vec3(0.0f)) << "pixel " << x << "," << y;
+            }
+        }
+    }
+    // Both sides were seen: the pool is lit (not a black image), and most of the plane is not.
+    EXPECT_GT(inside, 50);
+    EXPECT_GT(outside, kSize * kSize / 2);
 }
 
 TEST_F(DirectLightTest, OccluderCastsFullShadow) {

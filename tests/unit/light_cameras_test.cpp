@@ -161,5 +161,95 @@ TEST(LightCameras, PointLightFacesCoverEveryDirection) {
     }
 }
 
+bool holds(const Aabb& box, const glm::vec3& p) {
+    constexpr float kSlack = 1e-4f; // float round-off of the cone's cap, in metres
+    return glm::all(glm::lessThanEqual(box.lo - kSlack, p)) &&
+           glm::all(glm::lessThanEqual(p, box.hi + kSlack));
+}
+
+TEST(LightCameras, LitBoundsHoldEveryPointTheSpotLights) {
+    Aabb scene;
+    scene.extend(glm::vec3(-20.0f, 0.0f, -15.0f));
+    scene.extend(glm::vec3(25.0f, 12.0f, 30.0f));
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    const auto inScene = [&] {
+        return scene.lo + glm::vec3(unit(rng), unit(rng), unit(rng)) * scene.getExtent();
+    };
+    int lit = 0;
+    for (int l = 0; l < 40; ++l) {
+        Light spot;
+        spot.type = LightType::Spot;
+        // Inside the scene and outside it, in every direction, narrow to nearly kMaxBoundedSpotDeg.
+        spot.position = scene.getCenter() + (glm::vec3(unit(rng), unit(rng), unit(rng)) - 0.5f) *
+                                                scene.getExtent() * 1.6f;
+        spot.direction =
+            glm::normalize(glm::vec3(unit(rng), unit(rng), unit(rng)) - 0.5f + glm::vec3(1e-3f));
+        spot.outerDeg = 5.0f + 79.0f * unit(rng);
+        spot.innerDeg = 0.5f * spot.outerDeg;
+        const std::optional<Aabb> box = computeLitBounds(spot, scene);
+        ASSERT_TRUE(box.has_value()) << l;
+        const float cosOuter = std::cos(glm::radians(spot.outerDeg));
+        for (int k = 0; k < 2000; ++k) {
+            const glm::vec3 p = inScene();
+            const glm::vec3 d = glm::normalize(p - spot.position);
+            if (glm::dot(d, spot.direction) < cosOuter) continue;
+            ++lit;
+            ASSERT_TRUE(holds(*box, p)) << "spot " << l << " point " << k;
+        }
+    }
+    EXPECT_GT(lit, 1000); // the check ran on many lit points
+}
+
+TEST(LightCameras, LitBoundsOfAStreetLightAreItsPool) {
+    // A street light 9 m over a 200 m city, its 65-degree cone ending on the ground: a pool of
+    // radius 9 tan(65) = 19.3 m, not the city.
+    Aabb city;
+    city.extend(glm::vec3(-100.0f, 0.0f, -100.0f));
+    city.extend(glm::vec3(100.0f, 60.0f, 100.0f));
+    Light spot;
+    spot.type = LightType::Spot;
+    spot.position = {10.0f, 9.0f, -30.0f};
+    spot.direction = {0.0f, -1.0f, 0.0f};
+    spot.outerDeg = 65.0f;
+    const std::optional<Aabb> box = computeLitBounds(spot, city);
+    ASSERT_TRUE(box.has_value());
+    const float pool = 9.0f * std::tan(glm::radians(65.0f));
+    constexpr float kTolerance = 1e-3f; // metres: float round-off
+    EXPECT_NEAR(box->lo.x, 10.0f - pool, kTolerance);
+    EXPECT_NEAR(box->hi.x, 10.0f + pool, kTolerance);
+    EXPECT_NEAR(box->lo.z, -30.0f - pool, kTolerance);
+    EXPECT_NEAR(box->hi.z, -30.0f + pool, kTolerance);
+    EXPECT_NEAR(box->lo.y, 0.0f, kTolerance);
+    EXPECT_NEAR(box->hi.y, 9.0f, kTolerance);
+}
+
+TEST(LightCameras, LitBoundsOnlyForSpotsThatLightPartOfTheScene) {
+    Aabb scene;
+    scene.extend(glm::vec3(-1.0f));
+    scene.extend(glm::vec3(1.0f));
+    Light light;
+    light.position = {0.0f, 3.0f, 0.0f};
+    light.direction = {0.0f, -1.0f, 0.0f};
+    light.outerDeg = 30.0f;
+    light.type = LightType::Point;
+    EXPECT_FALSE(computeLitBounds(light, scene).has_value());
+    light.type = LightType::Sun;
+    EXPECT_FALSE(computeLitBounds(light, scene).has_value());
+    light.type = LightType::Spot;
+    light.outerDeg = kMaxBoundedSpotDeg;
+    EXPECT_FALSE(computeLitBounds(light, scene).has_value()); // as wide as a point light
+    light.outerDeg = 30.0f;
+    light.direction = {0.0f, 1.0f, 0.0f}; // pointing away from the scene
+    const std::optional<Aabb> away = computeLitBounds(light, scene);
+    ASSERT_TRUE(away.has_value());
+    EXPECT_TRUE(away->isEmpty());
+    light.position = {5.0f, 0.0f, 0.0f}; // beside it, its cone passing by
+    light.direction = {0.0f, 0.0f, 1.0f};
+    const std::optional<Aabb> beside = computeLitBounds(light, scene);
+    ASSERT_TRUE(beside.has_value());
+    EXPECT_TRUE(beside->isEmpty());
+}
+
 } // namespace
 } // namespace ispm::test
