@@ -17,6 +17,7 @@
 #include "render/photon_density_pass.h"
 #include "scene/scene.h"
 
+#include <optional>
 #include <shared/photon_data.h>
 
 namespace ispm {
@@ -54,7 +55,8 @@ class SplatPass final : public Pass {
     // The buffer follows the image size and `splat_resolution` at each execute.
     void execute(const FrameInputs& inputs) override;
     void reloadPrograms(ShaderReloadReport& report) override {
-        mProgram.reloadIfChanged(report);
+        for (std::optional<ReloadableProgram>& program : mPrograms)
+            if (program) program->reloadIfChanged(report);
         mBinCount.reloadIfChanged(report);
         mBinFill.reloadIfChanged(report);
         mScan.reloadIfChanged(report);
@@ -89,7 +91,11 @@ class SplatPass final : public Pass {
     const GBuffer& mViewer;
     const PhotonBuffers& mBuffers;
     const PhotonDensityPass& mDensity;
-    ReloadableProgram mProgram;
+    // The raster program, built at first use: [1] with the density radii's clip lines
+    // (SPLAT_CLIP_LINES 1), [0] for the radius modes that clip nothing, which then pays for
+    // neither the lines' varyings nor their per-pixel loop.
+    const ReloadableProgram& getProgram(bool clipLines);
+    std::optional<ReloadableProgram> mPrograms[2];
     gl::VertexArray mCubeVertexArray; // splat_shape box
     gl::VertexArray mDiscVertexArray; // splat_shape disc
     gl::Buffer mCubeIndices;

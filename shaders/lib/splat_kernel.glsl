@@ -34,16 +34,15 @@ SplatShape loadSplatShape(uint id, uint radiusMode) {
 }
 #endif
 
-// The splat's kernel over the kept mass at G-buffer point `position` with normal `n`, or a
-// negative value when the point receives nothing: it faces away from where the photon arrived,
-// lies outside the photon's ellipsoid (radius in the plane, radius x squash along the normal
-// `pn`) or beyond a clip line. The kernel 2 / (pi r^2) (1 - s^2 / r^2) over the in-plane
-// distance s integrates to 1 over the disc of radius r: one photon's power is conserved on a
-// flat surface. Gather-style renormalisation: the pixel's own disc (radius r, centred on it) is
-// cut by the same lines; dividing by the part of it that lies on the surface keeps a uniform
-// irradiance uniform up to the wall, and the photon's power on the surfaces it reached.
-float computeSplatWeight(vec4 centre, vec3 pn, vec3 tangent, vec3 bitangent, uint lines,
-                         vec2 poles[kClipRays], float squash, vec3 position, vec3 n) {
+// The splat's kernel 2 / (pi r^2) (1 - s^2 / r^2) over the in-plane distance s at G-buffer point
+// `position` with normal `n`, or a negative value when the point receives nothing: it faces away
+// from where the photon arrived or lies outside the photon's ellipsoid (radius in the plane,
+// radius x squash along the normal `pn`). The kernel integrates to 1 over the disc of radius r:
+// one photon's power is conserved on a flat surface. `x` is the point's offset in the splat
+// basis (tangent, bitangent).
+float computeSplatKernel(vec4 centre, vec3 pn, vec3 tangent, vec3 bitangent, float squash,
+                         vec3 position, vec3 n, out vec2 x) {
+    x = vec2(0.0);
     if (dot(n, pn) <= 0.0) return -1.0;
     float radius = centre.w;
     vec3 d = position - centre.xyz;
@@ -52,9 +51,23 @@ float computeSplatWeight(vec4 centre, vec3 pn, vec3 tangent, vec3 bitangent, uin
     float s2 = dot(inPlane, inPlane) / (radius * radius);
     float z = along / (radius * squash);
     if (s2 + z * z > 1.0) return -1.0;
-    vec2 x = vec2(dot(inPlane, tangent), dot(inPlane, bitangent));
-    float keptMass = computeKeptMass(x, poles, lines, radius);
+    x = vec2(dot(inPlane, tangent), dot(inPlane, bitangent));
+    return 2.0 * kInvPi / (radius * radius) * (1.0 - s2);
+}
+
+// The kernel over the kept mass, or a negative value where computeSplatKernel gives none or the
+// point lies beyond a clip line. Gather-style renormalisation: the pixel's own disc (radius r,
+// centred on it) is cut by the same lines; dividing by the part of it that lies on the surface
+// keeps a uniform irradiance uniform up to the wall, and the photon's power on the surfaces it
+// reached. Without lines the kept mass is 1: splat.frag's variant for the radius modes that
+// clip nothing (SPLAT_CLIP_LINES 0) calls computeSplatKernel alone, since llvmpipe runs this
+// loop's body once even for no line.
+float computeSplatWeight(vec4 centre, vec3 pn, vec3 tangent, vec3 bitangent, uint lines,
+                         vec2 poles[kClipRays], float squash, vec3 position, vec3 n) {
+    vec2 x;
+    float kernel = computeSplatKernel(centre, pn, tangent, bitangent, squash, position, n, x);
+    if (kernel < 0.0) return -1.0;
+    float keptMass = computeKeptMass(x, poles, lines, centre.w);
     if (keptMass < 0.0) return -1.0; // beyond a clip line
-    float kernel = 2.0 * kInvPi / (radius * radius) * (1.0 - s2);
     return kernel / keptMass;
 }

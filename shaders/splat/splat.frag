@@ -21,8 +21,10 @@ flat in vec3 vTangent;
 flat in vec3 vBitangent;
 flat in vec3 vPower;
 flat in vec3 vIncoming;
+#if SPLAT_CLIP_LINES // radius_mode density (SplatPass)
 flat in uint vLines;
 flat in vec2 vPoles[kClipRays];
+#endif
 
 layout(location = 0) out vec4 outRadiance;
 
@@ -32,8 +34,14 @@ void main() {
     vec4 position = texelFetch(uPosition, pixel, 0);
     if (position.w < 0.5) discard;
     vec3 n = texelFetch(uNormal, pixel, 0).xyz;
+#if SPLAT_CLIP_LINES
     float weight = computeSplatWeight(vCentre, vNormal, vTangent, vBitangent, vLines, vPoles,
                                       params.shape.x, position.xyz, n);
+#else
+    vec2 x;
+    float weight =
+        computeSplatKernel(vCentre, vNormal, vTangent, vBitangent, params.shape.x, position.xyz, n, x);
+#endif
     if (weight < 0.0) discard;
     vec3 wi = -vIncoming;
     vec3 wo = normalize(frame.cameraPosition.xyz - position.xyz);

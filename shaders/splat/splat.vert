@@ -27,8 +27,10 @@ flat out vec3 vTangent;  // the splat basis (buildSplatBasis)
 flat out vec3 vBitangent;
 flat out vec3 vPower;    // W
 flat out vec3 vIncoming; // the direction the photon arrived along
+#if SPLAT_CLIP_LINES // radius_mode density (SplatPass)
 flat out uint vLines;    // clip lines in vPoles (the nonzero poles first)
 flat out vec2 vPoles[kClipRays];
+#endif
 
 // The draw is indexed (splat_pass.cpp holds the triangles): gl_VertexID is the corner, its
 // t side from bit 0, b side from bit 1 and normal side from bit 2 of the index, each -1 or +1.
@@ -57,8 +59,10 @@ void main() {
     }
     float radius = shape.radius;
     vec4 extent = shape.extent; // along +t, -t, +b, -b
+#if SPLAT_CLIP_LINES
     vLines = shape.lines;
     vPoles = shape.poles;
+#endif
     vec3 c = vec3((gl_VertexID & 1) != 0 ? 1.0 : -1.0, (gl_VertexID & 2) != 0 ? 1.0 : -1.0,
                   (gl_VertexID & 4) != 0 ? 1.0 : -1.0);
     float alongT = c.x > 0.0 ? extent.x : extent.y;
