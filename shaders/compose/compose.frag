@@ -16,7 +16,8 @@ void main() {
     float coverage = clamp(direct.a, 0.0, 1.0);
     vec3 radiance = frame.background.rgb * (1.0 - coverage);
     if (coverage > 0.0) radiance += direct.rgb + texelFetch(uIndirect, pixel, 0).rgb;
-    // This frame's emission where this frame sees a surface.
-    if (texelFetch(uPosition, pixel, 0).w >= 0.5) radiance += texelFetch(uEmission, pixel, 0).rgb;
+    // This frame's emission where this frame sees a surface (GBufferPass clears it to 0 where
+    // none is).
+    radiance += texelFetch(uEmission, pixel, 0).rgb;
     outRadiance = vec4(radiance, 1.0);
 }
