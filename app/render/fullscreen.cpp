@@ -23,18 +23,20 @@ FullscreenTarget::FullscreenTarget(std::string label, gl::Format format,
                                    const std::string& fragmentPath,
                                    std::vector<std::string> defines)
     : mTarget(label, format),
-      mProgram(ReloadableProgram({.label = label,
-                                  .stages = {{gl::ShaderStage::Vertex, "lib/fullscreen.vert"},
-                                             {gl::ShaderStage::Fragment, fragmentPath}},
-                                  .defines = std::move(defines)})),
-      mVertexArray(label + " vao") {}
+      mPrograms({.label = label,
+                 .stages = {{gl::ShaderStage::Vertex, "lib/fullscreen.vert"},
+                            {gl::ShaderStage::Fragment, fragmentPath}},
+                 .defines = std::move(defines)}),
+      mVertexArray(label + " vao") {
+    mPrograms.get({}); // a broken shader fails here, at start-up
+}
 
-void FullscreenTarget::draw(const gl::PipelineState& state,
-                            const std::optional<PixelRect>& rect) const {
+void FullscreenTarget::draw(const gl::PipelineState& state, const std::optional<PixelRect>& rect,
+                            const std::vector<std::string>& defines) {
     mTarget.bind();
     if (rect) gl::setViewport(rect->x, rect->y, rect->width, rect->height);
     gl::applyState(state);
-    mProgram.use();
+    mPrograms.get(defines).use();
     mVertexArray.bind();
     drawFullscreenTriangle();
 }

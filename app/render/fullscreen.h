@@ -38,16 +38,18 @@ class FullscreenTarget {
                      std::vector<std::string> defines);
     void resize(int width, int height) { mTarget.resize(width, height); }
     // Binds the target, applies a plain state (no depth, no blending) and draws.
-    void draw() const { draw({}, std::nullopt); }
-    // Binds the target, applies `state` and draws over `rect` alone (the viewport; gl_FragCoord
-    // stays the target's pixel) or, without one, the whole target.
-    void draw(const gl::PipelineState& state, const std::optional<PixelRect>& rect) const;
+    void draw() { draw({}, std::nullopt); }
+    // Binds the target, applies `state` and draws with the program variant of `defines` (built
+    // at its first use; ProgramVariants) over `rect` alone (the viewport; gl_FragCoord stays the
+    // target's pixel) or, without one, the whole target.
+    void draw(const gl::PipelineState& state, const std::optional<PixelRect>& rect,
+              const std::vector<std::string>& defines = {});
     const gl::Texture& getTexture() const { return mTarget.getTexture(); }
-    void reloadProgram(ShaderReloadReport& report) { mProgram.reloadIfChanged(report); }
+    void reloadProgram(ShaderReloadReport& report) { mPrograms.reloadIfChanged(report); }
 
   private:
     ColorTarget mTarget;
-    ReloadableProgram mProgram;
+    ProgramVariants mPrograms; // the plain one built with the target
     gl::VertexArray mVertexArray;
 };
 

@@ -4,6 +4,7 @@
 #include "render/scene_texture_array.h"
 
 #include <shared/specular_data.h>
+#include <shared/surface_brdf.h>
 
 #include <algorithm>
 #include <array>
@@ -150,6 +151,9 @@ GpuScene::GpuScene(const Scene& scene, int lightResolution) : mLightResolution(l
     mTextures = buildSceneTextureArray(scene.textures);
     mHasTextures = std::any_of(scene.materials.begin(), scene.materials.end(),
                                [](const Material& m) { return m.diffuseTexture != kNoTexture; });
+    mHasSpecularLobes = std::any_of(materials.begin(), materials.end(), [](const auto& m) {
+        return gpu::hasSpecularLobe(glm::vec3(m.specular));
+    });
     mHasTracedSpecular = std::any_of(materials.begin(), materials.end(), [](const auto& m) {
         return gpu::isMirrorLobe(m.specular) || gpu::isTransmissive(m.transmissive);
     });
@@ -287,6 +291,11 @@ void GpuScene::keepTransformsAsPrevious() {
     if (!mTransformsMoved) return;
     mTransformsMoved = false;
     mPreviousTransforms.upload<glm::mat4>(getTransforms(mInstances));
+}
+
+std::vector<std::string> GpuScene::getSurfaceDefines() const {
+    if (mHasSpecularLobes) return {};
+    return {"SURFACE_SPECULAR 0"};
 }
 
 void GpuScene::bind() const {

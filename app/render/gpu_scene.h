@@ -11,6 +11,7 @@
 #include <shared/scene_data.h>
 
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace ispm {
@@ -28,6 +29,13 @@ class GpuScene {
     // Whether any material is a mirror-like lobe or transmissive (isMirrorLobe, isTransmissive
     // of shared/specular_data.h): the surfaces SpecularPass traces; without one it does nothing.
     bool hasTracedSpecular() const { return mHasTracedSpecular; }
+    // Whether any material has a specular part (its Phong lobe and Fresnel split): without one
+    // every surface is Lambertian, and the shading passes draw with SURFACE_SPECULAR 0
+    // (getSurfaceDefines).
+    bool hasSpecularLobes() const { return mHasSpecularLobes; }
+    // The shader defines of the scene's reflection model: {"SURFACE_SPECULAR 0"} without
+    // specular parts (lib/brdf.glsl), else none.
+    std::vector<std::string> getSurfaceDefines() const;
 
     // The instances' transforms of the frame drawn last (kBindingPreviousTransforms), which
     // reproject its pixels onto objects that moved since: FrameRunner keeps them after each
@@ -99,6 +107,7 @@ class GpuScene {
     gl::Buffer mTexcoords; // kBindingTexcoords
     gl::Texture mTextures;
     bool mHasTextures = false; // kUnitSceneTextures (scene_texture_array.h)
+    bool mHasSpecularLobes = true;
     bool mHasTracedSpecular = false;
     gl::Buffer mLights;
     gl::Buffer mLightViews;

@@ -40,4 +40,20 @@ void ReloadableProgram::reloadIfChanged(ShaderReloadReport& report) {
     }
 }
 
+const ReloadableProgram& ProgramVariants::get(const std::vector<std::string>& defines) {
+    if (const auto found = mVariants.find(defines); found != mVariants.end()) return found->second;
+    gl::ProgramDesc desc = mBase;
+    for (const std::string& define : defines) {
+        desc.defines.push_back(define);
+        desc.label += (define == defines.front() ? " (" : ", ") + define;
+    }
+    if (!defines.empty()) desc.label += ")";
+    return mVariants.emplace(defines, ReloadableProgram(std::move(desc))).first->second;
+}
+
+void ProgramVariants::reloadIfChanged(ShaderReloadReport& report) {
+    for (auto& [defines, program] : mVariants)
+        program.reloadIfChanged(report);
+}
+
 } // namespace ispm

@@ -5,6 +5,7 @@
 #include "gl/program.h"
 
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,21 @@ class ReloadableProgram {
     gl::ProgramDesc mDesc;
     gl::Program mProgram;
     Stamps mStamps;
+};
+
+// Variants of one program, each built at its first use: the base description plus extra defines
+// ("NAME VALUE"). A variant compiles out what a scene or a setting never takes: llvmpipe runs
+// both sides of every branch, uniform ones too, so a path left to a uniform costs every pixel.
+class ProgramVariants {
+  public:
+    explicit ProgramVariants(gl::ProgramDesc base) : mBase(std::move(base)) {}
+    // Builds the variant at the first call for `defines` (throws gl::Error as gl::Program::build).
+    const ReloadableProgram& get(const std::vector<std::string>& defines);
+    void reloadIfChanged(ShaderReloadReport& report);
+
+  private:
+    gl::ProgramDesc mBase;
+    std::map<std::vector<std::string>, ReloadableProgram> mVariants;
 };
 
 } // namespace ispm

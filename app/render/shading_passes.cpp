@@ -73,12 +73,13 @@ void DirectPass::execute(const FrameInputs& inputs) {
     for (const auto& part : parts)
         addBlock(std::span(&part.first, 1));
     mParams.upload(blocks);
+    const std::vector<std::string> defines = inputs.scene.getSurfaceDefines();
     for (size_t b = 0; b < blocks.size(); ++b) {
         mParams.bind(b);
         const gl::PipelineState state{.blend = b == 0 ? gl::Blend::Off : gl::Blend::Additive};
-        mTarget.draw(state, b < wholeBlocks
-                                ? std::nullopt
-                                : std::optional<PixelRect>(parts[b - wholeBlocks].second));
+        const std::optional<PixelRect> rect =
+            b < wholeBlocks ? std::nullopt : std::optional(parts[b - wholeBlocks].second);
+        mTarget.draw(state, rect, defines);
     }
 }
 

@@ -90,8 +90,12 @@ std::string describeOversizedSplats(double surfaceAreaM2, float diagonalM,
 
 SplatPass::SplatPass(const GBuffer& viewer, const PhotonBuffers& buffers,
                      const PhotonDensityPass& density)
-    : mViewer(viewer), mBuffers(buffers), mDensity(density), mCubeVertexArray("splat cube vao"),
-      mDiscVertexArray("splat disc vao"),
+    : mViewer(viewer), mBuffers(buffers), mDensity(density),
+      mPrograms({.label = "splat",
+                 .stages = {{gl::ShaderStage::Vertex, "splat/splat.vert"},
+                            {gl::ShaderStage::Fragment, "splat/splat.frag"}},
+                 .defines = getGBufferDefines()}),
+      mCubeVertexArray("splat cube vao"), mDiscVertexArray("splat disc vao"),
       mCubeIndices(gl::Buffer::fromSpan<uint32_t>("splat cube indices", kCubeIndices)),
       mDiscIndices(gl::Buffer::fromSpan<uint32_t>("splat disc indices", kDiscIndices)),
       mBinCount(buildComputeProgram("gather bin count", "splat/gather_bin.comp", {})),
@@ -198,19 +202,6 @@ void SplatPass::execute(const FrameInputs& inputs) {
     executeDraws(inputs, 0, inputs.splatDraws);
 }
 
-const ReloadableProgram& SplatPass::getProgram(bool clipLines) {
-    std::optional<ReloadableProgram>& program = mPrograms[clipLines ? 1 : 0];
-    if (!program) {
-        std::vector<std::string> defines = getGBufferDefines();
-        defines.push_back(clipLines ? "SPLAT_CLIP_LINES 1" : "SPLAT_CLIP_LINES 0");
-        program = ReloadableProgram({.label = clipLines ? "splat" : "splat without clip lines",
-                                     .stages = {{gl::ShaderStage::Vertex, "splat/splat.vert"},
-                                                {gl::ShaderStage::Fragment, "splat/splat.frag"}},
-                                     .defines = std::move(defines)});
-    }
-    return *program;
-}
-
 void SplatPass::uploadParams(const FrameInputs& inputs) {
     const uint32_t draws = inputs.splatDraws;
     const bool apart = separatesCaustics(inputs.settings);
@@ -235,7 +226,10 @@ void SplatPass::bindRaster(const FrameInputs& inputs) {
     // only the back faces count.
     const bool isBox = inputs.settings.splatShape == gpu::kSplatShapeBox;
     gl::applyState({.blend = gl::Blend::Additive, .cull = isBox ? gl::Cull::Front : gl::Cull::Off});
-    getProgram(inputs.settings.radiusMode == gpu::kRadiusDensity).use();
+    std::vector<std::string> defines = inputs.scene.getSurfaceDefines();
+    defines.push_back(inputs.settings.radiusMode == gpu::kRadiusDensity ? "SPLAT_CLIP_LINES 1"
+                                                                        : "SPLAT_CLIP_LINES 0");
+    mPrograms.get(defines).use();
     (isBox ? mCubeVertexArray : mDiscVertexArray).bind();
     mBuffers.bind();
     mDensity.getClip().bindBase(gl::BufferTarget::Storage, gpu::kBindingSplatClip);

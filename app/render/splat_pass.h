@@ -55,8 +55,7 @@ class SplatPass final : public Pass {
     // The buffer follows the image size and `splat_resolution` at each execute.
     void execute(const FrameInputs& inputs) override;
     void reloadPrograms(ShaderReloadReport& report) override {
-        for (std::optional<ReloadableProgram>& program : mPrograms)
-            if (program) program->reloadIfChanged(report);
+        mPrograms.reloadIfChanged(report);
         mBinCount.reloadIfChanged(report);
         mBinFill.reloadIfChanged(report);
         mScan.reloadIfChanged(report);
@@ -91,11 +90,11 @@ class SplatPass final : public Pass {
     const GBuffer& mViewer;
     const PhotonBuffers& mBuffers;
     const PhotonDensityPass& mDensity;
-    // The raster program, built at first use: [1] with the density radii's clip lines
-    // (SPLAT_CLIP_LINES 1), [0] for the radius modes that clip nothing, which then pays for
-    // neither the lines' varyings nor their per-pixel loop.
-    const ReloadableProgram& getProgram(bool clipLines);
-    std::optional<ReloadableProgram> mPrograms[2];
+    // The raster program's variants: with the density radii's clip lines (SPLAT_CLIP_LINES 1)
+    // or for the radius modes that clip nothing, which then pay for neither the lines'
+    // varyings nor their per-pixel loop; and the scene's reflection model
+    // (GpuScene::getSurfaceDefines).
+    ProgramVariants mPrograms;
     gl::VertexArray mCubeVertexArray; // splat_shape box
     gl::VertexArray mDiscVertexArray; // splat_shape disc
     gl::Buffer mCubeIndices;
