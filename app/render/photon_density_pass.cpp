@@ -17,6 +17,7 @@
 #include <cassert>
 #include <cmath>
 #include <limits>
+#include <string>
 
 namespace ispm {
 namespace {
@@ -43,9 +44,8 @@ float computeDensityRadiusMax(double surfaceAreaM2, int photons, int neighbours)
 
 PhotonDensityPass::PhotonDensityPass(PhotonBuffers& buffers)
     : mBuffers(buffers),
-      mProgram(ReloadableProgram(
-          {.label = "photon density",
-           .stages = {{gl::ShaderStage::Compute, "photon/photon_density.comp"}}})),
+      mPrograms({.label = "photon density",
+                 .stages = {{gl::ShaderStage::Compute, "photon/photon_density.comp"}}}),
       mParams("photon density parameters", sizeof(gpu::DensityParams)) {}
 
 void PhotonDensityPass::setTravelRadii(const FrameInputs& inputs, glm::uvec4 slice) {
@@ -61,10 +61,14 @@ void PhotonDensityPass::setTravelRadii(const FrameInputs& inputs, glm::uvec4 sli
     mBuffers.bind();
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
     mParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
-    mProgram.use();
+    useStage(gpu::kDensityStageTravelCull);
     dispatch(slice);
     // The splat's vertex stage reads the radii.
     gl::memoryBarrier(gl::Barrier::Storage);
+}
+
+void PhotonDensityPass::useStage(uint32_t stage) {
+    mPrograms.get({"DENSITY_STAGE " + std::to_string(stage) + "u"}).use();
 }
 
 void PhotonDensityPass::dispatch(glm::uvec4 slice) const {
@@ -141,7 +145,7 @@ void PhotonDensityPass::executeSlice(const FrameInputs& inputs, uint32_t stage, 
     mParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
     mCells.bindBase(gl::BufferTarget::Storage, gpu::kBindingDensityCells);
     mClip.bindBase(gl::BufferTarget::Storage, gpu::kBindingSplatClip);
-    mProgram.use();
+    useStage(params.control.x);
     // The block is written anew for every dispatch (the GL orders the update after the
     // dispatch before it that read the last one).
     dispatch(sliceParams);

@@ -30,7 +30,7 @@ class PhotonDensityPass final : public Pass {
     // Slice `slice` of `slices` of stage `stage` (a frame drawn in slices); execute() runs every
     // stage's slices in order.
     void executeSlice(const FrameInputs& inputs, uint32_t stage, uint32_t slice, uint32_t slices);
-    void reloadPrograms(ShaderReloadReport& report) override { mProgram.reloadIfChanged(report); }
+    void reloadPrograms(ShaderReloadReport& report) override { mPrograms.reloadIfChanged(report); }
     // Per result photon: its disc's clip lines and box extents (shared/splat_clip.h).
     const gl::Buffer& getClip() const { return mClip; }
     // The caustic photons in view (radius_mode density), at getCausticOffset() bytes into this
@@ -48,7 +48,8 @@ class PhotonDensityPass final : public Pass {
     void dispatch(glm::uvec4 slice) const;
 
     PhotonBuffers& mBuffers;
-    ReloadableProgram mProgram;
+    ProgramVariants mPrograms; // one per stage (DENSITY_STAGE)
+    void useStage(uint32_t stage);
     gl::Buffer mParams; // gpu::DensityParams
     gl::Buffer mCells;
     gl::Buffer mClip;

@@ -41,6 +41,11 @@ layout(std430, binding = kBindingDensityCells) buffer DensityCells { uint cells[
 
 layout(std140, binding = kBindingPassParams) uniform DensityParamsBlock { DensityParams params; };
 
+// The stage this program runs (kDensityStage*): one program per stage (PhotonDensityPass), so
+// no stage pays for another's code, which llvmpipe would run under a mask (it runs both sides
+// of every branch, and every loop at least once).
+const uint kStage = DENSITY_STAGE;
+
 // The clip rays run this far above the surface, as a fraction of the radius: steps lower than
 // that do not clip a disc, walls do.
 const float kClipLift = 0.02;
@@ -341,14 +346,14 @@ void main() {
     uvec2 range = computeSliceRange(counters.splatDraw.y, params.slice.x, params.slice.y);
     uint index = range.x + gl_GlobalInvocationID.x;
     if (index >= range.y) return;
-    if (params.control.x == kDensityStageTravelCull) {
+    if (kStage == kDensityStageTravelCull) {
         setTravelRadius(index);
         return;
     }
     vec3 p = photons[index].positionDistance.xyz;
     float power = getPhotonPower(index);
     uint facing = getFacing(photons[index].normalDensity.xyz, photons[index].normalDensity.w);
-    if (params.control.x == kDensityStageCount) {
+    if (kStage == kDensityStageCount) {
         for (uint level = 0u; level < kDensityLevels; ++level) insertCell(p, level, facing, power);
         return;
     }

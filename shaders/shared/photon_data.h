@@ -183,8 +183,9 @@ struct DensityParams {
     vec4 grid;     // x = finest cell (m), y = neighbours k, z = radius min (m), w = radius max (m)
     vec4 scales;   // x = radius scale, y = ray offset off a surface (m), z = radius at most this
                    // times the travel (0: off), w unused
-    uvec4 control; // x = stage (kDensityStage*), y = table slots - 1 (a power of two),
-                   // z = 1: measure a photon against its neighbours only, w = radius mode
+    uvec4 control; // x = stage (kDensityStage*, as the program's DENSITY_STAGE), y = table
+                   // slots - 1 (a power of two), z = 1: measure a photon against its
+                   // neighbours only, w = radius mode
     vec4 travel;   // travel modes: radius_min, radius_max (m, times radius_scale), dist_min,
                    // dist_max (m)
     uvec4 slice;   // x = this slice, y = slices (computeSliceRange); zw unused
