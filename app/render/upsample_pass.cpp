@@ -12,10 +12,10 @@ namespace ispm {
 UpsamplePass::UpsamplePass(const GBuffer& viewer, const gl::Texture& filtered,
                            const gl::Texture& guide, const gl::Texture& caustics)
     : mViewer(viewer), mFiltered(filtered), mGuide(guide), mCaustics(caustics),
-      mProgram(ReloadableProgram({.label = "upsample",
-                                  .stages = {{gl::ShaderStage::Vertex, "lib/fullscreen.vert"},
-                                             {gl::ShaderStage::Fragment, "denoise/upsample.frag"}},
-                                  .defines = getGBufferDefines()})),
+      mPrograms({.label = "upsample",
+                 .stages = {{gl::ShaderStage::Vertex, "lib/fullscreen.vert"},
+                            {gl::ShaderStage::Fragment, "denoise/upsample.frag"}},
+                 .defines = getGBufferDefines()}),
       mVertexArray("upsample vao"), mTarget("indirect", gl::Format::RGBA32F) {}
 
 void UpsamplePass::execute(const FrameInputs& inputs) {
@@ -27,7 +27,10 @@ void UpsamplePass::execute(const FrameInputs& inputs) {
     }
     mTarget.bind();
     gl::applyState({});
-    mProgram.use();
+    mPrograms
+        .get({caustics ? "UPSAMPLE_CAUSTICS 1" : "UPSAMPLE_CAUSTICS 0",
+              divisor > 1 ? "UPSAMPLE_FILTER 1" : "UPSAMPLE_FILTER 0"})
+        .use();
     mVertexArray.bind();
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
     mViewer.bindTextures(gpu::kUnitGBufferFirst);

@@ -24,7 +24,7 @@ class UpsamplePass final : public Pass {
     const char* getName() const override { return "upsample"; }
     void resize(int width, int height) override { mTarget.resize(width, height); }
     void execute(const FrameInputs& inputs) override;
-    void reloadPrograms(ShaderReloadReport& report) override { mProgram.reloadIfChanged(report); }
+    void reloadPrograms(ShaderReloadReport& report) override { mPrograms.reloadIfChanged(report); }
     const gl::Texture& getOutput() const { return mTarget.getTexture(); }
 
   private:
@@ -32,7 +32,7 @@ class UpsamplePass final : public Pass {
     const gl::Texture& mFiltered;
     const gl::Texture& mGuide;
     const gl::Texture& mCaustics;
-    ReloadableProgram mProgram;
+    ProgramVariants mPrograms; // caustics added or not, filtered or not
     gl::Buffer mParams{"upsample parameters", sizeof(gpu::FilterParams)};
     gl::VertexArray mVertexArray;
     ColorTarget mTarget;

@@ -5,8 +5,9 @@
 // the sum is multiplied by the pixel's reflectance. A pixel none of the four shares a surface
 // with (a feature thinner than d pixels) takes the bilinear weights alone. At a buffer of the
 // image's size the light passes as it is. The caustic photons' light, splatted apart at the
-// image's size and unfiltered (shared/photon_data.h, kSplatCausticPhotons), is added when
-// iteration.x is 1.
+// image's size and unfiltered (shared/photon_data.h, kSplatCausticPhotons), is added by the
+// UPSAMPLE_CAUSTICS 1 variant. UPSAMPLE_FILTER 0: the buffer is the image's size (only the caustic
+// light to add). Variants, not uniforms: llvmpipe runs both sides of every branch.
 #include "lib/frame_constants.glsl"
 #include "lib/gbuffer_filter.glsl"
 
@@ -25,12 +26,18 @@ vec3 upsample(ivec2 pixel);
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
-    vec3 caustics = params.iteration.x == 1 ? texelFetch(uCaustics, pixel, 0).rgb : vec3(0.0);
+#if UPSAMPLE_CAUSTICS
+    vec3 caustics = texelFetch(uCaustics, pixel, 0).rgb;
+#else
+    vec3 caustics = vec3(0.0);
+#endif
     outRadiance = vec4(upsample(pixel) + caustics, 1.0);
 }
 
 vec3 upsample(ivec2 pixel) {
-    if (params.iteration.w == 1) return texelFetch(uSource, pixel, 0).rgb;
+#if !UPSAMPLE_FILTER
+    return texelFetch(uSource, pixel, 0).rgb;
+#else
     vec4 position = texelFetch(uPosition, pixel, 0);
     if (position.w < 0.5) return vec3(0.0);
     ivec2 size = textureSize(uSource, 0);
@@ -64,4 +71,5 @@ vec3 upsample(ivec2 pixel) {
     vec3 irradiance = weights > kMinWeight ? sum / weights
                                             : (tentWeights > 0.0 ? tentSum / tentWeights : vec3(0.0));
     return irradiance * getReflectance(pixel);
+#endif
 }
