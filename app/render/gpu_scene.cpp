@@ -18,18 +18,6 @@ namespace {
 // Camera rays on the CPU whose first hits fit the sun's shadow view (a few ms in a box city).
 constexpr int kViewerSamplesPerSide = 64;
 
-uint32_t getGpuLightType(LightType type) {
-    switch (type) {
-    case LightType::Point:
-        return gpu::kLightPoint;
-    case LightType::Spot:
-        return gpu::kLightSpot;
-    case LightType::Sun:
-        return gpu::kLightSun;
-    }
-    return gpu::kLightPoint;
-}
-
 std::vector<gpu::GpuInstance> buildInstances(const Scene& scene, const BvhScene& bvh) {
     std::vector<gpu::GpuInstance> instances;
     for (const Instance& inst : scene.instances) {
@@ -121,6 +109,18 @@ float computeRayEpsilon(const Aabb& bounds, const std::vector<Aabb>& parts) {
 }
 
 } // namespace
+
+uint32_t getGpuLightType(LightType type) {
+    switch (type) {
+    case LightType::Point:
+        return gpu::kLightPoint;
+    case LightType::Spot:
+        return gpu::kLightSpot;
+    case LightType::Sun:
+        return gpu::kLightSun;
+    }
+    return gpu::kLightPoint;
+}
 
 GpuScene::GpuScene(const Scene& scene, int lightResolution) : mLightResolution(lightResolution) {
     std::vector<glm::vec4> positions;

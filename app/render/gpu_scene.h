@@ -16,6 +16,9 @@
 
 namespace ispm {
 
+// The shaders' kLight* of a light type.
+uint32_t getGpuLightType(LightType type);
+
 class GpuScene {
   public:
     GpuScene(const Scene& scene, int lightResolution);

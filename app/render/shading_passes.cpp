@@ -15,6 +15,7 @@
 #include <cstddef>
 #include <optional>
 #include <span>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -54,14 +55,21 @@ void DirectPass::execute(const FrameInputs& inputs) {
     }
     // The first block writes every pixel (coverage, and black where no light is), even without
     // a whole-image light.
+    // Each block's light types (lights.glsl's LIGHT_TYPES): the sun's draw compiles out the
+    // point and spot lights' code, a spot's the others'.
     std::vector<gpu::DirectParams> blocks;
-    const auto addBlock = [&blocks](std::span<const uint32_t> indices) {
+    std::vector<uint32_t> blockTypes;
+    const auto addBlock = [&](std::span<const uint32_t> indices) {
         gpu::DirectParams b{};
         b.control =
             glm::uvec4(static_cast<uint32_t>(indices.size()), blocks.empty() ? 1u : 0u, 0u, 0u);
-        for (size_t k = 0; k < indices.size(); ++k)
+        uint32_t types = 0;
+        for (size_t k = 0; k < indices.size(); ++k) {
             b.lights[k / 4][k % 4] = indices[k];
+            types |= 1u << getGpuLightType(lights[indices[k]].type);
+        }
         blocks.push_back(b);
+        blockTypes.push_back(types);
     };
     size_t first = 0;
     do {
@@ -73,12 +81,15 @@ void DirectPass::execute(const FrameInputs& inputs) {
     for (const auto& part : parts)
         addBlock(std::span(&part.first, 1));
     mParams.upload(blocks);
-    const std::vector<std::string> defines = inputs.scene.getSurfaceDefines();
     for (size_t b = 0; b < blocks.size(); ++b) {
         mParams.bind(b);
         const gl::PipelineState state{.blend = b == 0 ? gl::Blend::Off : gl::Blend::Additive};
         const std::optional<PixelRect> rect =
             b < wholeBlocks ? std::nullopt : std::optional(parts[b - wholeBlocks].second);
+        std::vector<std::string> defines = inputs.scene.getSurfaceDefines();
+        // A draw without lights writes coverage alone: any variant does.
+        if (blockTypes[b] != 0)
+            defines.push_back("LIGHT_TYPES " + std::to_string(blockTypes[b]) + "u");
         mTarget.draw(state, rect, defines);
     }
 }

@@ -2,6 +2,18 @@
 // light) of point, spot and sun lights, and shadow-map visibility from the light G-buffers.
 // Needs scene_buffers.glsl and frame_constants.glsl included before.
 
+// LIGHT_TYPES: the light types (bits 1 << kLight*) the includer's lights can have, all by
+// default. DirectPass draws with the types of each draw's lights, so the code of the others is
+// compiled out: llvmpipe runs every branch, the sun's pixels paid for a point light's cube face
+// and a spot's falloff.
+#ifndef LIGHT_TYPES
+#define LIGHT_TYPES 7u
+#endif
+const bool kHasPointLights = (LIGHT_TYPES & (1u << kLightPoint)) != 0u;
+const bool kHasSpotLights = (LIGHT_TYPES & (1u << kLightSpot)) != 0u;
+const bool kHasSunLights = (LIGHT_TYPES & (1u << kLightSun)) != 0u;
+const bool kHasOnlySuns = !kHasPointLights && !kHasSpotLights;
+
 struct LightSample {
     vec3 wi;          // unit direction toward the light
     float distanceM;  // to the light (huge for the sun)
@@ -11,7 +23,7 @@ struct LightSample {
 LightSample sampleLight(GpuLight light, vec3 positionW) {
     LightSample s;
     uint type = light.views.z;
-    if (type == kLightSun) {
+    if (kHasOnlySuns || (kHasSunLights && type == kLightSun)) {
         s.wi = -light.directionCos.xyz;
         s.distanceM = 1e30;
         s.irradiance = light.power.rgb;
@@ -22,7 +34,7 @@ LightSample sampleLight(GpuLight light, vec3 positionW) {
     s.distanceM = sqrt(d2);
     s.wi = toLight / s.distanceM;
     float falloff = 1.0;
-    if (type == kLightSpot) {
+    if (kHasSpotLights && type == kLightSpot) {
         falloff = computeSpotFalloffCos(dot(-s.wi, light.directionCos.xyz), light.power.w,
                                      light.directionCos.w);
     }
@@ -34,7 +46,7 @@ LightSample sampleLight(GpuLight light, vec3 positionW) {
 // direction's major axis, in the order +x, -x, +y, -y, +z, -z.
 uint selectLightView(GpuLight light, vec3 positionW) {
     uint first = light.views.x;
-    if (light.views.y < 6u) return first;
+    if (!kHasPointLights || light.views.y < 6u) return first;
     vec3 d = positionW - light.position.xyz;
     vec3 a = abs(d);
     if (a.x >= a.y && a.x >= a.z) return first + (d.x >= 0.0 ? 0u : 1u);
@@ -51,7 +63,7 @@ uint selectLightView(GpuLight light, vec3 positionW) {
 // viewer sees) where the point lies inside it, a few texels from its border, else
 // selectLightView's.
 uint selectShadowView(GpuLight light, vec3 positionW) {
-    if (light.views.w != 0u) {
+    if (kHasSunLights && light.views.w != 0u) {
         uint fine = light.views.w - 1u;
         vec4 clip = lightViews[fine].clipFromWorld * vec4(positionW, 1.0);
         float inside = 1.0 - 4.0 / frame.shadow.y; // the normal offset and jitter stay inside
@@ -64,7 +76,8 @@ float computeVisibility(GpuLight light, vec3 positionW, vec3 normalW) {
     uint viewIndex = selectShadowView(light, positionW);
     GpuLightView view = lightViews[viewIndex];
     vec3 axis = view.axisTexel.xyz;
-    bool ortho = view.info.y == 1u;
+    // Only suns look through orthographic views.
+    bool ortho = kHasOnlySuns || (kHasSunLights && view.info.y == 1u);
     float depth = dot(positionW - view.originAxis.xyz, axis);
     float texelM = ortho ? view.axisTexel.w : view.axisTexel.w * max(depth, 0.0);
     float biasM = frame.shadow.x * texelM;
