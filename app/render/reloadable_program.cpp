@@ -43,9 +43,9 @@ void ReloadableProgram::reloadIfChanged(ShaderReloadReport& report) {
 const ReloadableProgram& ProgramVariants::get(const std::vector<std::string>& defines) {
     if (const auto found = mVariants.find(defines); found != mVariants.end()) return found->second;
     gl::ProgramDesc desc = mBase;
-    for (const std::string& define : defines) {
-        desc.defines.push_back(define);
-        desc.label += (define == defines.front() ? " (" : ", ") + define;
+    for (size_t i = 0; i < defines.size(); ++i) {
+        desc.defines.push_back(defines[i]);
+        desc.label += (i == 0 ? " (" : ", ") + defines[i];
     }
     if (!defines.empty()) desc.label += ")";
     return mVariants.emplace(defines, ReloadableProgram(std::move(desc))).first->second;

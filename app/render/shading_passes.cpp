@@ -21,26 +21,28 @@
 
 namespace ispm {
 
-DirectPass::DirectPass(const GBuffer& viewer, const GBuffer& lights)
-    : mViewer(viewer), mLights(lights),
-      mTarget("direct", gl::Format::RGBA32F, "direct/direct.frag", getGBufferDefines()),
-      mParams("direct parameters") {}
+namespace {
 
-void DirectPass::execute(const FrameInputs& inputs) {
-    inputs.scene.bind();
-    inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
-    mViewer.bindTextures(gpu::kUnitGBufferFirst);
-    mLights.bindTextures(gpu::kUnitLightGBufferFirst);
-    // A light is shaded only over the pixels it can light: a shader pays for every light it
-    // loops over at every pixel (llvmpipe runs both sides of each branch), so a street light
-    // lighting a hundredth of the image cost as much as the sun. A box that covers more than
-    // this share of the image is shaded with the whole-image lights instead, in one pass over
-    // the G-buffer.
+// One draw of the direct pass: its parameter block, its lights' types (bits 1 << kLight*) and
+// the pixels it covers (none: the whole image).
+struct DirectDraw {
+    gpu::DirectParams params{};
+    uint32_t lightTypes = 0;
+    std::optional<PixelRect> rect;
+};
+
+// A light is shaded only over the pixels it can light: a shader pays for every light it loops
+// over at every pixel (llvmpipe runs both sides of each branch), so a street light lighting a
+// hundredth of the image cost as much as the sun. Lights that reach every direction, and those
+// whose box covers more than kWholeImageShare of the image, share whole-image draws (one pass
+// over the G-buffer for all of them); each other light gets a draw over its rectangle. The first
+// draw writes every pixel (coverage, and black where no light is), even without a light.
+std::vector<DirectDraw> planDirectDraws(const FrameInputs& inputs) {
     constexpr double kWholeImageShare = 0.5;
     const double imageArea = double(inputs.width) * double(inputs.height);
+    const std::vector<Light>& lights = inputs.model.lights;
     std::vector<uint32_t> whole;
     std::vector<std::pair<uint32_t, PixelRect>> parts;
-    const std::vector<Light>& lights = inputs.model.lights;
     for (uint32_t i = 0; i < lights.size(); ++i) {
         std::optional<PixelRect> rect;
         if (const std::optional<Aabb> lit = computeLitBounds(lights[i], inputs.scene.getBounds())) {
@@ -53,44 +55,56 @@ void DirectPass::execute(const FrameInputs& inputs) {
             whole.push_back(i);
         }
     }
-    // The first block writes every pixel (coverage, and black where no light is), even without
-    // a whole-image light.
-    // Each block's light types (lights.glsl's LIGHT_TYPES): the sun's draw compiles out the
-    // point and spot lights' code, a spot's the others'.
-    std::vector<gpu::DirectParams> blocks;
-    std::vector<uint32_t> blockTypes;
-    const auto addBlock = [&](std::span<const uint32_t> indices) {
-        gpu::DirectParams b{};
-        b.control =
-            glm::uvec4(static_cast<uint32_t>(indices.size()), blocks.empty() ? 1u : 0u, 0u, 0u);
-        uint32_t types = 0;
+    std::vector<DirectDraw> draws;
+    const auto addDraw = [&](std::span<const uint32_t> indices, std::optional<PixelRect> rect) {
+        DirectDraw d;
+        d.params.control =
+            glm::uvec4(static_cast<uint32_t>(indices.size()), draws.empty() ? 1u : 0u, 0u, 0u);
         for (size_t k = 0; k < indices.size(); ++k) {
-            b.lights[k / 4][k % 4] = indices[k];
-            types |= 1u << getGpuLightType(lights[indices[k]].type);
+            d.params.lights[k / 4][k % 4] = indices[k];
+            d.lightTypes |= 1u << getGpuLightType(lights[indices[k]].type);
         }
-        blocks.push_back(b);
-        blockTypes.push_back(types);
+        d.rect = rect;
+        draws.push_back(d);
     };
     size_t first = 0;
     do {
         const size_t count = std::min<size_t>(gpu::kDirectLightsPerDraw, whole.size() - first);
-        addBlock(std::span(whole).subspan(first, count));
+        addDraw(std::span(whole).subspan(first, count), std::nullopt);
         first += count;
     } while (first < whole.size());
-    const size_t wholeBlocks = blocks.size();
-    for (const auto& part : parts)
-        addBlock(std::span(&part.first, 1));
+    for (const auto& [light, rect] : parts)
+        addDraw(std::span(&light, 1), rect);
+    return draws;
+}
+
+} // namespace
+
+DirectPass::DirectPass(const GBuffer& viewer, const GBuffer& lights)
+    : mViewer(viewer), mLights(lights),
+      mTarget("direct", gl::Format::RGBA32F, "direct/direct.frag", getGBufferDefines()),
+      mParams("direct parameters") {}
+
+void DirectPass::execute(const FrameInputs& inputs) {
+    inputs.scene.bind();
+    inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
+    mViewer.bindTextures(gpu::kUnitGBufferFirst);
+    mLights.bindTextures(gpu::kUnitLightGBufferFirst);
+    const std::vector<DirectDraw> draws = planDirectDraws(inputs);
+    std::vector<gpu::DirectParams> blocks;
+    for (const DirectDraw& d : draws)
+        blocks.push_back(d.params);
     mParams.upload(blocks);
-    for (size_t b = 0; b < blocks.size(); ++b) {
-        mParams.bind(b);
-        const gl::PipelineState state{.blend = b == 0 ? gl::Blend::Off : gl::Blend::Additive};
-        const std::optional<PixelRect> rect =
-            b < wholeBlocks ? std::nullopt : std::optional(parts[b - wholeBlocks].second);
+    for (size_t i = 0; i < draws.size(); ++i) {
+        mParams.bind(i);
+        // Each draw compiles in its lights' types (lights.glsl's LIGHT_TYPES): the sun's
+        // compiles out the point and spot lights' code, a spot's the others'. A draw without
+        // lights writes coverage alone: the plain program does.
         std::vector<std::string> defines = inputs.scene.getSurfaceDefines();
-        // A draw without lights writes coverage alone: any variant does.
-        if (blockTypes[b] != 0)
-            defines.push_back("LIGHT_TYPES " + std::to_string(blockTypes[b]) + "u");
-        mTarget.draw(state, rect, defines);
+        if (draws[i].lightTypes != 0)
+            defines.push_back("LIGHT_TYPES " + std::to_string(draws[i].lightTypes) + "u");
+        mTarget.draw({.blend = i == 0 ? gl::Blend::Off : gl::Blend::Additive}, draws[i].rect,
+                     defines);
     }
 }
 
