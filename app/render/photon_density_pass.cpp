@@ -113,8 +113,8 @@ void PhotonDensityPass::executeSlice(const FrameInputs& inputs, uint32_t stage, 
     if (mClip.getSize() != clipBytes) mClip = gl::Buffer("splat clip distances", clipBytes);
     if (stage == 0 && slice == 0) {
         mCells.clearToZero();
-        const glm::uvec4 draw[gpu::kSplatDrawUvec4s] = {{gpu::kSplatCubeVertices, 0, 0, 0},
-                                                        {0, 0, 0, 0}};
+        const glm::uvec4 draw[gpu::kSplatDrawUvec4s] = {
+            {gpu::getSplatIndexCount(inputs.settings.splatShape), 0, 0, 0}, {0, 0, 0, 0}};
         mCells.upload(mCausticOffset, sizeof(draw), draw);
     }
     const int neighbours = std::max(int(std::lround(float(inputs.settings.splatNeighbours) *

@@ -34,6 +34,7 @@ void PhotonTracePass::executeSlice(const FrameInputs& inputs, uint32_t slice, ui
     gpu::PrepareParams prepare{};
     prepare.control = glm::uvec4(mBuffers.getResultCapacity(), mBuffers.getBounceCapacity(),
                                  gpu::kPrepareStageBeforeTrace, inputs.splatDraws);
+    prepare.splat = glm::uvec4(gpu::getSplatIndexCount(inputs.settings.splatShape), 0u, 0u, 0u);
     gpu::TraceParams trace{};
     trace.control = glm::uvec4(static_cast<uint32_t>(inputs.settings.bounces), inputs.seed,
                                inputs.settings.rngGenerator, inputs.settings.rngMode);

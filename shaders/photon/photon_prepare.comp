@@ -19,13 +19,13 @@ void main() {
         return;
     }
     uint stored = min(counters.result.x, counters.result.y);
-    counters.splatDraw = uvec4(kSplatCubeVertices, stored, 0u, 0u);
+    counters.splatDraw = uvec4(params.splat.x, stored, 0u, 0u);
     counters.densityDispatch = uvec4((stored + kTraceGroupSize - 1u) / kTraceGroupSize, 1u, 1u, 0u);
     for (uint p = 0u; p < params.control.w; ++p) {
         uint begin = stored * p / params.control.w;
         uint end = stored * (p + 1u) / params.control.w;
         // baseInstance is left 0: the vertex stage adds the pass's first photon itself.
-        splatDraws[kSplatDrawUvec4s * p] = uvec4(kSplatCubeVertices, end - begin, 0u, 0u);
+        splatDraws[kSplatDrawUvec4s * p] = uvec4(params.splat.x, end - begin, 0u, 0u);
         splatDraws[kSplatDrawUvec4s * p + 1u] = uvec4(0u);
     }
 }

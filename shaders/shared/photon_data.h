@@ -83,10 +83,15 @@ ISPM_CONST int kBindingCausticList = 28;   // splat.vert: the caustic photons' d
 ISPM_CONST int kBindingDensityCells = 17;  // photon_density.comp's hashed grid (kDensitySlotUints
                                            // a slot)
 
-// Splat shapes (setting splat_shape, checked against the table in frame_settings.cpp): one
-// draw of kSplatCubeVertices indices per photon either way.
+// Splat shapes (setting splat_shape, checked against the table in frame_settings.cpp), and the
+// indices a photon's instance draws: the box's 12 triangles, the disc's 2 (over the box's
+// corners 0-3). The draw commands carry the count of the frame's shape (photon_prepare.comp).
 ISPM_CONST uint kSplatShapeDisc = 0u;
 ISPM_CONST uint kSplatShapeBox = 1u;
+ISPM_CONST uint kSplatDiscIndices = 6u;
+ISPM_INLINE uint getSplatIndexCount(uint shape) {
+    return shape == kSplatShapeBox ? kSplatCubeVertices : kSplatDiscIndices;
+}
 
 // Which result photons a splat draw or the gather takes (SplatParams.photons.x,
 // GatherParams.splat.w). In radius_mode density a caustic photon (focused by a mirror, glass or a
@@ -141,8 +146,9 @@ ISPM_CONST uint kPrepareStageBeforeSplat = 1u;
 struct PrepareParams {
     uvec4 control; // x = result capacity, y = bounce capacity, z = stage (kPrepareStage*),
                    // w = splat passes
+    uvec4 splat;   // x = indices a photon's splat draws (getSplatIndexCount), yzw unused
 };
-ISPM_STATIC_ASSERT_SIZE(PrepareParams, 16);
+ISPM_STATIC_ASSERT_SIZE(PrepareParams, 32);
 
 // Parameters of photon_trace.comp (std140, at kBindingPassParams).
 struct TraceParams {

@@ -77,7 +77,8 @@ DensityRun runDensity(const Scene& scene, std::vector<gpu::ResultPhoton> photons
     buffers.getResult().upload(std::span<const gpu::ResultPhoton>(photons));
     gpu::PhotonCounters counters{};
     counters.result = glm::uvec4(count, count, 0, 1);
-    counters.splatDraw = glm::uvec4(gpu::kSplatCubeVertices, count, 0, 0);
+    counters.splatDraw = glm::uvec4(
+        gpu::getSplatIndexCount(runner.getFrameInputs().settings.splatShape), count, 0, 0);
     counters.densityDispatch =
         glm::uvec4((count + gpu::kTraceGroupSize - 1) / gpu::kTraceGroupSize, 1, 1, 0);
     buffers.getCounters().upload(0, sizeof(counters), &counters);

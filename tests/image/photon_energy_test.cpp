@@ -147,10 +147,10 @@ TEST_P(SplatShapeEnergyTest, OneSplatOnAPlaneIntegratesToBrdfTimesPower) {
     buffers.getResult().upload(0, sizeof(photon), &photon);
     gpu::PhotonCounters counters{};
     counters.result = glm::uvec4(1, 1, 0, 1);
-    counters.splatDraw = glm::uvec4(gpu::kSplatCubeVertices, 1, 0, 0);
+    const uint32_t indices = gpu::getSplatIndexCount(runner.getFrameInputs().settings.splatShape);
+    counters.splatDraw = glm::uvec4(indices, 1, 0, 0);
     buffers.getCounters().upload(0, sizeof(counters), &counters);
-    const glm::uvec4 draw[gpu::kSplatDrawUvec4s] = {{gpu::kSplatCubeVertices, 1, 0, 0},
-                                                    {0, 0, 0, 0}};
+    const glm::uvec4 draw[gpu::kSplatDrawUvec4s] = {{indices, 1, 0, 0}, {0, 0, 0, 0}};
     buffers.getSplatDraws().upload(0, sizeof(draw), draw);
 
     const PhotonDensityPass density(buffers); // travel radii: the splat reads none of its buffers
