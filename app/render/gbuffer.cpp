@@ -168,34 +168,25 @@ void drawSceneGBuffer(const gl::Program& program, const GpuScene& scene,
     }
 }
 
-namespace {
-
-ReloadableProgram buildGBufferProgram(bool textured, bool lightViews) {
-    std::vector<std::string> defines = getGBufferDefines();
-    defines.push_back(textured ? "GBUFFER_TEXTURES 1" : "GBUFFER_TEXTURES 0");
-    defines.push_back(lightViews ? "GBUFFER_LIGHT_VIEWS 1" : "GBUFFER_LIGHT_VIEWS 0");
-    const std::string label =
-        std::string(lightViews ? "light view gbuffer" : "gbuffer") + (textured ? " textured" : "");
-    return ReloadableProgram({.label = label,
-                              .stages = {{gl::ShaderStage::Vertex, "gbuffer/gbuffer.vert"},
-                                         {gl::ShaderStage::Fragment, "gbuffer/gbuffer.frag"}},
-                              .defines = defines});
+GBufferPrograms::GBufferPrograms(bool lightViews)
+    : mVariants({.label = lightViews ? "light view gbuffer" : "gbuffer",
+                 .stages = {{gl::ShaderStage::Vertex, "gbuffer/gbuffer.vert"},
+                            {gl::ShaderStage::Fragment, "gbuffer/gbuffer.frag"}},
+                 .defines = [lightViews] {
+                     std::vector<std::string> defines = getGBufferDefines();
+                     defines.push_back(lightViews ? "GBUFFER_LIGHT_VIEWS 1"
+                                                  : "GBUFFER_LIGHT_VIEWS 0");
+                     return defines;
+                 }()}) {
+    get(false); // a broken shader fails here, at start-up
 }
 
-} // namespace
-
-GBufferPrograms::GBufferPrograms(bool lightViews)
-    : mLightViews(lightViews), mPlain(buildGBufferProgram(false, lightViews)) {}
-
 const gl::Program& GBufferPrograms::get(bool textured) {
-    if (!textured) return mPlain.get();
-    if (!mTextured) mTextured = buildGBufferProgram(true, mLightViews);
-    return mTextured->get();
+    return mVariants.get({textured ? "GBUFFER_TEXTURES 1" : "GBUFFER_TEXTURES 0"}).get();
 }
 
 void GBufferPrograms::reloadIfChanged(ShaderReloadReport& report) {
-    mPlain.reloadIfChanged(report);
-    if (mTextured) mTextured->reloadIfChanged(report);
+    mVariants.reloadIfChanged(report);
 }
 
 } // namespace ispm

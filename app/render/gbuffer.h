@@ -97,9 +97,7 @@ class GBufferPrograms {
     void reloadIfChanged(ShaderReloadReport& report);
 
   private:
-    bool mLightViews;
-    ReloadableProgram mPlain;
-    std::optional<ReloadableProgram> mTextured;
+    ProgramVariants mVariants; // by GBUFFER_TEXTURES; the plain one built with the object
 };
 
 } // namespace ispm

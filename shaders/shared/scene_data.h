@@ -145,9 +145,10 @@ ISPM_STATIC_ASSERT_SIZE(DirectParams, 256);
 // Parameters of one iteration of atrous.frag, and of upsample.frag (std140, at
 // kBindingPassParams; the filter's iterations are bound by range).
 struct FilterParams {
-    ivec4 iteration; // x = step (px; upsample: 1 = add the caustic buffer), y = 1: multiply
-                     // the output by the reflectance (the filter's last iteration at the
-                     // image's size), z unused, w = image pixels per buffer pixel along an axis
+    ivec4 iteration; // x = step (px; upsample: unused, its variants add the caustics),
+                     // y = 1: multiply the output by the reflectance (the filter's last
+                     // iteration at the image's size), z unused, w = image pixels per buffer
+                     // pixel along an axis
 };
 ISPM_STATIC_ASSERT_SIZE(FilterParams, 16);
 
