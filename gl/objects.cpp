@@ -277,11 +277,15 @@ void Framebuffer::attachDepth(const Texture& texture, int layer) {
 }
 
 void Framebuffer::setDrawBufferCount(int count) {
+    setDrawBuffers(count, ~0u);
+}
+
+void Framebuffer::setDrawBuffers(int count, uint32_t mask) {
     constexpr int kMaxDrawBuffers = 8; // the GL 4.5 minimum of GL_MAX_DRAW_BUFFERS
     assert(count >= 0 && count <= kMaxDrawBuffers);
     GLenum buffers[kMaxDrawBuffers];
     for (int i = 0; i < count; ++i)
-        buffers[i] = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i);
+        buffers[i] = (mask >> i) & 1u ? GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i) : GL_NONE;
     if (count == 0) {
         glNamedFramebufferDrawBuffer(getId(), GL_NONE);
     } else {

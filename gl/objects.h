@@ -140,6 +140,9 @@ class Framebuffer {
     void attachDepth(const Texture& texture, int layer = -1);
     // Selects colour attachments 0..count-1 as draw buffers.
     void setDrawBufferCount(int count);
+    // Of attachments 0..count-1, those whose bit is set in `mask`: draw buffer i is attachment i
+    // or none (fragment output i is dropped, the attachment neither read nor written).
+    void setDrawBuffers(int count, uint32_t mask);
     // Size for drawing with no attachments (transform feedback with rasterizer discard needs a
     // complete framebuffer; framebuffer 0 does nothing in a headless context).
     void setDefaultSize(int width, int height);

@@ -73,16 +73,29 @@ GBuffer::GBuffer(std::string_view label, int width, int height, int layers, bool
     }
 }
 
+void GBuffer::setChannelsInUse(uint32_t mask) {
+    mask |= 1u << kPositionChannel; // every reader looks at position first
+    const uint32_t leaving = mChannelsInUse & ~mask;
+    mChannelsInUse = mask;
+    for (size_t i = 0; i < mChannels.size(); ++i) {
+        if (((leaving >> i) & 1u) == 0) continue;
+        for (const gl::Framebuffer& fb : mTargets)
+            fb.clearColor(static_cast<int>(i), glm::vec4(0.0f));
+    }
+}
+
 void GBuffer::clear(int layer) const {
     const gl::Framebuffer& fb = mTargets[static_cast<size_t>(layer)];
-    for (size_t i = 0; i < mChannels.size(); ++i)
-        fb.clearColor(static_cast<int>(i), glm::vec4(0.0f));
+    for (size_t i = 0; i < mChannels.size(); ++i) {
+        if ((mChannelsInUse >> i) & 1u) fb.clearColor(static_cast<int>(i), glm::vec4(0.0f));
+    }
     fb.clearDepth(1.0f);
 }
 
 void GBuffer::bindTarget(int layer) {
     gl::Framebuffer& fb = mTargets[static_cast<size_t>(layer)];
-    fb.setDrawBufferCount(static_cast<int>(mChannels.size())); // bindPositionTarget narrows it
+    // bindPositionTarget narrows the draw buffers: set them anew.
+    fb.setDrawBuffers(static_cast<int>(mChannels.size()), mChannelsInUse);
     fb.bind();
 }
 
@@ -124,6 +137,19 @@ size_t GBuffer::getGpuBytes() const {
     }
     return perTexel * static_cast<size_t>(mWidth) * static_cast<size_t>(mHeight) *
            static_cast<size_t>(mLayers);
+}
+
+uint32_t getSceneGBufferChannels(const GpuScene& scene) {
+    uint32_t mask = 0;
+    for (size_t i = 0; i < std::size(kChannels); ++i) {
+        const std::string_view name = kChannels[i].name;
+        const bool inUse = name == "specular"       ? scene.hasSpecularLobes()
+                           : name == "transmissive" ? scene.hasTransmissive()
+                           : name == "emission"     ? scene.hasEmission()
+                                                    : true;
+        if (inUse) mask |= 1u << i;
+    }
+    return mask;
 }
 
 void appendGBufferParams(std::vector<gpu::GBufferParams>& blocks, const GpuScene& scene,

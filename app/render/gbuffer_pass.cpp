@@ -19,6 +19,7 @@ void GBufferPass::resize(int width, int height) {
 }
 
 void GBufferPass::execute(const FrameInputs& inputs) {
+    mGBuffer.setChannelsInUse(getSceneGBufferChannels(inputs.scene));
     mGBuffer.clear(0);
     mGBuffer.bindTarget(0);
     mVertexArray.bind();
@@ -82,6 +83,8 @@ void LightViewPass::prepare(const FrameInputs& inputs) {
     if (mGBuffer.getWidth() != resolution || mGBuffer.getLayers() != layers) {
         mGBuffer = GBuffer("light gbuffer", resolution, resolution, layers, true);
     }
+    // The light views have no emission channel (viewer-only): its bit selects nothing here.
+    mGBuffer.setChannelsInUse(getSceneGBufferChannels(inputs.scene));
     // Every view's blocks in one upload: view i's instances from i * instances on.
     std::vector<gpu::GBufferParams> blocks;
     mDrawOrders.clear();

@@ -157,6 +157,12 @@ GpuScene::GpuScene(const Scene& scene, int lightResolution) : mLightResolution(l
     mHasTracedSpecular = std::any_of(materials.begin(), materials.end(), [](const auto& m) {
         return gpu::isMirrorLobe(m.specular) || gpu::isTransmissive(m.transmissive);
     });
+    mHasTransmissive = std::any_of(materials.begin(), materials.end(), [](const auto& m) {
+        return gpu::isTransmissive(m.transmissive);
+    });
+    mHasEmission = std::any_of(materials.begin(), materials.end(), [](const auto& m) {
+        return glm::vec3(m.emission) != glm::vec3(0.0f);
+    });
     mBvh = buildSceneBvh(scene);
     mBlasNodes = gl::Buffer::fromSpan<gpu::GpuBvhNode>("bvh bottom-level nodes", mBvh.blasNodes);
     mBlasOrder = gl::Buffer::fromSpan<uint32_t>("bvh triangle order", mBvh.blasTriangleOrder);

@@ -36,6 +36,9 @@ class GpuScene {
     // every surface is Lambertian, and the shading passes draw with SURFACE_SPECULAR 0
     // (getSurfaceDefines).
     bool hasSpecularLobes() const { return mHasSpecularLobes; }
+    // Whether any material transmits light (isTransmissive), and whether any emits it.
+    bool hasTransmissive() const { return mHasTransmissive; }
+    bool hasEmission() const { return mHasEmission; }
     // The shader defines of the scene's reflection model: {"SURFACE_SPECULAR 0"} without
     // specular parts (lib/brdf.glsl), else none.
     std::vector<std::string> getSurfaceDefines() const;
@@ -112,6 +115,8 @@ class GpuScene {
     bool mHasTextures = false; // kUnitSceneTextures (scene_texture_array.h)
     bool mHasSpecularLobes = true;
     bool mHasTracedSpecular = false;
+    bool mHasTransmissive = true;
+    bool mHasEmission = true;
     gl::Buffer mLights;
     gl::Buffer mLightViews;
     BvhScene mBvh;
