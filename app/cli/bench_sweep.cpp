@@ -244,46 +244,69 @@ IspmResult measureConfiguration(FrameRunner& runner, const Configuration& config
 }
 
 // The path tracer with the sweep's light (bounces) and size: rows at 1, 2, 4, ... spp and at the
-// last sample, with the time of the samples alone (read-back and metrics are not counted).
-std::vector<ReferenceRow> measureReferenceCurve(const Scene& scene, const Settings& settings,
-                                                int warmup, int sppMax, const Image& reference,
-                                                const std::optional<Image>& referenceDirect,
-                                                SweepProgress& progress) {
-    {
-        // First use of the program is slow on llvmpipe (DESIGN.md); a throw-away pass absorbs it,
-        // as the warm-up frames do for ispm.
+// last sample, with the time of the samples alone (read-back and metrics are not counted). Its
+// samples are taken a few at a time between the ispm configurations (addSamplesUpTo), spread
+// over the run, so that both sides of each equal-error speedup see the same machine: on a shared
+// machine speed drifts by tens of percent over minutes, and a curve timed after every
+// configuration made the speedups follow the drift (a chart's best point moved from 79x to 104x
+// between two runs of the same binary).
+class ReferenceCurve {
+  public:
+    ReferenceCurve(const Scene& scene, const Settings& settings, int warmup, int sppMax,
+                   const Image& reference, const std::optional<Image>& referenceDirect,
+                   SweepProgress& progress)
+        : mTracer(scene, settings), mSppMax(sppMax), mReference(reference),
+          mReferenceDirect(referenceDirect), mProgress(progress) {
+        // First use of the program is slow on llvmpipe (DESIGN.md); a throw-away pass absorbs
+        // it, as the warm-up frames do for ispm.
         ReferencePass warm(scene, settings);
         for (int i = 0; i < warmup; ++i) {
             warm.addSample();
             gl::finish();
-            progress.advance("path tracer warm-up");
+            mProgress.advance("path tracer warm-up");
         }
     }
-    ReferencePass tracer(scene, settings);
-    std::vector<ReferenceRow> rows;
-    double elapsedMs = 0.0;
-    int nextRow = 1;
-    for (int spp = 1; spp <= sppMax; ++spp) {
-        const auto start = std::chrono::steady_clock::now();
-        tracer.addSample();
-        gl::finish(); // dispatches block on llvmpipe; on a GPU this is what makes the clock honest
-        elapsedMs +=
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-                .count();
-        progress.advance(strCat("path tracer ", spp, "/", sppMax, " spp"));
-        if (spp != nextRow && spp != sppMax) continue;
-        nextRow *= 2;
-        const Image mean = tracer.readMean();
-        ReferenceRow row{spp, elapsedMs, computeRelMse(mean, reference), std::nullopt,
-                         computeSsim(mean, reference)};
-        if (referenceDirect) {
-            row.relMseIndirect = computeRelMse(subtractImages(mean, *referenceDirect),
-                                               subtractImages(reference, *referenceDirect));
+
+    // Traces samples until `spp` are in (at most --reference-spp-max).
+    void addSamplesUpTo(int spp) {
+        while (mSpp < std::min(spp, mSppMax)) {
+            const auto start = std::chrono::steady_clock::now();
+            mTracer.addSample();
+            gl::finish(); // dispatches block on llvmpipe; on a GPU this makes the clock honest
+            mElapsedMs +=
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                    .count();
+            ++mSpp;
+            mProgress.advance(strCat("path tracer ", mSpp, "/", mSppMax, " spp"));
+            if (mSpp == mNextRow || mSpp == mSppMax) addRow();
         }
-        rows.push_back(row);
     }
-    return rows;
-}
+
+    const std::vector<ReferenceRow>& getRows() const { return mRows; }
+
+  private:
+    void addRow() {
+        mNextRow *= 2;
+        const Image mean = mTracer.readMean();
+        ReferenceRow row{mSpp, mElapsedMs, computeRelMse(mean, mReference), std::nullopt,
+                         computeSsim(mean, mReference)};
+        if (mReferenceDirect) {
+            row.relMseIndirect = computeRelMse(subtractImages(mean, *mReferenceDirect),
+                                               subtractImages(mReference, *mReferenceDirect));
+        }
+        mRows.push_back(row);
+    }
+
+    ReferencePass mTracer;
+    int mSppMax;
+    const Image& mReference;
+    const std::optional<Image>& mReferenceDirect;
+    SweepProgress& mProgress;
+    std::vector<ReferenceRow> mRows;
+    double mElapsedMs = 0.0;
+    int mSpp = 0;
+    int mNextRow = 1;
+};
 
 struct SweepPlan {
     std::vector<Sweep> sweeps;
@@ -503,6 +526,8 @@ int runBenchSweep(const BenchOptions& options, const std::string& scenePath, con
     if (plan.referenceDirect)
         referenceIndirect = subtractImages(plan.reference, *plan.referenceDirect);
     FrameRunner runner(scene, plan.configs.front().settings, timing);
+    ReferenceCurve tracer(scene, plan.tracerSettings, options.warmup, options.referenceSppMax,
+                          plan.reference, plan.referenceDirect, progress);
     std::vector<IspmResult> results;
     std::vector<std::string> passOrder; // union over the configurations, first appearance first
     for (int i = 0; i < configCount; ++i) {
@@ -515,10 +540,11 @@ int runBenchSweep(const BenchOptions& options, const std::string& scenePath, con
                 passOrder.push_back(t.name);
             }
         }
+        // The tracer's share of samples after each configuration: spread evenly over the run.
+        tracer.addSamplesUpTo(int((int64_t(i) + 1) * options.referenceSppMax / configCount));
     }
-    const std::vector<ReferenceRow> curve =
-        measureReferenceCurve(scene, plan.tracerSettings, options.warmup, options.referenceSppMax,
-                              plan.reference, plan.referenceDirect, progress);
+    tracer.addSamplesUpTo(options.referenceSppMax);
+    const std::vector<ReferenceRow>& curve = tracer.getRows();
 
     writeCsv(csv, plan, results, passOrder, curve);
     csv.close();
