@@ -118,7 +118,9 @@ void ComposePass::execute(const FrameInputs& inputs) {
     mViewer.bindTextures(gpu::kUnitGBufferFirst);
     mDirect.bindUnit(gpu::kUnitDirect);
     mIndirect.bindUnit(gpu::kUnitIndirect);
-    mTarget.draw();
+    // Without an emitter the emission channel holds zero (getSceneGBufferChannels): not read.
+    mTarget.draw({}, std::nullopt,
+                 {inputs.scene.hasEmission() ? "COMPOSE_EMISSION 1" : "COMPOSE_EMISSION 0"});
 }
 
 TonemapPass::TonemapPass(const gl::Texture& hdr)

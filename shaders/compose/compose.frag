@@ -16,8 +16,10 @@ void main() {
     float coverage = clamp(direct.a, 0.0, 1.0);
     vec3 radiance = frame.background.rgb * (1.0 - coverage);
     if (coverage > 0.0) radiance += direct.rgb + texelFetch(uIndirect, pixel, 0).rgb;
+#if COMPOSE_EMISSION // a scene with an emitter (ComposePass)
     // This frame's emission where this frame sees a surface (GBufferPass clears it to 0 where
     // none is).
     radiance += texelFetch(uEmission, pixel, 0).rgb;
+#endif
     outRadiance = vec4(radiance, 1.0);
 }
