@@ -23,10 +23,11 @@ constexpr GBufferChannel kChannels[] = {
      "(counter-clockwise winding), -1 if the back"},
     {"diffuse", "GBUFFER_DIFFUSE", gl::Format::RGBA16F, "diffuse reflectance rgb"},
     {"specular", "GBUFFER_SPECULAR", gl::Format::RGBA16F,
-     "specular reflectance rgb; w = Phong exponent"},
+     "specular reflectance rgb; w = Phong exponent", false, ChannelSource::SpecularLobes},
     {"transmissive", "GBUFFER_TRANSMISSIVE", gl::Format::RGBA16F,
-     "transmittance rgb; w = index of refraction"},
-    {"emission", "GBUFFER_EMISSION", gl::Format::RGBA16F, "emitted radiance rgb, W/(m^2 sr)", true},
+     "transmittance rgb; w = index of refraction", false, ChannelSource::Transmissive},
+    {"emission", "GBUFFER_EMISSION", gl::Format::RGBA16F, "emitted radiance rgb, W/(m^2 sr)", true,
+     ChannelSource::Emission},
     {"velocity", "GBUFFER_VELOCITY", gl::Format::RG16F,
      "screen-space motion since the last frame drawn, in pixels (x right, y up): where this "
      "surface point was, moved with its instance and seen through the last frame's camera; 0 where "
@@ -142,11 +143,20 @@ size_t GBuffer::getGpuBytes() const {
 uint32_t getSceneGBufferChannels(const GpuScene& scene) {
     uint32_t mask = 0;
     for (size_t i = 0; i < std::size(kChannels); ++i) {
-        const std::string_view name = kChannels[i].name;
-        const bool inUse = name == "specular"       ? scene.hasSpecularLobes()
-                           : name == "transmissive" ? scene.hasTransmissive()
-                           : name == "emission"     ? scene.hasEmission()
-                                                    : true;
+        bool inUse = true;
+        switch (kChannels[i].source) {
+        case ChannelSource::Always:
+            break;
+        case ChannelSource::SpecularLobes:
+            inUse = scene.hasSpecularLobes();
+            break;
+        case ChannelSource::Transmissive:
+            inUse = scene.hasTransmissive();
+            break;
+        case ChannelSource::Emission:
+            inUse = scene.hasEmission();
+            break;
+        }
         if (inUse) mask |= 1u << i;
     }
     return mask;

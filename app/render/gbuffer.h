@@ -19,6 +19,15 @@ namespace ispm {
 
 class GpuScene;
 
+// What a G-buffer channel needs in the scene to hold anything but zero
+// (getSceneGBufferChannels).
+enum class ChannelSource {
+    Always,
+    SpecularLobes, // a material with a specular part (GpuScene::hasSpecularLobes)
+    Transmissive,  // a material that transmits (GpuScene::hasTransmissive)
+    Emission,      // a material that emits (GpuScene::hasEmission)
+};
+
 struct GBufferChannel {
     std::string_view name;
     std::string_view define; // GLSL output location macro
@@ -27,6 +36,7 @@ struct GBufferChannel {
     // Written for the viewer only (light views have no such attachment, and their program
     // writes no such output). Such channels come last, so the others' indices match.
     bool viewerOnly = false;
+    ChannelSource source = ChannelSource::Always;
 };
 
 std::span<const GBufferChannel> getGBufferChannels();
@@ -71,10 +81,10 @@ class GBuffer {
 };
 
 // The G-buffer channels (bit i: channel i of getGBufferChannels()) the scene's materials can
-// make nonzero: specular only where a material has a specular part, transmissive where one
-// transmits, emission where one emits; the others always. A channel left out costs neither a
-// clear nor a write at any pixel of any view: on llvmpipe the light views of a Lambertian scene
-// take a quarter less without their specular and transmissive layers.
+// make nonzero, by each channel's source: specular only where a material has a specular part,
+// transmissive where one transmits, emission where one emits; the others always. A channel left out
+// costs neither a clear nor a write at any pixel of any view: on llvmpipe the light views of a
+// Lambertian scene take a quarter less without their specular and transmissive layers.
 uint32_t getSceneGBufferChannels(const GpuScene& scene);
 
 // Appends the parameter blocks of one view: one per instance of the scene, seen through

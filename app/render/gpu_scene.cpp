@@ -154,12 +154,12 @@ GpuScene::GpuScene(const Scene& scene, int lightResolution) : mLightResolution(l
     mHasSpecularLobes = std::any_of(materials.begin(), materials.end(), [](const auto& m) {
         return gpu::hasSpecularLobe(glm::vec3(m.specular));
     });
-    mHasTracedSpecular = std::any_of(materials.begin(), materials.end(), [](const auto& m) {
-        return gpu::isMirrorLobe(m.specular) || gpu::isTransmissive(m.transmissive);
-    });
     mHasTransmissive = std::any_of(materials.begin(), materials.end(), [](const auto& m) {
         return gpu::isTransmissive(m.transmissive);
     });
+    mHasTracedSpecular = mHasTransmissive ||
+                         std::any_of(materials.begin(), materials.end(),
+                                     [](const auto& m) { return gpu::isMirrorLobe(m.specular); });
     mHasEmission = std::any_of(materials.begin(), materials.end(), [](const auto& m) {
         return glm::vec3(m.emission) != glm::vec3(0.0f);
     });
