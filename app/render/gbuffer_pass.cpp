@@ -60,6 +60,8 @@ void LightViewPass::executeViews(const FrameInputs& inputs, size_t firstView, si
     inputs.scene.bind();
     for (size_t i = firstView; i < firstView + viewCount; ++i) {
         const LightCamera& cam = cameras[i];
+        // A shadow-only view (the sun's fine one) serves shadow maps alone: shadow rays need none.
+        if (cam.isShadowOnly && inputs.settings.shadows == gpu::kShadowsRay) continue;
         const int layer = static_cast<int>(i);
         // Only position and depth are cleared: the one reader of the other channels (photon
         // emission) reads them where position.w marks a surface, which this frame's draw wrote.

@@ -27,10 +27,9 @@ size_t computeCdfFloats(size_t views) {
 
 ImportancePass::ImportancePass(const GBuffer& viewer, const GBuffer& lights)
     : mViewer(viewer), mLights(lights),
-      mGather(ReloadableProgram(
-          {.label = "importance gather",
-           .stages = {{gl::ShaderStage::Compute, "importance/importance_gather.comp"}},
-           .defines = getGBufferDefines()})),
+      mGather({.label = "importance gather",
+               .stages = {{gl::ShaderStage::Compute, "importance/importance_gather.comp"}},
+               .defines = getGBufferDefines()}),
       mCdf(ReloadableProgram(
           {.label = "importance tables",
            .stages = {{gl::ShaderStage::Compute, "importance/importance_cdf.comp"}},
@@ -75,7 +74,9 @@ void ImportancePass::execute(const FrameInputs& inputs) {
     mLights.bindTextures(gpu::kUnitLightGBufferFirst);
     if (share > 0.0f) {
         mHits.clearToZero();
-        mGather.use();
+        mGather
+            .get({inputs.settings.shadows == gpu::kShadowsRay ? "SHADOW_RAYS 1" : "SHADOW_RAYS 0"})
+            .use();
         const uint32_t count = across * down;
         gl::dispatchCompute((count + gpu::kImportanceGroupSize - 1) / gpu::kImportanceGroupSize);
         gl::memoryBarrier(gl::Barrier::Storage);

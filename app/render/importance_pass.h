@@ -38,7 +38,7 @@ class ImportancePass final : public Pass {
     bool mKeepMaps = false;
     const GBuffer& mViewer;
     const GBuffer& mLights;
-    ReloadableProgram mGather;
+    ProgramVariants mGather; // by SHADOW_RAYS (setting shadows)
     ReloadableProgram mCdf;
     gl::Buffer mParams;
     gl::Buffer mHits;

@@ -12,6 +12,7 @@
 #include <shared/tonemap_data.h>
 
 #include <algorithm>
+#include <bit>
 #include <cstddef>
 #include <optional>
 #include <span>
@@ -92,8 +93,10 @@ void DirectPass::execute(const FrameInputs& inputs) {
     mLights.bindTextures(gpu::kUnitLightGBufferFirst);
     const std::vector<DirectDraw> draws = planDirectDraws(inputs);
     std::vector<gpu::DirectParams> blocks;
-    for (const DirectDraw& d : draws)
+    for (const DirectDraw& d : draws) {
         blocks.push_back(d.params);
+        blocks.back().control.z = std::bit_cast<uint32_t>(inputs.scene.getRayEpsilon());
+    }
     mParams.upload(blocks);
     for (size_t i = 0; i < draws.size(); ++i) {
         mParams.bind(i);
@@ -101,6 +104,8 @@ void DirectPass::execute(const FrameInputs& inputs) {
         // compiles out the point and spot lights' code, a spot's the others'. A draw without
         // lights writes coverage alone: the plain program does.
         std::vector<std::string> defines = inputs.scene.getSurfaceDefines();
+        defines.push_back(inputs.settings.shadows == gpu::kShadowsRay ? "SHADOW_RAYS 1"
+                                                                      : "SHADOW_RAYS 0");
         if (draws[i].lightTypes != 0)
             defines.push_back("LIGHT_TYPES " + std::to_string(draws[i].lightTypes) + "u");
         mTarget.draw({.blend = i == 0 ? gl::Blend::Off : gl::Blend::Additive}, draws[i].rect,

@@ -26,6 +26,7 @@ inline constexpr std::array<std::string_view, 3> kRadiusModeChoices = {"travel",
 inline constexpr std::array<std::string_view, 2> kReferenceMethodChoices = {"path", "light"};
 inline constexpr std::array<std::string_view, 2> kSplatShapeChoices = {"disc", "box"};
 inline constexpr std::array<std::string_view, 2> kSplatModeChoices = {"raster", "gather"};
+inline constexpr std::array<std::string_view, 2> kShadowChoices = {"map", "ray"};
 inline constexpr std::array<std::string_view, 4> kSplatResolutionChoices = {"auto", "1", "1/2",
                                                                             "1/4"};
 
@@ -41,6 +42,7 @@ struct FrameSettings {
     // Lights and shadows.
     int shadowMapSize = 0; // px
     float shadowBiasTexels = 0.0f;
+    uint32_t shadows = 0; // gpu::kShadowsMap, kShadowsRay
     // Photons.
     uint32_t seed = 0;
     int photons = 0;
@@ -94,5 +96,6 @@ int computeSplatNeighbours(const Settings& settings);
 int computeSplatDivisor(const Settings& settings, int width, int height);
 glm::ivec2 computeSplatSize(const Settings& settings, int width, int height);
 int computeDenoiseIterations(const Settings& settings, int width, int height);
+int computeShadowMapSize(const Settings& settings);
 
 } // namespace ispm

@@ -72,15 +72,25 @@ const std::vector<SettingDesc>& table() {
          16,
          8192,
          "px",
-         "resolution of every light camera's G-buffer and shadow map",
-         {}},
+         "resolution of every light camera's G-buffer and shadow map; derived: 1024 with "
+         "shadows map, and with shadows ray (the views then only emit photons) 2 sqrt(photons) "
+         "rounded up to a power of two, 256 to 1024",
+         {},
+         true},
+        {"shadows", SettingType::Enum, 0, 0, 1, "",
+         "how direct light finds its shadows: map (every light view's shadow map, the thesis's: "
+         "edges follow its texels, moved by shadow_bias) or ray (a ray from every pixel to each "
+         "light through the BVH, as the path tracer's: exact hard shadows; the sun's shadow-only "
+         "view is not drawn)",
+         toChoices(kShadowChoices)},
         {"shadow_bias",
          SettingType::Float,
          1.0,
          0,
          100,
          "texels",
-         "shadow-map bias, in light-camera texels at the receiver's depth: the depth test's "
+         "shadow-map bias (shadows map), in light-camera texels at the receiver's depth: the "
+         "depth test's "
          "margin, and how far the receiver is pushed along its normal at grazing light (times "
          "the sine of the angle to the light)",
          {}},

@@ -50,6 +50,7 @@ std::optional<double> findDerivedValue(const FrameRunner& runner, float luminanc
     const GpuScene& scene = runner.getGpuScene();
     if (name == "splat_neighbours") return s.splatNeighbours;
     if (name == "denoise") return s.denoiseIterations;
+    if (name == "shadow_map_size") return s.shadowMapSize;
     if (name == "luminance_max") {
         if (luminanceMax > 0.0f) return luminanceMax; // read back from the GPU every few frames
         return std::nullopt;

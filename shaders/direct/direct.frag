@@ -2,10 +2,19 @@
 // BRDF * irradiance * cos(theta) * visibility. Radiance in W/(m^2 sr). Each draw shades the
 // lights its parameter block lists (DirectPass: the lights that reach every direction over the
 // whole image, a spot light over the pixels its cone can light), and adds to the draws before.
+// Visibility from the light views' shadow maps, or with SHADOW_RAYS 1 (setting shadows ray) from
+// a ray to the light through the BVH.
 #include "lib/scene_buffers.glsl"
 #include "lib/frame_constants.glsl"
 #include "lib/brdf.glsl"
 #include "lib/lights.glsl"
+#ifndef SHADOW_RAYS
+#define SHADOW_RAYS 0
+#endif
+#if SHADOW_RAYS
+#include "lib/bvh.glsl"
+#include "lib/shadow_rays.glsl"
+#endif
 
 #include "lib/viewer_gbuffer.glsl"
 
@@ -30,7 +39,11 @@ void main() {
         LightSample s = sampleLight(light, position.xyz);
         float cosTheta = dot(n, s.wi);
         if (cosTheta <= 0.0 || all(equal(s.irradiance, vec3(0.0)))) continue;
+#if SHADOW_RAYS
+        float visibility = computeRayVisibility(position.xyz, n, s, uintBitsToFloat(params.control.z));
+#else
         float visibility = computeVisibility(light, position.xyz, n);
+#endif
         radiance += evaluateBrdf(diffuse, specular, n, s.wi, wo) * s.irradiance * cosTheta * visibility;
     }
     // Coverage once: the draws after the first add their light and 0.

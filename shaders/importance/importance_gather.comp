@@ -2,11 +2,16 @@
 // jittered pixel per cell of a coarse grid over the image) add importance to the light-view texels
 // that light them: the visible point itself where a light sees it, and the point one cosine-sampled
 // bounce away (a short ray through the BVH) where a light sees that one. Each hit is splatted
-// bilinearly into the light view's coarse map (shared/importance_data.h).
+// bilinearly into the light view's coarse map (shared/importance_data.h). A light sees a point as
+// the direct pass finds it: by shadow map, or with SHADOW_RAYS 1 by ray.
+#ifndef SHADOW_RAYS
+#define SHADOW_RAYS 0
+#endif
 #include "lib/scene_buffers.glsl"
 #include "lib/frame_constants.glsl"
 #include "lib/lights.glsl"
 #include "lib/bvh.glsl"
+#include "lib/shadow_rays.glsl"
 #include "shared/importance_data.h"
 #include "shared/photon_scatter.h"
 
@@ -47,7 +52,12 @@ void addLitPoint(vec3 p, vec3 n, float weight) {
         if (clip.w <= 0.0) continue;
         vec2 ndc = clip.xy / clip.w;
         if (any(greaterThan(abs(ndc), vec2(1.0)))) continue;
+        // The direct pass's test: with shadow rays the sun's fine shadow map is not drawn.
+#if SHADOW_RAYS
+        if (computeRayVisibility(p, facing, s, params.weights.w) < 0.5) continue;
+#else
         if (computeVisibility(light, p, facing) < 0.5) continue;
+#endif
         addImportance(view, ndc * 0.5 + 0.5, weight);
     }
 }

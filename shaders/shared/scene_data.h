@@ -131,13 +131,19 @@ struct AccumulateParams {
 };
 ISPM_STATIC_ASSERT_SIZE(AccumulateParams, 96);
 
+// How direct light finds its shadows (setting shadows, FrameSettings::shadows): the light views'
+// shadow maps (the thesis's) or a ray to the light through the BVH from every pixel.
+ISPM_CONST uint kShadowsMap = 0u;
+ISPM_CONST uint kShadowsRay = 1u;
+
 // Parameters of one draw of direct.frag (std140, at kBindingPassParams; the draws are bound by
 // range). A light that reaches every direction is shaded over the whole image, in draws of up to
 // kDirectLightsPerDraw; a spot light over the pixels its cone's box covers (computeLitBounds), in
 // a draw of its own. Only the first draw writes coverage; the others add.
 ISPM_CONST uint kDirectLightsPerDraw = 60u;
 struct DirectParams {
-    uvec4 control; // x = lights in this draw, y = 1: the first draw (alpha = coverage), zw unused
+    uvec4 control; // x = lights in this draw, y = 1: the first draw (alpha = coverage), z = the
+                   // ray offset floor (float bits, GpuScene::getRayEpsilon: shadows ray), w unused
     uvec4 lights[kDirectLightsPerDraw / 4u]; // indices into the scene's lights, four a uvec4
 };
 ISPM_STATIC_ASSERT_SIZE(DirectParams, 256);

@@ -1,0 +1,145 @@
+// Shadows by ray (setting shadows ray): a square floating over a lit plane under a slanted sun
+// casts exactly the shadow its outline projects, pixel by pixel; the light views then only emit
+// photons, so their size follows the photon budget (computeShadowMapSize).
+#include "support/analytic_scenes.h"
+#include "support/gl_fixture.h"
+#include "support/render_support.h"
+
+#include "scene/frame_settings.h"
+
+#include <glm/glm.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <optional>
+
+namespace ispm::test {
+namespace {
+
+constexpr int kSize = 64;
+constexpr float kRho = 0.5f;
+constexpr float kIrradiance = 10.0f; // W/m^2 facing the sun
+constexpr float kSquareHeightM = 0.5f;
+constexpr float kSquareHalfM = 0.3f;
+const glm::vec3 kSunDirection = glm::normalize(glm::vec3(0.3f, -1.0f, 0.2f));
+
+Scene makeShadowScene() {
+    Scene scene = makeLitPlane(kRho, 1.0f, 2.0f, 10.0f);
+    scene.lights[0].type = LightType::Sun;
+    scene.lights[0].direction = kSunDirection;
+    scene.lights[0].irradiance = glm::vec3(kIrradiance);
+    scene.lights[0].intensity = glm::vec3(0.0f);
+    Mesh square;
+    square.name = "occluder";
+    const float s = kSquareHalfM;
+    const float h = kSquareHeightM;
+    square.positions = {{-s, h, -s}, {s, h, -s}, {s, h, s}, {-s, h, s}};
+    square.triangles = {{0, 1, 2}, {0, 2, 3}};
+    square.triangleMaterials = {0, 0};
+    scene.meshes.push_back(square);
+    scene.instances.push_back({1, glm::mat4(1.0f)});
+    scene.camera.position = {0.0f, 2.5f, 2.2f};
+    scene.camera.target = {0.2f, 0.0f, -0.1f};
+    scene.camera.up = {0.0f, 1.0f, 0.0f};
+    scene.camera.fovYDeg = 50.0f;
+    return scene;
+}
+
+// Where on the square's plane (y = kSquareHeightM) the ray from `from` along `dir` arrives, as
+// the largest of |x|, |z| over the square's half size (below 1: inside); none when it does not
+// reach that plane.
+std::optional<double> measureSquareReach(const glm::dvec3& from, const glm::dvec3& dir) {
+    if (std::abs(dir.y) < 1e-12) return std::nullopt;
+    const double t = (double(kSquareHeightM) - from.y) / dir.y;
+    if (t <= 0.0) return std::nullopt;
+    const glm::dvec3 p = from + dir * t;
+    return std::max(std::abs(p.x), std::abs(p.z)) / double(kSquareHalfM);
+}
+
+struct ShadowCount {
+    int shadowed = 0;
+    int lit = 0;
+    int wrong = 0;
+};
+
+// Every pixel whose centre sees the ground (not the square) against the closed form: zero where
+// the ray from its ground point toward the sun meets the square, rho / pi * E * cos(theta)
+// elsewhere.
+ShadowCount compareWithClosedForm(const Scene& scene, const Image& image) {
+    const glm::dvec3 eye(scene.camera.position);
+    const glm::dvec3 toSun = -glm::dvec3(kSunDirection);
+    const double litRadiance = double(kRho) / std::numbers::pi * double(kIrradiance) * toSun.y;
+    // Pixels whose ground point lies this close to the shadow's outline (in half sizes of the
+    // square: 2 mm) are left out: positions are stored as float, which moves the edge by ~1e-6 m.
+    constexpr double kEdgeMargin = 0.007;
+    ShadowCount count;
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) {
+            const glm::dvec3 ground = projectToGround(scene, kSize, kSize, x + 0.5, y + 0.5);
+            const std::optional<double> seen = measureSquareReach(eye, ground - eye);
+            if (seen && *seen < 1.0 + kEdgeMargin) continue; // the square, or its rim, is in front
+            const std::optional<double> reach = measureSquareReach(ground, toSun);
+            if (reach && std::abs(*reach - 1.0) < kEdgeMargin) continue;
+            const bool inShadow = reach && *reach < 1.0;
+            const double expected = inShadow ? 0.0 : litRadiance;
+            const glm::vec3 got = image.at(x, y);
+            // Lit: float positions and normals, 1e-3 relative; shadowed: exactly zero.
+            const bool right = inShadow ? got == glm::vec3(0.0f)
+                                        : std::abs(double(got.x) - expected) < 1e-3 * expected;
+            (inShadow ? count.shadowed : count.lit)++;
+            if (!right) ++count.wrong;
+        }
+    }
+    return count;
+}
+
+class ShadowRaysTest : public GlTest {};
+
+TEST_F(ShadowRaysTest, SquareCastsItsExactShadow) {
+    const Scene scene = makeShadowScene();
+    Settings settings;
+    settings.set("width", kSize, "test");
+    settings.set("height", kSize, "test");
+    // Coarse light views: rays do not look at them, a shadow map's edge steps by their texels.
+    settings.set("shadow_map_size", 64, "test");
+    settings.setEnum("shadows", "ray", "test");
+    const ShadowCount ray = compareWithClosedForm(scene, renderAov(scene, settings, Aov::Direct));
+    // Both sides of the edge were seen: not a black image, not a shadowless one.
+    EXPECT_GT(ray.shadowed, 100);
+    EXPECT_GT(ray.lit, 1000);
+    EXPECT_EQ(ray.wrong, 0) << "of " << ray.shadowed << " shadowed and " << ray.lit << " lit";
+
+    // The same views as shadow maps put pixels on the wrong side of the edge: the rays above
+    // were traced, not read from the maps.
+    settings.setEnum("shadows", "map", "test");
+    const ShadowCount map = compareWithClosedForm(scene, renderAov(scene, settings, Aov::Direct));
+    std::printf("pixels off the closed form at 64x64 light texels: shadow map %d, shadow rays %d "
+                "(of %d)\n",
+                map.wrong, ray.wrong, map.shadowed + map.lit);
+    EXPECT_GT(map.wrong, 0);
+}
+
+TEST(ShadowMapSize, FollowsTheShadowMode) {
+    Settings s;
+    EXPECT_EQ(computeShadowMapSize(s), 1024); // shadow maps need their texels
+    s.setEnum("shadows", "ray", "test");
+    s.set("photons", 10000, "test");
+    EXPECT_EQ(computeShadowMapSize(s), 256); // 2 sqrt(10,000) = 200
+    s.set("photons", 25000, "test");
+    EXPECT_EQ(computeShadowMapSize(s), 512); // 316
+    s.set("photons", 50000, "test");
+    EXPECT_EQ(computeShadowMapSize(s), 512); // 447
+    s.set("photons", 100000, "test");
+    EXPECT_EQ(computeShadowMapSize(s), 1024); // 632
+    s.set("photons", 4000000, "test");
+    EXPECT_EQ(computeShadowMapSize(s), 1024); // at most what shadow maps get
+    s.set("photons", 0, "test");
+    EXPECT_EQ(computeShadowMapSize(s), 256);
+    s.set("shadow_map_size", 100, "test"); // a set size is taken as it is
+    EXPECT_EQ(computeShadowMapSize(s), 100);
+    EXPECT_EQ(resolveFrameSettings(s).shadowMapSize, 100);
+}
+
+} // namespace
+} // namespace ispm::test
