@@ -18,7 +18,11 @@ DPI = 120
 LABEL_OFFSET_PT = (5, 4)  # photon-count labels sit just above and right of their point
 REQUIRED_COLUMNS = ("kind", "spp", "photons", "total_ms", "relmse_total")
 # Choice settings a sweep may vary: each combination of their values is a series of its own.
-MODE_COLUMNS = ("radius_mode", "splat_mode", "splat_shape", "splat_resolution", "radius_scale")
+MODE_COLUMNS = ("radius_mode", "splat_mode", "splat_shape", "splat_resolution", "radius_scale",
+                "shadows")
+# A mode drawn by fill instead of colour: series that differ only in it share colour and marker,
+# its first value filled, the others hollow (so the pairs stay side by side in the legend).
+FILL_COLUMN = "shadows"
 SERIES_COLOURS = ("tab:blue", "tab:green", "tab:red", "tab:purple", "tab:brown", "tab:cyan",
                   "tab:olive", "tab:pink")
 SERIES_MARKERS = ("o", "^", "s", "D", "v", "P", "X", "*")
@@ -69,13 +73,22 @@ def main():
         # One series per mode (the swept choice settings' values), photon counts as labels.
         modes = [c for c in MODE_COLUMNS if c in ispm[0] and len({r[c] for r in ispm}) > 1]
         groups = {}
+        styles = {}  # the modes but FILL_COLUMN -> style index
+        fills = []   # FILL_COLUMN's values, first seen first
         for r, point in zip(ispm, points):
             key = " ".join(f"{c}={r[c]}" for c in modes) or "ispm configurations"
-            groups.setdefault(key, []).append(point)
-        for i, (key, group) in enumerate(groups.items()):
+            style = " ".join(f"{c}={r[c]}" for c in modes if c != FILL_COLUMN)
+            fill = r[FILL_COLUMN] if FILL_COLUMN in modes else ""
+            styles.setdefault(style, len(styles))
+            if fill not in fills:
+                fills.append(fill)
+            groups.setdefault(key, ([], styles[style], fill))[0].append(point)
+        for key, (group, i, fill) in groups.items():
             colour = SERIES_COLOURS[i % len(SERIES_COLOURS)]
-            ax.scatter([p[0] for p in group], [p[1] for p in group], color=colour, zorder=3,
+            filled = fill == fills[0]
+            ax.scatter([p[0] for p in group], [p[1] for p in group], zorder=3,
                        marker=SERIES_MARKERS[i % len(SERIES_MARKERS)],
+                       facecolors=colour if filled else "none", edgecolors=colour,
                        label=f"{key} (median frame time)")
             for time_ms, error, photons in group:
                 ax.annotate(f"{int(float(photons)):,}", (time_ms, error),
