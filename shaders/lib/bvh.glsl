@@ -56,7 +56,9 @@ vec3 safeInverse(vec3 d) {
                       abs(d.z) > kTiny ? d.z : (d.z >= 0.0 ? kTiny : -kTiny));
 }
 
-bool intersectInstance(uint instanceIndex, vec3 originW, vec3 dirW, inout RayHit hit) {
+// Closest hit in one instance (updates hit when closer than hit.t); with anyHit, the first hit
+// found ends the search (a shadow ray asks only whether something is there).
+bool intersectInstance(uint instanceIndex, vec3 originW, vec3 dirW, inout RayHit hit, bool anyHit) {
     GpuInstance inst = instances[instanceIndex];
     vec3 origin = (inst.objectFromWorld * vec4(originW, 1.0)).xyz;
     vec3 dir = mat3(inst.objectFromWorld) * dirW;
@@ -81,6 +83,7 @@ bool intersectInstance(uint instanceIndex, vec3 originW, vec3 dirW, inout RayHit
                     hit.triangle = tri;
                     hit.instance = instanceIndex;
                     hit.barycentric = bc;
+                    if (anyHit) return true;
                     found = true;
                 }
             }
@@ -92,8 +95,8 @@ bool intersectInstance(uint instanceIndex, vec3 originW, vec3 dirW, inout RayHit
     return found;
 }
 
-// Closest hit along origin + t dir, t in (0, tMax).
-bool traceRay(vec3 origin, vec3 dir, float tMax, out RayHit hit) {
+// A hit along origin + t dir, t in (0, tMax): the closest, or with anyHit the first one found.
+bool traceRayWith(vec3 origin, vec3 dir, float tMax, bool anyHit, out RayHit hit) {
     hit.t = tMax;
     hit.triangle = 0u;
     hit.instance = 0u;
@@ -112,7 +115,8 @@ bool traceRay(vec3 origin, vec3 dir, float tMax, out RayHit hit) {
         if ((b & kBvhLeafFlag) != 0u) {
             uint count = b & kBvhCountMask;
             for (uint i = a; i < a + count; ++i) {
-                found = intersectInstance(tlasInstanceOrder[i], origin, dir, hit) || found;
+                found = intersectInstance(tlasInstanceOrder[i], origin, dir, hit, anyHit) || found;
+                if (anyHit && found) return true;
             }
         } else if (top + 2 <= kBvhStackSize) {
             stack[top++] = a;
@@ -120,6 +124,17 @@ bool traceRay(vec3 origin, vec3 dir, float tMax, out RayHit hit) {
         }
     }
     return found;
+}
+
+// Closest hit along origin + t dir, t in (0, tMax).
+bool traceRay(vec3 origin, vec3 dir, float tMax, out RayHit hit) {
+    return traceRayWith(origin, dir, tMax, false, hit);
+}
+
+// Whether anything lies on origin + t dir, t in (0, tMax): stops at the first hit found.
+bool isRayBlocked(vec3 origin, vec3 dir, float tMax) {
+    RayHit hit;
+    return traceRayWith(origin, dir, tMax, true, hit);
 }
 
 // World-space unit geometric normal of a hit (the triangle's winding decides its side).

@@ -7,6 +7,5 @@
 // GpuScene::getRayEpsilon) and stops as far short of the light.
 float computeRayVisibility(vec3 positionW, vec3 normalW, LightSample s, float floorM) {
     float offset = computeRayOffset(positionW, floorM);
-    RayHit hit;
-    return traceRay(positionW + normalW * offset, s.wi, s.distanceM - 2.0 * offset, hit) ? 0.0 : 1.0;
+    return isRayBlocked(positionW + normalW * offset, s.wi, s.distanceM - 2.0 * offset) ? 0.0 : 1.0;
 }

@@ -116,8 +116,7 @@ void connectToCamera(vec3 position, vec3 n, vec3 wiLight, GpuMaterial m, vec3 po
     vec3 f = evaluateBrdf(m.diffuse.rgb, m.specular, n, wiLight, wo);
     if (all(equal(f, vec3(0.0)))) return;
     float offset = computeRayOffset(position, params.ray.x);
-    RayHit hit;
-    if (traceRay(position + n * offset, wo, d - offset, hit)) return;
+    if (isRayBlocked(position + n * offset, wo, d - offset)) return;
     float importance = cosSurface /
         (d2 * params.ray.y * cosCamera * cosCamera * cosCamera * float(params.control.w));
     vec3 value = powerW * f * importance;

@@ -20,10 +20,6 @@ layout(std140, binding = kBindingPassParams) uniform ReferenceParamsBlock { Refe
 const uint kRouletteDepth = 3u;      // vertices traced with certainty before roulette starts
 const float kMaxSurvival = 0.95;     // even bright paths end eventually
 
-bool isOccluded(vec3 origin, vec3 dir, float distanceM) {
-    RayHit hit;
-    return traceRay(origin, dir, distanceM, hit);
-}
 
 vec3 traceCameraPath(vec2 pixel, inout uint rng) {
     vec2 ndc = pixel * frame.imageSize.zw * 2.0 - 1.0;
@@ -54,7 +50,7 @@ vec3 traceCameraPath(vec2 pixel, inout uint rng) {
             LightSample s = sampleLight(lights[i], position);
             float cosTheta = dot(n, s.wi);
             if (cosTheta <= 0.0 || all(equal(s.irradiance, vec3(0.0)))) continue;
-            if (isOccluded(offsetOrigin, s.wi, s.distanceM - 2.0 * offset)) continue;
+            if (isRayBlocked(offsetOrigin, s.wi, s.distanceM - 2.0 * offset)) continue;
             radiance += throughput * evaluateBrdf(diffuse, m.specular, n, s.wi, wo) *
                         s.irradiance * cosTheta;
         }

@@ -80,8 +80,7 @@ vec3 shadeDirect(vec3 position, vec3 n, vec3 wo, GpuMaterial m) {
         LightSample s = sampleLight(lights[i], position);
         float cosTheta = dot(n, s.wi);
         if (cosTheta <= 0.0 || all(equal(s.irradiance, vec3(0.0)))) continue;
-        RayHit blocker;
-        if (traceRay(origin, s.wi, s.distanceM - 2.0 * offset, blocker)) continue;
+        if (isRayBlocked(origin, s.wi, s.distanceM - 2.0 * offset)) continue;
         radiance += evaluateBrdf(m.diffuse.rgb, m.specular, n, s.wi, wo) * s.irradiance * cosTheta;
     }
     return radiance;
