@@ -117,6 +117,9 @@ class FrameRunner {
     // run on its own against the same frame: tests and debug views.
     FrameInputs getFrameInputs() const;
     const GBuffer& getViewerGBuffer() const { return mGBuffer->getGBuffer(); }
+    // The viewer G-buffer's velocity channel is drawn with motion blur on, or when kept (the
+    // viewer's debug view showing it); otherwise it holds zero.
+    void setKeepVelocity(bool keep) { mGBuffer->setKeepMotion(keep); }
     const GBuffer& getLightGBuffer() const { return mLightViews->getGBuffer(); }
     const ImportancePass& getImportance() const { return *mImportance; }
     float readLuminanceMax() const { return mTonemap->readLuminanceMax(); }

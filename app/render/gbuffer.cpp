@@ -32,7 +32,7 @@ constexpr GBufferChannel kChannels[] = {
      "screen-space motion since the last frame drawn, in pixels (x right, y up): where this "
      "surface point was, moved with its instance and seen through the last frame's camera; 0 where "
      "nothing was hit (motion blur)",
-     true},
+     true, ChannelSource::Motion},
 };
 
 } // namespace
@@ -140,7 +140,7 @@ size_t GBuffer::getGpuBytes() const {
            static_cast<size_t>(mLayers);
 }
 
-uint32_t getSceneGBufferChannels(const GpuScene& scene) {
+uint32_t getSceneGBufferChannels(const GpuScene& scene, bool wantsMotion) {
     uint32_t mask = 0;
     for (size_t i = 0; i < std::size(kChannels); ++i) {
         bool inUse = true;
@@ -155,6 +155,9 @@ uint32_t getSceneGBufferChannels(const GpuScene& scene) {
             break;
         case ChannelSource::Emission:
             inUse = scene.hasEmission();
+            break;
+        case ChannelSource::Motion:
+            inUse = wantsMotion;
             break;
         }
         if (inUse) mask |= 1u << i;

@@ -26,6 +26,7 @@ enum class ChannelSource {
     SpecularLobes, // a material with a specular part (GpuScene::hasSpecularLobes)
     Transmissive,  // a material that transmits (GpuScene::hasTransmissive)
     Emission,      // a material that emits (GpuScene::hasEmission)
+    Motion,        // read only by motion blur and the viewer's debug view (wantsMotion)
 };
 
 struct GBufferChannel {
@@ -82,10 +83,12 @@ class GBuffer {
 
 // The G-buffer channels (bit i: channel i of getGBufferChannels()) the scene's materials can
 // make nonzero, by each channel's source: specular only where a material has a specular part,
-// transmissive where one transmits, emission where one emits; the others always. A channel left out
-// costs neither a clear nor a write at any pixel of any view: on llvmpipe the light views of a
-// Lambertian scene take a quarter less without their specular and transmissive layers.
-uint32_t getSceneGBufferChannels(const GpuScene& scene);
+// transmissive where one transmits, emission where one emits, velocity when its readers want
+// motion (wantsMotion: motion blur on, or the viewer showing the channel); the others always. A
+// channel left out costs neither a clear nor a write at any pixel of any view: on llvmpipe the
+// light views of a Lambertian scene take a quarter less without their specular and transmissive
+// layers.
+uint32_t getSceneGBufferChannels(const GpuScene& scene, bool wantsMotion);
 
 // Appends the parameter blocks of one view: one per instance of the scene, seen through
 // clipFromWorld. `eye` is the camera position (w = 1) or the direction toward an orthographic

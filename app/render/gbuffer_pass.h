@@ -15,6 +15,8 @@ class GBufferPass final : public Pass {
     void execute(const FrameInputs& inputs) override;
     void reloadPrograms(ShaderReloadReport& report) override { mPrograms.reloadIfChanged(report); }
     const GBuffer& getGBuffer() const { return mGBuffer; }
+    // Draw the velocity channel without motion blur too (the viewer showing it).
+    void setKeepMotion(bool keep) { mKeepMotion = keep; }
 
   private:
     GBufferPrograms mPrograms;
@@ -26,6 +28,7 @@ class GBufferPass final : public Pass {
     glm::mat4 mPreviousClipFromWorld{1.0f};
     glm::vec2 mPreviousJitterPx{0.0f}; // its sub-pixel offset
     bool mHasPrevious = false;
+    bool mKeepMotion = false;
 };
 
 class LightViewPass final : public Pass {

@@ -12,6 +12,7 @@
 #include "gl/state.h"
 #include "gl/timer.h"
 #include "render/frame.h"
+#include "render/gbuffer.h"
 #include "render/photon_points.h"
 #include "scene/scene_loader.h"
 #include "viewer/animation_panel.h"
@@ -323,6 +324,9 @@ int Viewer::run() {
             mRunner->setTimeStep(sinceFrameBeganS); // eye adaptation follows the wall clock
             sinceFrameBeganS = 0.0;
             renderFrameStart = Clock::now();
+            const DebugView& shown = mViews[static_cast<size_t>(mViewIndex)];
+            mRunner->setKeepVelocity(shown.source == DebugView::Source::ViewerGBuffer &&
+                                     getGBufferChannels()[shown.channel].name == "velocity");
             mRunner->beginFrame(mPacer.getRenderBudgetMs());
         }
         const Clock::time_point sliceStart = Clock::now();

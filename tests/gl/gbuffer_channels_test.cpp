@@ -56,11 +56,22 @@ TEST_F(GBufferChannelsTest, ALambertianSceneLeavesOutSpecularTransmissiveAndEmis
     grey.diffuse = glm::vec3(0.5f);
     grey.phongExponent = 20.0f; // an exponent without a specular colour writes nothing but zero
     const GpuScene scene(makeSquareOf(grey), kLightResolution);
-    const uint32_t mask = getSceneGBufferChannels(scene);
+    const uint32_t mask = getSceneGBufferChannels(scene, true);
     for (const char* name : {"specular", "transmissive", "emission"})
         EXPECT_EQ(mask & getBit(name), 0u) << name;
     for (const char* name : {"position", "normal", "diffuse", "velocity"})
         EXPECT_NE(mask & getBit(name), 0u) << name;
+}
+
+TEST_F(GBufferChannelsTest, VelocityOnlyWhenMotionIsWanted) {
+    Material grey;
+    grey.diffuse = glm::vec3(0.5f);
+    const GpuScene scene(makeSquareOf(grey), kLightResolution);
+    EXPECT_EQ(getSceneGBufferChannels(scene, false) & getBit("velocity"), 0u);
+    EXPECT_NE(getSceneGBufferChannels(scene, true) & getBit("velocity"), 0u);
+    // Only velocity follows the wish.
+    EXPECT_EQ(getSceneGBufferChannels(scene, false) | getBit("velocity"),
+              getSceneGBufferChannels(scene, true));
 }
 
 TEST_F(GBufferChannelsTest, EachMaterialPartBringsItsChannelBack) {
@@ -78,7 +89,7 @@ TEST_F(GBufferChannelsTest, EachMaterialPartBringsItsChannelBack) {
         m.diffuse = glm::vec3(0.5f);
         c.apply(m);
         const GpuScene scene(makeSquareOf(m), kLightResolution);
-        const uint32_t mask = getSceneGBufferChannels(scene);
+        const uint32_t mask = getSceneGBufferChannels(scene, true);
         for (const char* name : {"specular", "transmissive", "emission"}) {
             EXPECT_EQ((mask & getBit(name)) != 0, std::string_view(name) == c.channel)
                 << c.channel << " material, channel " << name;

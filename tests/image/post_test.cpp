@@ -373,12 +373,38 @@ TEST_F(PostTest, MotionBlurSmearsAlongTheMotionOnlyAndKeepsEnergy) {
     EXPECT_EQ(readTextureImage(runner.getAov(Aov::Total)).pixels, before.pixels);
 }
 
+TEST_F(PostTest, VelocityIsDrawnOnlyForItsReaders) {
+    // The square of the motion-blur test moves 0.3 m (11.6 px) between two frames.
+    Scene scene = makeSquares({{{-0.15f, 0.0f, -2.0f}, 0.15f}});
+    FrameRunner runner(scene, makeSettings(), gl::TimingMethod::CpuFinish);
+    const auto moveAndMeasure = [&](float xM) {
+        scene.instances[0].worldFromObject =
+            glm::translate(glm::mat4(1.0f), glm::vec3(xM, 0.0f, -2.0f));
+        runner.updateScene();
+        runner.renderFrame();
+        const Image velocity = readTextureImage(runner.getViewerGBuffer().getChannel("velocity"));
+        float largest = 0.0f;
+        for (const glm::vec3& v : velocity.pixels)
+            largest = std::max(largest, v.x);
+        return largest;
+    };
+    runner.renderFrame();
+    // Motion blur off, nothing showing the channel: it is left out and reads zero.
+    EXPECT_EQ(moveAndMeasure(0.15f), 0.0f);
+    // Kept (the viewer's debug view), the same motion is there: 11.6 px to the right.
+    runner.setKeepVelocity(true);
+    EXPECT_GT(moveAndMeasure(0.45f), 10.0f);
+    runner.setKeepVelocity(false);
+    EXPECT_EQ(moveAndMeasure(0.75f), 0.0f); // cleared when it leaves
+}
+
 TEST_F(PostTest, AStillViewHasNoVelocityWhileAccumulating) {
     // Accumulated frames look through new sub-pixel offsets: the velocity channel leaves them out.
     const Scene scene = makeSquares({{{0.0f, 0.0f, -2.0f}, 0.5f}});
     Settings s = makeSettings();
     s.set("accumulate", 4, "test");
     FrameRunner runner(scene, s, gl::TimingMethod::CpuFinish);
+    runner.setKeepVelocity(true); // drawn without motion blur (else it holds zero anyway)
     for (int frame = 0; frame < 3; ++frame) {
         runner.renderFrame();
         const Image velocity = readTextureImage(runner.getViewerGBuffer().getChannel("velocity"));
