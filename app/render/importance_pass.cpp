@@ -74,9 +74,7 @@ void ImportancePass::execute(const FrameInputs& inputs) {
     mLights.bindTextures(gpu::kUnitLightGBufferFirst);
     if (share > 0.0f) {
         mHits.clearToZero();
-        mGather
-            .get({inputs.settings.shadows == gpu::kShadowsRay ? "SHADOW_RAYS 1" : "SHADOW_RAYS 0"})
-            .use();
+        mGather.get({getShadowRaysDefine(inputs.settings)}).use();
         const uint32_t count = across * down;
         gl::dispatchCompute((count + gpu::kImportanceGroupSize - 1) / gpu::kImportanceGroupSize);
         gl::memoryBarrier(gl::Barrier::Storage);

@@ -7,6 +7,8 @@
 #include "render/reloadable_program.h"
 #include "scene/frame_settings.h"
 
+#include <shared/scene_data.h>
+
 #include <glm/glm.hpp>
 
 namespace ispm {
@@ -26,6 +28,12 @@ struct ProgressiveStep {
     bool spreadStrongPhotons = true;
     int denoiseIterations = 0; // a-trous iterations of this frame
 };
+
+// "SHADOW_RAYS 1" with shadows ray, else "SHADOW_RAYS 0": the direct and importance programs'
+// variant (their shadow test, lib/shadow_rays.glsl or the shadow maps).
+inline const char* getShadowRaysDefine(const FrameSettings& settings) {
+    return settings.shadows == gpu::kShadowsRay ? "SHADOW_RAYS 1" : "SHADOW_RAYS 0";
+}
 
 // What a frame hands every pass.
 struct FrameInputs {

@@ -104,8 +104,7 @@ void DirectPass::execute(const FrameInputs& inputs) {
         // compiles out the point and spot lights' code, a spot's the others'. A draw without
         // lights writes coverage alone: the plain program does.
         std::vector<std::string> defines = inputs.scene.getSurfaceDefines();
-        defines.push_back(inputs.settings.shadows == gpu::kShadowsRay ? "SHADOW_RAYS 1"
-                                                                      : "SHADOW_RAYS 0");
+        defines.push_back(getShadowRaysDefine(inputs.settings));
         if (draws[i].lightTypes != 0)
             defines.push_back("LIGHT_TYPES " + std::to_string(draws[i].lightTypes) + "u");
         mTarget.draw({.blend = i == 0 ? gl::Blend::Off : gl::Blend::Additive}, draws[i].rect,

@@ -8,6 +8,7 @@
 #include <shared/scene_data.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 namespace ispm {
@@ -118,12 +119,10 @@ glm::ivec2 computeSplatSize(const Settings& settings, int width, int height) {
 int computeShadowMapSize(const Settings& settings) {
     if (settings.isSet("shadow_map_size")) return settings.getInt("shadow_map_size");
     if (getChoice(settings, "shadows") != gpu::kShadowsRay) return kShadowMapTexels;
-    const double wanted =
-        kEmissionTexelsPerGridCell * std::sqrt(std::max(settings.get("photons"), 0.0));
-    int size = kMinEmissionTexels;
-    while (size < wanted && size < kShadowMapTexels)
-        size *= 2;
-    return size;
+    const auto wanted = static_cast<unsigned>(
+        std::ceil(kEmissionTexelsPerGridCell * std::sqrt(std::max(settings.get("photons"), 0.0))));
+    return std::clamp(static_cast<int>(std::bit_ceil(wanted)), kMinEmissionTexels,
+                      kShadowMapTexels);
 }
 
 int computeDenoiseIterations(const Settings& settings, int width, int height) {

@@ -20,7 +20,6 @@ layout(std140, binding = kBindingPassParams) uniform ReferenceParamsBlock { Refe
 const uint kRouletteDepth = 3u;      // vertices traced with certainty before roulette starts
 const float kMaxSurvival = 0.95;     // even bright paths end eventually
 
-
 vec3 traceCameraPath(vec2 pixel, inout uint rng) {
     vec2 ndc = pixel * frame.imageSize.zw * 2.0 - 1.0;
     vec4 nearW = frame.worldFromClip * vec4(ndc, -1.0, 1.0);
