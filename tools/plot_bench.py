@@ -23,6 +23,10 @@ MODE_COLUMNS = ("radius_mode", "splat_mode", "splat_shape", "splat_resolution", 
 # A mode drawn by fill instead of colour: series that differ only in it share colour and marker,
 # its first value filled, the others hollow (so the pairs stay side by side in the legend).
 FILL_COLUMN = "shadows"
+# A mode drawn by marker size: its first value largest (the splat buffer's resolution: 1, 1/2,
+# 1/4 shrink the markers as they shrink the buffer).
+SIZE_COLUMN = "splat_resolution"
+MARKER_SIZES_PT2 = (56, 26, 10)
 SERIES_COLOURS = ("tab:blue", "tab:green", "tab:red", "tab:purple", "tab:brown", "tab:cyan",
                   "tab:olive", "tab:pink")
 SERIES_MARKERS = ("o", "^", "s", "D", "v", "P", "X", "*")
@@ -73,20 +77,25 @@ def main():
         # One series per mode (the swept choice settings' values), photon counts as labels.
         modes = [c for c in MODE_COLUMNS if c in ispm[0] and len({r[c] for r in ispm}) > 1]
         groups = {}
-        styles = {}  # the modes but FILL_COLUMN -> style index
+        styles = {}  # the modes but FILL_COLUMN and SIZE_COLUMN -> style index
         fills = []   # FILL_COLUMN's values, first seen first
+        sizes = []   # SIZE_COLUMN's values, first seen first
         for r, point in zip(ispm, points):
             key = " ".join(f"{c}={r[c]}" for c in modes) or "ispm configurations"
-            style = " ".join(f"{c}={r[c]}" for c in modes if c != FILL_COLUMN)
+            style = " ".join(f"{c}={r[c]}" for c in modes if c not in (FILL_COLUMN, SIZE_COLUMN))
             fill = r[FILL_COLUMN] if FILL_COLUMN in modes else ""
+            size = r[SIZE_COLUMN] if SIZE_COLUMN in modes else ""
             styles.setdefault(style, len(styles))
             if fill not in fills:
                 fills.append(fill)
-            groups.setdefault(key, ([], styles[style], fill))[0].append(point)
-        for key, (group, i, fill) in groups.items():
+            if size not in sizes:
+                sizes.append(size)
+            groups.setdefault(key, ([], styles[style], fill, size))[0].append(point)
+        for key, (group, i, fill, size) in groups.items():
             colour = SERIES_COLOURS[i % len(SERIES_COLOURS)]
             filled = fill == fills[0]
-            ax.scatter([p[0] for p in group], [p[1] for p in group], zorder=3,
+            area = MARKER_SIZES_PT2[min(sizes.index(size), len(MARKER_SIZES_PT2) - 1)]
+            ax.scatter([p[0] for p in group], [p[1] for p in group], zorder=3, s=area,
                        marker=SERIES_MARKERS[i % len(SERIES_MARKERS)],
                        facecolors=colour if filled else "none", edgecolors=colour,
                        label=f"{key} (median frame time)")

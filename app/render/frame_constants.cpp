@@ -77,9 +77,12 @@ gpu::FrameConstants computeFrameConstants(const Scene& scene, const GpuScene& gp
     computeCameraRange(cam, gpuScene.getBounds(), gpuScene.getInstanceBounds(), nearM, farM);
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
     gpu::FrameConstants fc{};
-    fc.clipFromWorld = computeClipShift(jitterPx, glm::vec2(width, height)) *
-                       computeClipFromView(cam, aspect, nearM, farM) * computeViewFromWorld(cam);
+    const glm::mat4 clipFromView = computeClipShift(jitterPx, glm::vec2(width, height)) *
+                                   computeClipFromView(cam, aspect, nearM, farM);
+    const glm::mat4 viewFromWorld = computeViewFromWorld(cam);
+    fc.clipFromWorld = clipFromView * viewFromWorld;
     fc.worldFromClip = glm::inverse(fc.clipFromWorld);
+    fc.eyeOffsetFromClip = glm::inverse(clipFromView * glm::mat4(glm::mat3(viewFromWorld)));
     fc.cameraPosition = glm::vec4(cam.position, 1.0f);
     fc.background = glm::vec4(scene.background, 0.0f);
     fc.imageSize = glm::vec4(width, height, 1.0f / static_cast<float>(width),

@@ -84,7 +84,28 @@ std::vector<DirectDraw> planDirectDraws(const FrameInputs& inputs) {
 DirectPass::DirectPass(const GBuffer& viewer, const GBuffer& lights)
     : mViewer(viewer), mLights(lights),
       mTarget("direct", gl::Format::RGBA32F, "direct/direct.frag", getGBufferDefines()),
-      mParams("direct parameters") {}
+      mParams("direct parameters"),
+      mEdgeFind(ReloadableProgram({.label = "direct light edges",
+                                   .stages = {{gl::ShaderStage::Compute, "direct/edge_find.comp"}},
+                                   .defines = getGBufferDefines()})),
+      mEdgeShade({.label = "direct light over edge pixels",
+                  .stages = {{gl::ShaderStage::Compute, "direct/edge_shade.comp"}},
+                  .defines = getGBufferDefines()}),
+      mEdgeParams("direct edge parameters", sizeof(gpu::DirectEdgeParams)) {}
+
+void DirectPass::resize(int width, int height) {
+    mTarget.resize(width, height);
+    // Room for every pixel: the header, then one uint each.
+    const size_t bytes = sizeof(gpu::DirectEdgeHeader) + sizeof(uint32_t) *
+                                                             static_cast<size_t>(width) *
+                                                             static_cast<size_t>(height);
+    if (mEdges.getSize() != bytes) mEdges = gl::Buffer("direct edge pixels", bytes);
+}
+
+uint32_t DirectPass::readEdgePixelCount() const {
+    if (mEdges.getSize() == 0) return 0;
+    return mEdges.read<gpu::DirectEdgeHeader>(1)[0].pixels;
+}
 
 void DirectPass::execute(const FrameInputs& inputs) {
     inputs.scene.bind();
@@ -110,6 +131,34 @@ void DirectPass::execute(const FrameInputs& inputs) {
         mTarget.draw({.blend = i == 0 ? gl::Blend::Off : gl::Blend::Additive}, draws[i].rect,
                      defines);
     }
+    if (inputs.settings.edgeSamples > 0) shadeEdges(inputs);
+}
+
+void DirectPass::shadeEdges(const FrameInputs& inputs) {
+    constexpr unsigned kFindGroupSide = 8; // edge_find.comp's local size
+    const gpu::DirectEdgeHeader cleared{.groupsX = 0, .groupsY = 1, .groupsZ = 1, .pixels = 0};
+    mEdges.upload(0, sizeof(cleared), &cleared);
+    mEdges.bindBase(gl::BufferTarget::Storage, gpu::kBindingDirectEdges);
+    mTarget.getTexture().bindUnit(gpu::kUnitDirect);
+    mEdgeFind.use();
+    gl::dispatchCompute((static_cast<unsigned>(inputs.width) + kFindGroupSide - 1) / kFindGroupSide,
+                        (static_cast<unsigned>(inputs.height) + kFindGroupSide - 1) /
+                            kFindGroupSide);
+    // The list and the dispatch's group count are written; the direct light is read before it
+    // is rewritten (the list holds each pixel once, and a pixel reads its neighbours only here).
+    gl::memoryBarrier(gl::Barrier::Storage | gl::Barrier::Command);
+    gpu::DirectEdgeParams params{};
+    params.control = glm::uvec4(static_cast<uint32_t>(inputs.settings.edgeSamples),
+                                std::bit_cast<uint32_t>(inputs.scene.getRayEpsilon()), 0u, 0u);
+    mEdgeParams.upload(0, sizeof(params), &params);
+    mEdgeParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
+    std::vector<std::string> defines = inputs.scene.getSurfaceDefines();
+    defines.push_back(getShadowRaysDefine(inputs.settings));
+    mEdgeShade.get(defines).use();
+    mTarget.getTexture().bindImage(gpu::kImageDirect, false, true);
+    gl::dispatchComputeIndirect(mEdges, 0);
+    // Compose and accumulate read the rewritten pixels as textures.
+    gl::memoryBarrier(gl::Barrier::TextureFetch | gl::Barrier::ImageAccess);
 }
 
 ComposePass::ComposePass(const GBuffer& viewer, const gl::Texture& direct,

@@ -10,20 +10,34 @@
 
 namespace ispm {
 
+// Direct light at each pixel's centre (direct.frag), then, with edge_samples, averaged over the
+// area of the pixels where it changes (edge_find.comp lists them, edge_shade.comp traces them).
 class DirectPass final : public Pass {
   public:
     DirectPass(const GBuffer& viewer, const GBuffer& lights);
     const char* getName() const override { return "direct"; }
-    void resize(int width, int height) override { mTarget.resize(width, height); }
+    void resize(int width, int height) override;
     void execute(const FrameInputs& inputs) override;
-    void reloadPrograms(ShaderReloadReport& report) override { mTarget.reloadProgram(report); }
+    void reloadPrograms(ShaderReloadReport& report) override {
+        mTarget.reloadProgram(report);
+        mEdgeFind.reloadIfChanged(report);
+        mEdgeShade.reloadIfChanged(report);
+    }
     const gl::Texture& getOutput() const { return mTarget.getTexture(); }
+    // Pixels the last frame's edge_find.comp listed (read back: for tests and reports).
+    uint32_t readEdgePixelCount() const;
 
   private:
+    void shadeEdges(const FrameInputs& inputs);
+
     const GBuffer& mViewer;
     const GBuffer& mLights;
     FullscreenTarget mTarget;
     ParamBlocks<gpu::DirectParams> mParams;
+    ReloadableProgram mEdgeFind;
+    ProgramVariants mEdgeShade; // by SHADOW_RAYS and the scene's surface defines
+    gl::Buffer mEdges;          // DirectEdgeHeader, then a uint per pixel
+    gl::Buffer mEdgeParams;     // DirectEdgeParams
 };
 
 class ComposePass final : public Pass {

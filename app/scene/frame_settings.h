@@ -43,6 +43,7 @@ struct FrameSettings {
     int shadowMapSize = 0; // px
     float shadowBiasTexels = 0.0f;
     uint32_t shadows = 0; // gpu::kShadowsMap, kShadowsRay
+    int edgeSamples = 0;  // rays per pixel where the direct light changes inside it; 0: off
     // Photons.
     uint32_t seed = 0;
     int photons = 0;

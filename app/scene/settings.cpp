@@ -83,6 +83,17 @@ const std::vector<SettingDesc>& table() {
          "light through the BVH, as the path tracer's: exact hard shadows; the sun's shadow-only "
          "view is not drawn)",
          toChoices(kShadowChoices)},
+        {"edge_samples",
+         SettingType::Int,
+         0,
+         0,
+         256,
+         "",
+         "anti-aliased direct light: pixels at silhouettes, lit creases and edges of the light "
+         "(a shadow's, a spot cone's) are shaded again from this many rays through points "
+         "spread over the pixel (the BVH; the shadow test of shadows) and get their mean, the "
+         "reference path tracer's box filter; 0 = off (the pixel's centre alone)",
+         {}},
         {"shadow_bias",
          SettingType::Float,
          1.0,

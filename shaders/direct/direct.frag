@@ -1,9 +1,10 @@
 // Direct light, deferred: for every viewer G-buffer pixel, the sum over lights of
-// BRDF * irradiance * cos(theta) * visibility. Radiance in W/(m^2 sr). Each draw shades the
-// lights its parameter block lists (DirectPass: the lights that reach every direction over the
-// whole image, a spot light over the pixels its cone can light), and adds to the draws before.
-// Visibility from the light views' shadow maps, or with SHADOW_RAYS 1 (setting shadows ray) from
-// a ray to the light through the BVH.
+// BRDF * irradiance * cos(theta) * visibility (lib/direct_light.glsl), radiance in W/(m^2 sr), at
+// the pixel's centre (edge_find.comp and edge_shade.comp then average it over the area of the
+// pixels where it changes). Each draw shades the lights its parameter block lists (DirectPass:
+// the lights that reach every direction over the whole image, a spot light over the pixels its
+// cone can light), and adds to the draws before. Visibility from the light views' shadow maps,
+// or with SHADOW_RAYS 1 (setting shadows ray) from a ray to the light through the BVH.
 #include "lib/scene_buffers.glsl"
 #include "lib/frame_constants.glsl"
 #include "lib/brdf.glsl"
@@ -13,8 +14,8 @@
 #endif
 #if SHADOW_RAYS
 #include "lib/bvh.glsl"
-#include "lib/shadow_rays.glsl"
 #endif
+#include "lib/direct_light.glsl"
 
 #include "lib/viewer_gbuffer.glsl"
 
@@ -34,17 +35,10 @@ void main() {
     vec4 specular = texelFetch(uSpecular, pixel, 0);
     vec3 wo = normalize(frame.cameraPosition.xyz - position.xyz);
     vec3 radiance = vec3(0.0);
+    float rayFloorM = uintBitsToFloat(params.control.z);
     for (uint k = 0u; k < params.control.x; ++k) {
         GpuLight light = lights[params.lights[k / 4u][k % 4u]];
-        LightSample s = sampleLight(light, position.xyz);
-        float cosTheta = dot(n, s.wi);
-        if (cosTheta <= 0.0 || all(equal(s.irradiance, vec3(0.0)))) continue;
-#if SHADOW_RAYS
-        float visibility = computeRayVisibility(position.xyz, n, s, uintBitsToFloat(params.control.z));
-#else
-        float visibility = computeVisibility(light, position.xyz, n);
-#endif
-        radiance += evaluateBrdf(diffuse, specular, n, s.wi, wo) * s.irradiance * cosTheta * visibility;
+        radiance += computeLightRadiance(light, position.xyz, n, diffuse, specular, wo, rayFloorM);
     }
     // Coverage once: the draws after the first add their light and 0.
     outRadiance = vec4(radiance, params.control.y == 1u ? 1.0 : 0.0);

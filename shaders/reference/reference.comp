@@ -22,10 +22,10 @@ const float kMaxSurvival = 0.95;     // even bright paths end eventually
 
 vec3 traceCameraPath(vec2 pixel, inout uint rng) {
     vec2 ndc = pixel * frame.imageSize.zw * 2.0 - 1.0;
-    vec4 nearW = frame.worldFromClip * vec4(ndc, -1.0, 1.0);
-    vec4 farW = frame.worldFromClip * vec4(ndc, 1.0, 1.0);
+    // Through the eye's own frame: exact however near the near plane and far the far one.
+    vec4 toNear = frame.eyeOffsetFromClip * vec4(ndc, -1.0, 1.0);
     vec3 origin = frame.cameraPosition.xyz;
-    vec3 dir = normalize(farW.xyz / farW.w - nearW.xyz / nearW.w);
+    vec3 dir = normalize(toNear.xyz / toNear.w);
     vec3 radiance = vec3(0.0);
     vec3 throughput = vec3(1.0);
     uint bounces = params.control.y;

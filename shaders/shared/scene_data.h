@@ -107,6 +107,10 @@ ISPM_CONST int kUnitSceneTextures = 28; // after the post passes' 25..27 (post_d
 struct FrameConstants {
     mat4 clipFromWorld;
     mat4 worldFromClip;
+    // Clip to the world-space offset from the eye: worldFromClip without the camera's position,
+    // so a ray through the image is exact however far the eye is from the origin and however
+    // near its near plane (edge_shade.comp; the near plane can lie 1e-5 of the far plane away).
+    mat4 eyeOffsetFromClip;
     vec4 cameraPosition; // xyz, w unused
     vec4 background;     // rgb radiance where no surface is
     vec4 imageSize;      // x = width, y = height, z = 1/width, w = 1/height
@@ -120,7 +124,7 @@ struct FrameConstants {
                          // lobe as a mirror ray (the splats then shade only its diffuse lobe);
                          // 0: nothing traced (specular_depth 0). yzw unused
 };
-ISPM_STATIC_ASSERT_SIZE(FrameConstants, 240);
+ISPM_STATIC_ASSERT_SIZE(FrameConstants, 304);
 
 // Parameters of accumulate.frag (std140, at kBindingPassParams).
 struct AccumulateParams {
@@ -147,6 +151,30 @@ struct DirectParams {
     uvec4 lights[kDirectLightsPerDraw / 4u]; // indices into the scene's lights, four a uvec4
 };
 ISPM_STATIC_ASSERT_SIZE(DirectParams, 256);
+
+// Anti-aliased direct light (setting edge_samples, DirectPass): edge_find.comp lists the pixels
+// at silhouettes, creases and edges of the light (a shadow's, a spot cone's), where one sample at
+// the pixel's centre is not the pixel's average; edge_shade.comp shades each listed pixel again
+// from samples spread over its area and writes their mean (alpha: the share that hit a surface).
+ISPM_CONST int kBindingDirectEdges = 29; // DirectEdgeHeader, then one uint per listed pixel
+ISPM_CONST int kImageDirect = 0;         // the direct light (rgba32f), rewritten at edges
+ISPM_CONST uint kDirectEdgeGroupSize = 64u;
+ISPM_CONST float kDirectEdgeContrast = 0.3f; // bend of the light, as a share of the brightest
+ISPM_CONST float kDirectEdgeCos = 0.95f;     // neighbours' normals apart by more: a crease
+struct DirectEdgeHeader {
+    uint groupsX; // edge_shade.comp's indirect dispatch: ceil(pixels / kDirectEdgeGroupSize)
+    uint groupsY; // 1
+    uint groupsZ; // 1
+    uint pixels;  // pixels listed, each x | y << 16
+};
+ISPM_STATIC_ASSERT_SIZE(DirectEdgeHeader, 16);
+
+// Parameters of edge_shade.comp (std140, at kBindingPassParams).
+struct DirectEdgeParams {
+    uvec4 control; // x = samples per listed pixel, y = the ray offset floor (float bits,
+                   // GpuScene::getRayEpsilon), zw unused
+};
+ISPM_STATIC_ASSERT_SIZE(DirectEdgeParams, 16);
 
 // Parameters of one iteration of atrous.frag, and of upsample.frag (std140, at
 // kBindingPassParams; the filter's iterations are bound by range).

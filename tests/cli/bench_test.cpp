@@ -134,8 +134,11 @@ TEST_F(BenchTest, PresetAppliesOnlyKnownSettings) {
     EXPECT_NE(std::find(applied.begin(), applied.end(), "radius_mode=travel"), applied.end())
         << j.dump();
     // Every preset setting is either applied or reported as skipped.
-    EXPECT_EQ(applied.size() + skipped.size(), 8u) << j.dump();
+    EXPECT_EQ(applied.size() + skipped.size(), 9u) << j.dump();
     EXPECT_NE(std::find(applied.begin(), applied.end(), "splat_resolution=1/2"), applied.end())
+        << j.dump();
+    // The thesis shades direct light at pixel centres.
+    EXPECT_NE(std::find(applied.begin(), applied.end(), "edge_samples=0"), applied.end())
         << j.dump();
 }
 

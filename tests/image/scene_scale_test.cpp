@@ -52,7 +52,8 @@ TEST_F(SceneScaleTest, TheCornellBoxLooksTheSameAtAnySize) {
             // few of them across a texel or a cell (0.1-0.2% seen at 4x4). A lost bounce or a
             // clipped view misses by tens of percent.
             EXPECT_NEAR(computeEnergyRatio(scaled, metre), 1.0, 0.01) << "scale " << k;
-            EXPECT_LT(computeRelRmse(scaled, metre, 4), 0.02) << "scale " << k;
+            EXPECT_LT(computeRelRmse(scaled, metre, 4), 0.02)
+                << "scale " << k << " aov " << int(aov);
         }
     }
 }

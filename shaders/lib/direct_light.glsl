@@ -1,0 +1,26 @@
+// One light's direct light at a surface point, as direct.frag shades a viewer pixel and
+// edge_shade.comp a sample inside one: BRDF x irradiance x cos(theta) x visibility, radiance in
+// W/(m^2 sr). Visibility from the light views' shadow maps, or with SHADOW_RAYS 1 (setting
+// shadows ray) from a ray to the light through the BVH. Needs brdf.glsl and lights.glsl included
+// before, and with SHADOW_RAYS 1 bvh.glsl.
+#ifndef SHADOW_RAYS
+#define SHADOW_RAYS 0
+#endif
+#if SHADOW_RAYS
+#include "shadow_rays.glsl"
+#endif
+
+// `n` faces the viewer, `wo` points to it; rayFloorM: the shadow ray's offset floor
+// (GpuScene::getRayEpsilon; unused with shadow maps).
+vec3 computeLightRadiance(GpuLight light, vec3 position, vec3 n, vec3 diffuse, vec4 specular,
+                          vec3 wo, float rayFloorM) {
+    LightSample s = sampleLight(light, position);
+    float cosTheta = dot(n, s.wi);
+    if (cosTheta <= 0.0 || all(equal(s.irradiance, vec3(0.0)))) return vec3(0.0);
+#if SHADOW_RAYS
+    float visibility = computeRayVisibility(position, n, s, rayFloorM);
+#else
+    float visibility = computeVisibility(light, position, n);
+#endif
+    return evaluateBrdf(diffuse, specular, n, s.wi, wo) * s.irradiance * cosTheta * visibility;
+}
