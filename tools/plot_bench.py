@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 # Draws a `ispm bench --sweep` CSV as error against time per frame (log-log): the ispm
-# configurations labelled by photon count, one series per swept mode (radius_mode, splat_mode,
-# ...), with their Pareto front, and the path tracer's curve.
+# configurations labelled by photon count, a colour and marker per combination of swept modes
+# (radius_mode, splat_mode, ...; shadows, splat_resolution and edge_samples as fill, size and
+# edge width), with their Pareto front, and the path tracer's curve.
 # Usage: tools/plot_bench.py CSV OUT.png [--title T]   (Debian's matplotlib: /usr/bin/python3)
 import argparse
 import sys
@@ -19,14 +20,17 @@ LABEL_OFFSET_PT = (5, 4)  # photon-count labels sit just above and right of thei
 REQUIRED_COLUMNS = ("kind", "spp", "photons", "total_ms", "relmse_total")
 # Choice settings a sweep may vary: each combination of their values is a series of its own.
 MODE_COLUMNS = ("radius_mode", "splat_mode", "splat_shape", "splat_resolution", "radius_scale",
-                "shadows")
-# A mode drawn by fill instead of colour: series that differ only in it share colour and marker,
-# its first value filled, the others hollow (so the pairs stay side by side in the legend).
+                "shadows", "edge_samples")
+# Modes drawn by a marker's look instead of its colour, so that the colours stay few: points that
+# differ only in them share colour and marker. Fill: the first value filled, the others hollow.
 FILL_COLUMN = "shadows"
-# A mode drawn by marker size: its first value largest (the splat buffer's resolution: 1, 1/2,
-# 1/4 shrink the markers as they shrink the buffer).
+# Size: the first value largest (the splat buffer's resolution: 1, 1/2, 1/4 shrink the markers as
+# they shrink the buffer).
 SIZE_COLUMN = "splat_resolution"
 MARKER_SIZES_PT2 = (56, 26, 10)
+# Edge width: the first value thin, the others thick (edge samples off, then on).
+WIDTH_COLUMN = "edge_samples"
+EDGE_WIDTHS_PT = (0.8, 2.2)
 SERIES_COLOURS = ("tab:blue", "tab:green", "tab:red", "tab:purple", "tab:brown", "tab:cyan",
                   "tab:olive", "tab:pink")
 SERIES_MARKERS = ("o", "^", "s", "D", "v", "P", "X", "*")
@@ -74,35 +78,53 @@ def main():
 
     if ispm:
         points = [(float(r["total_ms"]), float(r["relmse_total"]), r["photons"]) for r in ispm]
-        # One series per mode (the swept choice settings' values), photon counts as labels.
+        # Colour and marker per style (the swept modes but the channel columns), the channel
+        # columns as fill, size and edge width; photon counts as labels.
         modes = [c for c in MODE_COLUMNS if c in ispm[0] and len({r[c] for r in ispm}) > 1]
+        channels = [c for c in (FILL_COLUMN, SIZE_COLUMN, WIDTH_COLUMN) if c in modes]
+        styles = {}                         # style -> index
+        values = {c: [] for c in channels}  # each channel column's values, first seen first
         groups = {}
-        styles = {}  # the modes but FILL_COLUMN and SIZE_COLUMN -> style index
-        fills = []   # FILL_COLUMN's values, first seen first
-        sizes = []   # SIZE_COLUMN's values, first seen first
         for r, point in zip(ispm, points):
-            key = " ".join(f"{c}={r[c]}" for c in modes) or "ispm configurations"
-            style = " ".join(f"{c}={r[c]}" for c in modes if c not in (FILL_COLUMN, SIZE_COLUMN))
-            fill = r[FILL_COLUMN] if FILL_COLUMN in modes else ""
-            size = r[SIZE_COLUMN] if SIZE_COLUMN in modes else ""
+            style = " ".join(f"{c}={r[c]}" for c in modes if c not in channels)
             styles.setdefault(style, len(styles))
-            if fill not in fills:
-                fills.append(fill)
-            if size not in sizes:
-                sizes.append(size)
-            groups.setdefault(key, ([], styles[style], fill, size))[0].append(point)
-        for key, (group, i, fill, size) in groups.items():
+            for c in channels:
+                if r[c] not in values[c]:
+                    values[c].append(r[c])
+            key = (style,) + tuple(r[c] for c in channels)
+            groups.setdefault(key, []).append(point)
+
+        def channel_index(column, key):
+            return values[column].index(key[1 + channels.index(column)]) if column in channels else 0
+
+        for key, group in groups.items():
+            i = styles[key[0]]
             colour = SERIES_COLOURS[i % len(SERIES_COLOURS)]
-            filled = fill == fills[0]
-            area = MARKER_SIZES_PT2[min(sizes.index(size), len(MARKER_SIZES_PT2) - 1)]
+            filled = channel_index(FILL_COLUMN, key) == 0
+            area = MARKER_SIZES_PT2[min(channel_index(SIZE_COLUMN, key), len(MARKER_SIZES_PT2) - 1)]
+            width = EDGE_WIDTHS_PT[min(channel_index(WIDTH_COLUMN, key), len(EDGE_WIDTHS_PT) - 1)]
             ax.scatter([p[0] for p in group], [p[1] for p in group], zorder=3, s=area,
-                       marker=SERIES_MARKERS[i % len(SERIES_MARKERS)],
-                       facecolors=colour if filled else "none", edgecolors=colour,
-                       label=f"{key} (median frame time)")
+                       marker=SERIES_MARKERS[i % len(SERIES_MARKERS)], linewidths=width,
+                       facecolors=colour if filled else "none", edgecolors=colour)
             for time_ms, error, photons in group:
                 ax.annotate(f"{int(float(photons)):,}", (time_ms, error),
-                            textcoords="offset points", xytext=LABEL_OFFSET_PT, fontsize=6,
+                            textcoords="offset points", xytext=LABEL_OFFSET_PT, fontsize=5,
                             color=colour)
+        # The legend names each style once, then what each channel's looks mean.
+        for style, i in styles.items():
+            ax.scatter([], [], marker=SERIES_MARKERS[i % len(SERIES_MARKERS)],
+                       color=SERIES_COLOURS[i % len(SERIES_COLOURS)],
+                       label=f"{style or 'ispm configurations'} (median frame time)")
+        for c in channels:
+            for k, value in enumerate(values[c]):
+                look = {FILL_COLUMN: "filled" if k == 0 else "hollow",
+                        SIZE_COLUMN: ("large", "medium", "small")[min(k, 2)],
+                        WIDTH_COLUMN: "thin edge" if k == 0 else "thick edge"}[c]
+                ax.scatter([], [], marker="o", color="tab:grey",
+                           facecolors="tab:grey" if c != FILL_COLUMN or k == 0 else "none",
+                           s=MARKER_SIZES_PT2[min(k, 2)] if c == SIZE_COLUMN else 26,
+                           linewidths=EDGE_WIDTHS_PT[min(k, 1)] if c == WIDTH_COLUMN else 1.0,
+                           label=f"{c}={value}: {look}")
         front = compute_pareto_front(points)
         ax.plot([p[0] for p in front], [p[1] for p in front], "-", color="tab:orange", zorder=2,
                 label="ispm Pareto front")

@@ -102,11 +102,6 @@ void DirectPass::resize(int width, int height) {
     if (mEdges.getSize() != bytes) mEdges = gl::Buffer("direct edge pixels", bytes);
 }
 
-uint32_t DirectPass::readEdgePixelCount() const {
-    if (mEdges.getSize() == 0) return 0;
-    return mEdges.read<gpu::DirectEdgeHeader>(1)[0].pixels;
-}
-
 void DirectPass::execute(const FrameInputs& inputs) {
     inputs.scene.bind();
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);

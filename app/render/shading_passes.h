@@ -24,8 +24,6 @@ class DirectPass final : public Pass {
         mEdgeShade.reloadIfChanged(report);
     }
     const gl::Texture& getOutput() const { return mTarget.getTexture(); }
-    // Pixels the last frame's edge_find.comp listed (read back: for tests and reports).
-    uint32_t readEdgePixelCount() const;
 
   private:
     void shadeEdges(const FrameInputs& inputs);
