@@ -120,8 +120,10 @@ def main():
                 look = {FILL_COLUMN: "filled" if k == 0 else "hollow",
                         SIZE_COLUMN: ("large", "medium", "small")[min(k, 2)],
                         WIDTH_COLUMN: "thin edge" if k == 0 else "thick edge"}[c]
+                # Width entries hollow, so that the edge shows.
+                solid = (c == SIZE_COLUMN) or (c == FILL_COLUMN and k == 0)
                 ax.scatter([], [], marker="o", color="tab:grey",
-                           facecolors="tab:grey" if c != FILL_COLUMN or k == 0 else "none",
+                           facecolors="tab:grey" if solid else "none",
                            s=MARKER_SIZES_PT2[min(k, 2)] if c == SIZE_COLUMN else 26,
                            linewidths=EDGE_WIDTHS_PT[min(k, 1)] if c == WIDTH_COLUMN else 1.0,
                            label=f"{c}={value}: {look}")
