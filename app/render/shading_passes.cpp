@@ -93,15 +93,6 @@ DirectPass::DirectPass(const GBuffer& viewer, const GBuffer& lights)
                   .defines = getGBufferDefines()}),
       mEdgeParams("direct edge parameters", sizeof(gpu::DirectEdgeParams)) {}
 
-void DirectPass::resize(int width, int height) {
-    mTarget.resize(width, height);
-    // Room for every pixel: the header, then one uint each.
-    const size_t bytes = sizeof(gpu::DirectEdgeHeader) + sizeof(uint32_t) *
-                                                             static_cast<size_t>(width) *
-                                                             static_cast<size_t>(height);
-    if (mEdges.getSize() != bytes) mEdges = gl::Buffer("direct edge pixels", bytes);
-}
-
 void DirectPass::execute(const FrameInputs& inputs) {
     inputs.scene.bind();
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
@@ -131,6 +122,11 @@ void DirectPass::execute(const FrameInputs& inputs) {
 
 void DirectPass::shadeEdges(const FrameInputs& inputs) {
     constexpr unsigned kFindGroupSide = 8; // edge_find.comp's local size
+    // Room for every pixel (the header, then one uint each), only once edges are shaded.
+    const size_t bytes = sizeof(gpu::DirectEdgeHeader) + sizeof(uint32_t) *
+                                                             static_cast<size_t>(inputs.width) *
+                                                             static_cast<size_t>(inputs.height);
+    if (mEdges.getSize() != bytes) mEdges = gl::Buffer("direct edge pixels", bytes);
     const gpu::DirectEdgeHeader cleared{.groupsX = 0, .groupsY = 1, .groupsZ = 1, .pixels = 0};
     mEdges.upload(0, sizeof(cleared), &cleared);
     mEdges.bindBase(gl::BufferTarget::Storage, gpu::kBindingDirectEdges);

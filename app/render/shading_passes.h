@@ -16,7 +16,7 @@ class DirectPass final : public Pass {
   public:
     DirectPass(const GBuffer& viewer, const GBuffer& lights);
     const char* getName() const override { return "direct"; }
-    void resize(int width, int height) override;
+    void resize(int width, int height) override { mTarget.resize(width, height); }
     void execute(const FrameInputs& inputs) override;
     void reloadPrograms(ShaderReloadReport& report) override {
         mTarget.reloadProgram(report);
@@ -34,7 +34,7 @@ class DirectPass final : public Pass {
     ParamBlocks<gpu::DirectParams> mParams;
     ReloadableProgram mEdgeFind;
     ProgramVariants mEdgeShade; // by SHADOW_RAYS and the scene's surface defines
-    gl::Buffer mEdges;          // DirectEdgeHeader, then a uint per pixel
+    gl::Buffer mEdges;          // DirectEdgeHeader, then a uint per pixel; made at first use
     gl::Buffer mEdgeParams;     // DirectEdgeParams
 };
 

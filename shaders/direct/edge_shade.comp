@@ -29,11 +29,8 @@ const uint kEdgeSeedSlot = 0xfffffffdu;
 // The direct light seen through image point `point` (pixels from the lower left), and whether a
 // surface was hit.
 vec3 shadeThrough(vec2 point, float rayFloorM, out bool hitSurface) {
-    vec2 ndc = point * frame.imageSize.zw * 2.0 - 1.0;
-    // From the near plane on, as the G-buffer sees the scene; through the eye's own frame, which
-    // keeps the direction's digits when the near plane is a hair from the eye.
-    vec4 offset = frame.eyeOffsetFromClip * vec4(ndc, -1.0, 1.0);
-    vec3 toNear = offset.xyz / offset.w;
+    // From the near plane on, as the G-buffer sees the scene.
+    vec3 toNear = computeEyeToNear(point);
     vec3 origin = frame.cameraPosition.xyz + toNear;
     vec3 dir = normalize(toNear);
     RayHit hit;
@@ -44,11 +41,7 @@ vec3 shadeThrough(vec2 point, float rayFloorM, out bool hitSurface) {
     vec3 n = dot(geometric, dir) < 0.0 ? geometric : -geometric; // faces the eye, as the G-buffer's
     GpuMaterial m = materials[triangles[hit.triangle].w];
     vec3 diffuse = getHitDiffuse(m, hit.triangle, hit.barycentric);
-    vec3 radiance = vec3(0.0);
-    for (uint i = 0u; i < frame.counts.x; ++i) {
-        radiance += computeLightRadiance(lights[i], position, n, diffuse, m.specular, -dir, rayFloorM);
-    }
-    return radiance;
+    return computeDirectRadiance(position, n, diffuse, m.specular, -dir, rayFloorM);
 }
 
 void main() {

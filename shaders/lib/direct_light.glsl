@@ -1,8 +1,9 @@
-// One light's direct light at a surface point, as direct.frag shades a viewer pixel and
-// edge_shade.comp a sample inside one: BRDF x irradiance x cos(theta) x visibility, radiance in
-// W/(m^2 sr). Visibility from the light views' shadow maps, or with SHADOW_RAYS 1 (setting
-// shadows ray) from a ray to the light through the BVH. Needs brdf.glsl and lights.glsl included
-// before, and with SHADOW_RAYS 1 bvh.glsl.
+// Direct light at a surface point, one light's or every light's: BRDF x irradiance x cos(theta) x
+// visibility, radiance in W/(m^2 sr), as direct.frag shades a viewer pixel, edge_shade.comp a
+// sample inside one, and the path tracer (reference.comp) and the specular pass
+// (specular_trace.comp) a hit. Visibility from the light views' shadow maps, or with
+// SHADOW_RAYS 1 (setting shadows ray; the tracers always) from a ray to the light through the
+// BVH. Needs brdf.glsl and lights.glsl included before, and with SHADOW_RAYS 1 bvh.glsl.
 #ifndef SHADOW_RAYS
 #define SHADOW_RAYS 0
 #endif
@@ -23,4 +24,13 @@ vec3 computeLightRadiance(GpuLight light, vec3 position, vec3 n, vec3 diffuse, v
     float visibility = computeVisibility(light, position, n);
 #endif
     return evaluateBrdf(diffuse, specular, n, s.wi, wo) * s.irradiance * cosTheta * visibility;
+}
+
+// Every light of the scene (frame.counts.x).
+vec3 computeDirectRadiance(vec3 position, vec3 n, vec3 diffuse, vec4 specular, vec3 wo,
+                           float rayFloorM) {
+    vec3 radiance = vec3(0.0);
+    for (uint i = 0u; i < frame.counts.x; ++i)
+        radiance += computeLightRadiance(lights[i], position, n, diffuse, specular, wo, rayFloorM);
+    return radiance;
 }

@@ -5,6 +5,16 @@ layout(std140, binding = kBindingFrameConstants) uniform FrameConstantsBlock {
     FrameConstants frame;
 };
 
+// The eye's ray through image point `point` (pixels from the lower left): the offset from the
+// eye to where it crosses the near plane (normalised: its direction). Through eyeOffsetFromClip,
+// which keeps the digits however near the near plane (1e-5 of the far plane at most) and however
+// far the eye from the origin.
+vec3 computeEyeToNear(vec2 point) {
+    vec2 ndc = point * frame.imageSize.zw * 2.0 - 1.0;
+    vec4 offset = frame.eyeOffsetFromClip * vec4(ndc, -1.0, 1.0);
+    return offset.xyz / offset.w;
+}
+
 // The viewer G-buffer pixel that pixel `p` of a buffer `divisor` times smaller than the image
 // stands for (splat_resolution): the middle of its block, inside the image. The splat shades
 // it, the filter and the upsample weigh by it.

@@ -15,10 +15,7 @@ layout(std140, binding = kBindingPassParams) uniform LightTraceParamsBlock { Lig
 layout(std430, binding = kBindingLightSplat) buffer LightSplat { float splat[]; };
 
 vec3 traceEmission(vec2 pixel) {
-    vec2 ndc = pixel * frame.imageSize.zw * 2.0 - 1.0;
-    vec4 nearW = frame.worldFromClip * vec4(ndc, -1.0, 1.0);
-    vec4 farW = frame.worldFromClip * vec4(ndc, 1.0, 1.0);
-    vec3 dir = normalize(farW.xyz / farW.w - nearW.xyz / nearW.w);
+    vec3 dir = normalize(computeEyeToNear(pixel));
     RayHit hit;
     if (!traceRay(frame.cameraPosition.xyz, dir, kNoHitDistance, hit)) return frame.background.rgb;
     return materials[triangles[hit.triangle].w].emission.rgb;

@@ -10,6 +10,8 @@
 #include "lib/scene_textures.glsl"
 #include "lib/brdf.glsl"
 #include "lib/lights.glsl"
+#define SHADOW_RAYS 1 // next-event estimation: a shadow ray per light
+#include "lib/direct_light.glsl"
 #include "shared/photon_scatter.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -21,11 +23,8 @@ const uint kRouletteDepth = 3u;      // vertices traced with certainty before ro
 const float kMaxSurvival = 0.95;     // even bright paths end eventually
 
 vec3 traceCameraPath(vec2 pixel, inout uint rng) {
-    vec2 ndc = pixel * frame.imageSize.zw * 2.0 - 1.0;
-    // Through the eye's own frame: exact however near the near plane and far the far one.
-    vec4 toNear = frame.eyeOffsetFromClip * vec4(ndc, -1.0, 1.0);
     vec3 origin = frame.cameraPosition.xyz;
-    vec3 dir = normalize(toNear.xyz / toNear.w);
+    vec3 dir = normalize(computeEyeToNear(pixel));
     vec3 radiance = vec3(0.0);
     vec3 throughput = vec3(1.0);
     uint bounces = params.control.y;
@@ -43,16 +42,9 @@ vec3 traceCameraPath(vec2 pixel, inout uint rng) {
         vec3 diffuse = getHitDiffuse(m, hit.triangle, hit.barycentric);
         if (vertex == 1u) radiance += m.emission.rgb; // emission is seen, it lights nothing
         vec3 wo = -dir;
+        radiance += throughput * computeDirectRadiance(position, n, diffuse, m.specular, wo,
+                                                       params.ray.x);
         float offset = computeRayOffset(position, params.ray.x);
-        vec3 offsetOrigin = position + n * offset;
-        for (uint i = 0u; i < frame.counts.x; ++i) {
-            LightSample s = sampleLight(lights[i], position);
-            float cosTheta = dot(n, s.wi);
-            if (cosTheta <= 0.0 || all(equal(s.irradiance, vec3(0.0)))) continue;
-            if (isRayBlocked(offsetOrigin, s.wi, s.distanceM - 2.0 * offset)) continue;
-            radiance += throughput * evaluateBrdf(diffuse, m.specular, n, s.wi, wo) *
-                        s.irradiance * cosTheta;
-        }
         if (vertex > bounces) break;
         float total = computeMean(diffuse) + computeMean(m.specular.rgb) +
                       computeMean(m.transmissive.rgb);

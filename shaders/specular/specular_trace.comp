@@ -15,6 +15,8 @@
 #include "lib/bvh.glsl"
 #include "lib/brdf.glsl"
 #include "lib/lights.glsl"
+#define SHADOW_RAYS 1 // shadow maps see only what light cameras see
+#include "lib/direct_light.glsl"
 #include "shared/specular_data.h"
 
 #include "lib/viewer_gbuffer.glsl"
@@ -68,22 +70,6 @@ void scatterRays(vec3 position, vec3 n, bool frontFace, vec3 dir, vec3 diffuse, 
         }
     }
     pushRay(position, n, reflect(dir, n), weight * reflected, level, offset);
-}
-
-// Direct light at a hit, with a shadow ray per light (shadow maps see only what light cameras
-// see; glass blocks shadow rays, as in the reference).
-vec3 shadeDirect(vec3 position, vec3 n, vec3 wo, GpuMaterial m) {
-    float offset = computeRayOffset(position, params.ray.x);
-    vec3 origin = position + n * offset;
-    vec3 radiance = vec3(0.0);
-    for (uint i = 0u; i < frame.counts.x; ++i) {
-        LightSample s = sampleLight(lights[i], position);
-        float cosTheta = dot(n, s.wi);
-        if (cosTheta <= 0.0 || all(equal(s.irradiance, vec3(0.0)))) continue;
-        if (isRayBlocked(origin, s.wi, s.distanceM - 2.0 * offset)) continue;
-        radiance += evaluateBrdf(m.diffuse.rgb, m.specular, n, s.wi, wo) * s.irradiance * cosTheta;
-    }
-    return radiance;
 }
 
 // The indirect light of a hit: that of the visible pixel it projects onto when that pixel shows
@@ -142,7 +128,10 @@ void main() {
         bool frontFace = dot(geometric, ray.dir) < 0.0;
         vec3 n = frontFace ? geometric : -geometric;
         GpuMaterial m = materials[triangles[hit.triangle].w];
-        radiance += ray.weight * (shadeDirect(hitPosition, n, -ray.dir, m) + lookUpIndirect(hitPosition, m.diffuse.rgb));
+        // Direct light with a shadow ray per light (glass blocks them, as in the reference).
+        vec3 direct = computeDirectRadiance(hitPosition, n, m.diffuse.rgb, m.specular, -ray.dir,
+                                            params.ray.x);
+        radiance += ray.weight * (direct + lookUpIndirect(hitPosition, m.diffuse.rgb));
         if (ray.level < levels) {
             scatterRays(hitPosition, n, frontFace, ray.dir, m.diffuse.rgb, m.specular, m.transmissive,
                         ray.weight, ray.level + 1u);
