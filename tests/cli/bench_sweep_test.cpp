@@ -211,6 +211,39 @@ TEST_F(BenchSweepTest, TinySweepWritesCsvWithExpectedRowsAndPngChart) {
     EXPECT_EQ(std::string(magic.data(), magic.size()), std::string("\x89PNG\r\n\x1a\n", 8));
 }
 
+TEST_F(BenchSweepTest, TracerCurveDrawsOtherSamplesThanTheReference) {
+    // The sweep's path tracer runs to the reference's own sample count with the same seed and
+    // bounces settings. Drawn apart from the reference, its error at R samples is 2 s^2 / R
+    // against 3 s^2 / R at R/2 (each image's variance plus the reference's): a ratio of 2/3. Had
+    // it drawn the reference's own samples, the image at R would be the reference: error 0.
+    const std::string reference = (mDir / "reference.pfm").string();
+    const std::string size =
+        " --width " + std::to_string(kSizePx) + " --height " + std::to_string(kSizePx);
+    const RunResult render = runIspm("render " + mScene + " --mode reference --bounces 3 --spp " +
+                                         std::to_string(kReferenceSpp) + size + " -o " + reference,
+                                     true);
+    ASSERT_EQ(render.exitCode, 0) << render.output;
+    const std::string csvPath = (mDir / "sweep.csv").string();
+    const RunResult sweep =
+        runIspm("bench " + mScene + size + kSmallLights + " --reference " + reference +
+                    " --sweep photons=2000 --frames 1 --warmup 0 --reference-spp-max " +
+                    std::to_string(kReferenceSpp) + " --csv " + csvPath,
+                false);
+    ASSERT_EQ(sweep.exitCode, 0) << sweep.output;
+    std::vector<std::string> header;
+    std::map<int, double> tracerError; // by spp
+    for (const CsvRow& row : readCsv(csvPath, header)) {
+        if (row.at("kind") == "reference")
+            tracerError[static_cast<int>(toNumber(row, "spp"))] = toNumber(row, "relmse_total");
+    }
+    ASSERT_EQ(tracerError.count(kReferenceSpp), 1u);
+    ASSERT_EQ(tracerError.count(kReferenceSpp / 2), 1u);
+    ASSERT_TRUE(isPositive(tracerError[kReferenceSpp / 2]));
+    // 0.4: well below 2/3 for the noise of a 24x24 image's error (0.67 read), far above 0.
+    EXPECT_GT(tracerError[kReferenceSpp] / tracerError[kReferenceSpp / 2], 0.4)
+        << tracerError[kReferenceSpp] << " at " << kReferenceSpp << " spp";
+}
+
 TEST_F(BenchSweepTest, ConvergeScriptWritesRowsAndChart) {
     // tools/converge.sh renders --accumulate N for each N against a reference's indirect light;
     // tools/plot_converge.py draws the rows.
