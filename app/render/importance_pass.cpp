@@ -44,6 +44,8 @@ void ImportancePass::execute(const FrameInputs& inputs) {
     if (views != mViewCount) {
         mHits = gl::Buffer("importance hits", views * gpu::kImportanceTexels * sizeof(uint32_t));
         mCdfTables = gl::Buffer("importance tables", computeCdfFloats(views) * sizeof(float));
+        mFilteredRows = gl::Buffer("importance filtered rows",
+                                   views * gpu::kImportanceTexels * 2 * sizeof(float));
         mPdfMap = gl::Texture::create2DArray("importance pdf", gl::Format::RGBA32F,
                                              int(gpu::kImportanceSize), int(gpu::kImportanceSize),
                                              int(views));
@@ -80,6 +82,7 @@ void ImportancePass::execute(const FrameInputs& inputs) {
         gl::memoryBarrier(gl::Barrier::Storage);
     }
     mCdf.use();
+    mFilteredRows.bindBase(gl::BufferTarget::Storage, gpu::kBindingImportanceRows);
     mPdfMap.bindImage(gpu::kImageImportancePdf, false, true);
     // Shadow-only views (after the others) emit no photons: no tables.
     const auto emitting = static_cast<uint32_t>(std::count_if(

@@ -30,8 +30,8 @@ class ImportancePass final : public Pass {
     const gl::Texture& getPdfMap() const { return mPdfMap; }
     size_t getGpuBytes() const {
         constexpr size_t kBytesRgba32F = 16;
-        return mHits.getSize() + mCdfTables.getSize() + mParams.getSize() +
-               mViewCount * gpu::kImportanceTexels * kBytesRgba32F;
+        return mHits.getSize() + mCdfTables.getSize() + mFilteredRows.getSize() +
+               mParams.getSize() + mViewCount * gpu::kImportanceTexels * kBytesRgba32F;
     }
 
   private:
@@ -43,6 +43,7 @@ class ImportancePass final : public Pass {
     gl::Buffer mParams;
     gl::Buffer mHits;
     gl::Buffer mCdfTables;
+    gl::Buffer mFilteredRows; // the CDF build's scratch (kBindingImportanceRows)
     gl::Texture mPdfMap;
     size_t mViewCount = 0;
 };

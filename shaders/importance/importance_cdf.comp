@@ -16,6 +16,7 @@ layout(std140, binding = kBindingImportanceParams) uniform ImportanceParamsBlock
     ImportanceParams params;
 };
 layout(std430, binding = kBindingImportanceHits) readonly buffer ImportanceHits { uint importanceHits[]; };
+layout(std430, binding = kBindingImportanceRows) coherent buffer ImportanceRows { vec2 importanceRows[]; };
 layout(std430, binding = kBindingImportanceCdf) writeonly buffer ImportanceCdf { float importanceCdf[]; };
 layout(rgba32f, binding = kImageImportancePdf) uniform writeonly image2DArray uPdfMap;
 
@@ -47,31 +48,47 @@ float computeBase(GpuLightView view, GpuLight light, uint column, uint row) {
 // The gathered importance around a texel at two scales: a tent over 5 x 5 texels (a few gather
 // hits mark a region, not single texels) plus half a tent over 13 x 13 texels, so that the
 // surroundings of what the gather found (a yard seen through a door, hit by a few rays) get
-// photons of moderate power instead of the floor's rare, strong ones.
-float filterImportance(uint viewIndex, ivec2 texel, int radius) {
-    float sum = 0.0;
-    float weights = 0.0;
-    for (int dy = -radius; dy <= radius; ++dy) {
-        for (int dx = -radius; dx <= radius; ++dx) {
-            ivec2 at = texel + ivec2(dx, dy);
-            if (any(lessThan(at, ivec2(0))) || any(greaterThanEqual(at, ivec2(kImportanceSize)))) continue;
-            float w = float((radius + 1 - abs(dx)) * (radius + 1 - abs(dy)));
-            sum += w * float(importanceHits[viewIndex * kImportanceTexels + uint(at.y) * kImportanceSize + uint(at.x)]);
-            weights += w;
-        }
-    }
-    return sum / weights;
-}
-
+// photons of moderate power instead of the floor's rare, strong ones. Texels off the map are left
+// out of the weights. Each tent is the product of one along the row and one along the column, and
+// so is the sum of its weights over the (rectangular) part on the map: the rows are filtered first
+// (filterRow), then the columns (filterColumn), 2 x (5 + 13) reads a texel instead of 194.
 const int kSharpRadius = 2;
 const int kWideRadius = 6;
 const float kWideWeight = 0.5;
 
+// The hits of texels (column - r .. column + r, row) under a tent of radius r, normalised.
+float filterRow(uint viewIndex, int column, uint row, int radius) {
+    float sum = 0.0;
+    float weights = 0.0;
+    for (int dx = -radius; dx <= radius; ++dx) {
+        int at = column + dx;
+        if (at < 0 || at >= int(kImportanceSize)) continue;
+        float w = float(radius + 1 - abs(dx));
+        sum += w * float(importanceHits[viewIndex * kImportanceTexels + row * kImportanceSize + uint(at)]);
+        weights += w;
+    }
+    return sum / weights;
+}
+
+// filterRow's results of rows (row - r .. row + r) under a tent of radius r, normalised: the
+// 2D tent's mean.
+float filterColumn(uint viewIndex, uint column, int row, int radius, int component) {
+    float sum = 0.0;
+    float weights = 0.0;
+    for (int dy = -radius; dy <= radius; ++dy) {
+        int at = row + dy;
+        if (at < 0 || at >= int(kImportanceSize)) continue;
+        float w = float(radius + 1 - abs(dy));
+        sum += w * importanceRows[viewIndex * kImportanceTexels + uint(at) * kImportanceSize + column][component];
+        weights += w;
+    }
+    return sum / weights;
+}
+
 float getImportance(uint viewIndex, uint column, uint row) {
     if (params.weights.x <= 0.0) return 0.0; // nothing aimed: the hits were not gathered
-    ivec2 texel = ivec2(column, row);
-    return filterImportance(viewIndex, texel, kSharpRadius) +
-           kWideWeight * filterImportance(viewIndex, texel, kWideRadius);
+    return filterColumn(viewIndex, column, int(row), kSharpRadius, 0) +
+           kWideWeight * filterColumn(viewIndex, column, int(row), kWideRadius, 1);
 }
 
 void main() {
@@ -80,7 +97,16 @@ void main() {
     GpuLightView view = lightViews[viewIndex];
     GpuLight light = lights[view.info.x];
     uint first = viewIndex * kImportanceTexels + row * kImportanceSize;
-    // Each texel's base and importance, computed once (the filters read 194 hits a texel).
+    if (params.weights.x > 0.0) {
+        for (uint c = 0u; c < kImportanceSize; ++c) {
+            importanceRows[first + c] = vec2(filterRow(viewIndex, int(c), row, kSharpRadius),
+                                             filterRow(viewIndex, int(c), row, kWideRadius));
+        }
+    }
+    // Every row's filtered hits are in before any column is read (one workgroup per view).
+    memoryBarrierBuffer();
+    barrier();
+    // Each texel's base and importance, computed once.
     float base[kImportanceSize];
     float importance[kImportanceSize];
     float rowBase = 0.0;

@@ -27,6 +27,9 @@ ISPM_CONST uint kImportanceGroupSize = 64u;
 // the rows at [views * texels + v * size + row] (inclusive, last 1).
 ISPM_CONST int kBindingImportanceHits = 15;
 ISPM_CONST int kBindingImportanceCdf = 16;
+// The CDF build's scratch: per view and texel, the gathered importance filtered along its row by
+// the two tents (vec2, sharp and wide; the columns' pass of the separable filters reads them).
+ISPM_CONST int kBindingImportanceRows = 30;
 // Image unit of the emission pdf per map texel (relative to uniform: 1), for the viewer.
 ISPM_CONST int kImageImportancePdf = 0;
 
