@@ -52,16 +52,16 @@ void addLitPoint(vec3 p, vec3 n, float weight) {
         if (clip.w <= 0.0) continue;
         vec2 ndc = clip.xy / clip.w;
         if (any(greaterThan(abs(ndc), vec2(1.0)))) continue;
-        // The direct pass's test, but for the lights of perspective views with shadow rays: their
-        // view (drawn to emit photons) is as good a shadow map for aiming them and costs no ray.
-        // A sun's is not: its fine view is not drawn, and the fitted one's texels are too coarse
-        // for a room lit through its door (room relMSE median 0.050 -> 0.073 by that view).
+        // The direct pass's shadow maps, also with shadow rays for the lights whose view is drawn
+        // to emit photons (a spot's, a point light's: no ray needed to aim them); a sun's fine view
+        // is not drawn then and its fitted one is too coarse for a room lit through its door (room
+        // relMSE median 0.050 -> 0.073 by that view), so suns take a ray.
 #if SHADOW_RAYS
-        if (light.views.z == kLightSun ? computeRayVisibility(p, facing, s, params.weights.w) < 0.5
-                                       : computeViewVisibility(view, p, facing) < 0.5) continue;
-#else
-        if (computeVisibility(light, p, facing) < 0.5) continue;
+        if (light.views.z == kLightSun) {
+            if (computeRayVisibility(p, facing, s, params.weights.w) < 0.5) continue;
+        } else
 #endif
+        if (computeVisibility(light, p, facing) < 0.5) continue;
         addImportance(view, ndc * 0.5 + 0.5, weight);
     }
 }

@@ -72,8 +72,8 @@ uint selectShadowView(GpuLight light, vec3 positionW) {
     return selectLightView(light, positionW);
 }
 
-// Whether light view `viewIndex` sees (positionW, normalW): the depth test against its G-buffer.
-float computeViewVisibility(uint viewIndex, vec3 positionW, vec3 normalW) {
+float computeVisibility(GpuLight light, vec3 positionW, vec3 normalW) {
+    uint viewIndex = selectShadowView(light, positionW);
     GpuLightView view = lightViews[viewIndex];
     vec3 axis = view.axisTexel.xyz;
     // Only suns look through orthographic views.
@@ -97,8 +97,4 @@ float computeViewVisibility(uint viewIndex, vec3 positionW, vec3 normalW) {
     float occluderDepth = dot(occluder.xyz - view.originAxis.xyz, axis);
     float receiverDepth = dot(p - view.originAxis.xyz, axis);
     return receiverDepth <= occluderDepth + biasM ? 1.0 : 0.0;
-}
-
-float computeVisibility(GpuLight light, vec3 positionW, vec3 normalW) {
-    return computeViewVisibility(selectShadowView(light, positionW), positionW, normalW);
 }

@@ -51,6 +51,8 @@ constexpr const char* kRoomScene = R"({
 
 constexpr int kSizePx = 24;
 constexpr int kReferenceSpp = 16;
+const std::string kSize =
+    " --width " + std::to_string(kSizePx) + " --height " + std::to_string(kSizePx);
 // Small light cameras: the default 1024^2 faces would dominate every frame on llvmpipe.
 constexpr const char* kSmallLights = " --set shadow_map_size=64";
 constexpr const char* kTinySweep = " --sweep photons=2000,4000 --sweep radius_scale=1,2"
@@ -120,6 +122,13 @@ class BenchSweepTest : public ::testing::Test {
     }
     void TearDown() override { std::filesystem::remove_all(mDir); }
 
+    // `render --mode reference` of the room at kSizePx and kReferenceSpp, plus `extra`, to `path`.
+    RunResult renderReference(const std::string& path, const std::string& extra) {
+        return runIspm("render " + mScene + " --mode reference --spp " +
+                           std::to_string(kReferenceSpp) + extra + kSize + " -o " + path,
+                       true);
+    }
+
     // One line, naming `fragment`, exit 2.
     void expectBadInput(const std::string& args, const std::string& fragment) {
         const RunResult r = runIspm("bench " + args, true);
@@ -135,15 +144,11 @@ class BenchSweepTest : public ::testing::Test {
 
 TEST_F(BenchSweepTest, TinySweepWritesCsvWithExpectedRowsAndPngChart) {
     const std::string reference = (mDir / "reference.pfm").string();
-    const std::string size =
-        " --width " + std::to_string(kSizePx) + " --height " + std::to_string(kSizePx);
-    const RunResult render = runIspm("render " + mScene + " --mode reference --spp " +
-                                         std::to_string(kReferenceSpp) + size + " -o " + reference,
-                                     true);
+    const RunResult render = renderReference(reference, "");
     ASSERT_EQ(render.exitCode, 0) << render.output;
 
     const std::string csvPath = (mDir / "sweep.csv").string();
-    const RunResult sweep = runIspm("bench " + mScene + size + kSmallLights + " --reference " +
+    const RunResult sweep = runIspm("bench " + mScene + kSize + kSmallLights + " --reference " +
                                         reference + kTinySweep + " --csv " + csvPath,
                                     false);
     ASSERT_EQ(sweep.exitCode, 0) << sweep.output;
@@ -217,15 +222,11 @@ TEST_F(BenchSweepTest, TracerCurveDrawsOtherSamplesThanTheReference) {
     // against 3 s^2 / R at R/2 (each image's variance plus the reference's): a ratio of 2/3. Had
     // it drawn the reference's own samples, the image at R would be the reference: error 0.
     const std::string reference = (mDir / "reference.pfm").string();
-    const std::string size =
-        " --width " + std::to_string(kSizePx) + " --height " + std::to_string(kSizePx);
-    const RunResult render = runIspm("render " + mScene + " --mode reference --bounces 3 --spp " +
-                                         std::to_string(kReferenceSpp) + size + " -o " + reference,
-                                     true);
+    const RunResult render = renderReference(reference, " --bounces 3");
     ASSERT_EQ(render.exitCode, 0) << render.output;
     const std::string csvPath = (mDir / "sweep.csv").string();
     const RunResult sweep =
-        runIspm("bench " + mScene + size + kSmallLights + " --reference " + reference +
+        runIspm("bench " + mScene + kSize + kSmallLights + " --reference " + reference +
                     " --sweep photons=2000 --frames 1 --warmup 0 --reference-spp-max " +
                     std::to_string(kReferenceSpp) + " --csv " + csvPath,
                 false);
@@ -247,15 +248,10 @@ TEST_F(BenchSweepTest, TracerCurveDrawsOtherSamplesThanTheReference) {
 TEST_F(BenchSweepTest, ConvergeScriptWritesRowsAndChart) {
     // tools/converge.sh renders --accumulate N for each N against a reference's indirect light;
     // tools/plot_converge.py draws the rows.
-    const std::string size =
-        " --width " + std::to_string(kSizePx) + " --height " + std::to_string(kSizePx);
     const std::string ref3 = (mDir / "ref3.pfm").string();
     const std::string ref0 = (mDir / "ref0.pfm").string();
     for (const auto& [path, bounces] : {std::pair{ref3, 3}, std::pair{ref0, 0}}) {
-        const RunResult r = runIspm("render " + mScene + " --mode reference --spp " +
-                                        std::to_string(kReferenceSpp) + " --bounces " +
-                                        std::to_string(bounces) + size + " -o " + path,
-                                    true);
+        const RunResult r = renderReference(path, " --bounces " + std::to_string(bounces));
         ASSERT_EQ(r.exitCode, 0) << r.output;
     }
     const std::filesystem::path tools =
@@ -307,22 +303,20 @@ TEST_F(BenchSweepTest, BadInputsExitTwoWithOneLine) {
     const std::string reference = (mDir / "reference.pfm").string();
     writeImage(reference, Image(kSizePx, kSizePx, glm::vec3(1.0f)));
     const std::string csv = " --csv " + (mDir / "out.csv").string();
-    const std::string size =
-        " --width " + std::to_string(kSizePx) + " --height " + std::to_string(kSizePx);
     expectBadInput(mScene + " --width 32 --height 32 --reference " + reference +
                        " --sweep photons=1000" + csv,
                    "24x24");
-    expectBadInput(mScene + size + " --reference " + reference + " --sweep width=24,32" + csv,
+    expectBadInput(mScene + kSize + " --reference " + reference + " --sweep width=24,32" + csv,
                    "--sweep width");
-    expectBadInput(mScene + size + " --reference " + reference + " --sweep photon=1000" + csv,
+    expectBadInput(mScene + kSize + " --reference " + reference + " --sweep photon=1000" + csv,
                    "unknown setting 'photon'");
-    expectBadInput(mScene + size + " --reference " + reference + " --sweep photons=1000,-5" + csv,
+    expectBadInput(mScene + kSize + " --reference " + reference + " --sweep photons=1000,-5" + csv,
                    "photons");
-    expectBadInput(mScene + size + " --reference " + (mDir / "missing.pfm").string() +
+    expectBadInput(mScene + kSize + " --reference " + (mDir / "missing.pfm").string() +
                        " --sweep photons=1000" + csv,
                    "missing.pfm");
-    expectBadInput(mScene + size + " --sweep photons=1000" + csv, "--reference");
-    expectBadInput(mScene + size + " --reference " + reference + " --sweep photons=1000" + csv +
+    expectBadInput(mScene + kSize + " --sweep photons=1000" + csv, "--reference");
+    expectBadInput(mScene + kSize + " --reference " + reference + " --sweep photons=1000" + csv +
                        " --reference-spp-max 0",
                    "--reference-spp-max");
     EXPECT_FALSE(std::filesystem::exists(mDir / "out.csv")) << "bad input must not write a CSV";
