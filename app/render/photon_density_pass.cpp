@@ -55,20 +55,35 @@ void PhotonDensityPass::setTravelRadii(const FrameInputs& inputs, glm::uvec4 sli
     gpu::DensityParams params{};
     params.control = glm::uvec4(gpu::kDensityStageTravelCull, 0, 0, inputs.settings.radiusMode);
     params.travel = glm::vec4(r.radiusMinM, r.radiusMaxM, r.distMinM, r.distMaxM);
+    params.scales = glm::vec4(1.0f, inputs.scene.getRayEpsilon(), 0.0f, 0.0f);
     params.slice = slice;
     mParams.upload(0, sizeof(params), &params);
-    // This stage reads neither the table nor the scene and writes no clip lines.
+    // This stage reads no table; with splat_clip it clips the discs in view against the scene.
     mBuffers.bind();
+    if (inputs.settings.splatClip) {
+        reserveClip();
+        inputs.scene.bind();
+        mClip.bindBase(gl::BufferTarget::Storage, gpu::kBindingSplatClip);
+    }
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
     mParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
-    useStage(gpu::kDensityStageTravelCull);
+    useStage(gpu::kDensityStageTravelCull, inputs.settings.splatClip);
     dispatch(slice);
     // The splat's vertex stage reads the radii.
     gl::memoryBarrier(gl::Barrier::Storage);
 }
 
-void PhotonDensityPass::useStage(uint32_t stage) {
-    mPrograms.get({"DENSITY_STAGE " + std::to_string(stage) + "u"}).use();
+void PhotonDensityPass::useStage(uint32_t stage, bool clipDiscs) {
+    mPrograms
+        .get({"DENSITY_STAGE " + std::to_string(stage) + "u",
+              clipDiscs ? "CLIP_DISCS 1" : "CLIP_DISCS 0"})
+        .use();
+}
+
+void PhotonDensityPass::reserveClip() {
+    const size_t bytes =
+        size_t(std::max(mBuffers.getResultCapacity(), 1u)) * gpu::kClipVec4s * sizeof(glm::vec4);
+    if (mClip.getSize() != bytes) mClip = gl::Buffer("splat clip distances", bytes);
 }
 
 void PhotonDensityPass::dispatch(glm::uvec4 slice) const {
@@ -108,9 +123,7 @@ void PhotonDensityPass::executeSlice(const FrameInputs& inputs, uint32_t stage, 
     const size_t cellBytes = mCausticOffset + gpu::kSplatDrawUvec4s * sizeof(glm::uvec4) +
                              size_t(std::max(mBuffers.getResultCapacity(), 1u)) * sizeof(uint32_t);
     if (cellBytes != mCells.getSize()) mCells = gl::Buffer("photon density cells", cellBytes);
-    const size_t clipBytes =
-        size_t(std::max(mBuffers.getResultCapacity(), 1u)) * gpu::kClipVec4s * sizeof(glm::vec4);
-    if (mClip.getSize() != clipBytes) mClip = gl::Buffer("splat clip distances", clipBytes);
+    if (inputs.settings.splatClip) reserveClip();
     if (stage == 0 && slice == 0) {
         mCells.clearToZero();
         const glm::uvec4 draw[gpu::kSplatDrawUvec4s] = {
@@ -144,8 +157,9 @@ void PhotonDensityPass::executeSlice(const FrameInputs& inputs, uint32_t stage, 
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
     mParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
     mCells.bindBase(gl::BufferTarget::Storage, gpu::kBindingDensityCells);
-    mClip.bindBase(gl::BufferTarget::Storage, gpu::kBindingSplatClip);
-    useStage(params.control.x);
+    if (inputs.settings.splatClip)
+        mClip.bindBase(gl::BufferTarget::Storage, gpu::kBindingSplatClip);
+    useStage(params.control.x, inputs.settings.splatClip);
     // The block is written anew for every dispatch (the GL orders the update after the
     // dispatch before it that read the last one).
     dispatch(sliceParams);

@@ -31,7 +31,8 @@ class PhotonDensityPass final : public Pass {
     // stage's slices in order.
     void executeSlice(const FrameInputs& inputs, uint32_t stage, uint32_t slice, uint32_t slices);
     void reloadPrograms(ShaderReloadReport& report) override { mPrograms.reloadIfChanged(report); }
-    // Per result photon: its disc's clip lines and box extents (shared/splat_clip.h).
+    // Per result photon: its disc's clip lines and box extents (shared/splat_clip.h), written
+    // with splat_clip.
     const gl::Buffer& getClip() const { return mClip; }
     // The caustic photons in view (radius_mode density), at getCausticOffset() bytes into this
     // buffer (after the table): an indexed draw command whose instance count the radius stage
@@ -48,9 +49,11 @@ class PhotonDensityPass final : public Pass {
     void dispatch(glm::uvec4 slice) const;
 
     PhotonBuffers& mBuffers;
-    ProgramVariants mPrograms; // one per stage (DENSITY_STAGE)
-    void useStage(uint32_t stage);
-    gl::Buffer mParams; // gpu::DensityParams
+    void useStage(uint32_t stage, bool clipDiscs);
+    void reserveClip(); // mClip, one entry per result photon
+
+    ProgramVariants mPrograms; // by stage (DENSITY_STAGE) and CLIP_DISCS
+    gl::Buffer mParams;        // gpu::DensityParams
     gl::Buffer mCells;
     gl::Buffer mClip;
     size_t mCausticOffset = 0;

@@ -150,7 +150,7 @@ void SplatPass::executeGather(const FrameInputs& inputs) {
     if (mTiles.getSize() < tileBytes) mTiles = gl::Buffer("gather tiles", tileBytes);
     mTiles.clearToZero();
     gpu::GatherParams params{
-        .tiles = glm::uvec4(tilesX, tilesY, tilesX * tilesY, inputs.settings.radiusMode),
+        .tiles = glm::uvec4(tilesX, tilesY, tilesX * tilesY, inputs.settings.splatClip ? 1u : 0u),
         .splat = glm::uvec4(size.x, size.y, inputs.settings.splatDivisor,
                             separatesCaustics(inputs.settings) ? gpu::kSplatDiffusePhotons
                                                                : gpu::kSplatAllPhotons),
@@ -208,7 +208,7 @@ void SplatPass::uploadParams(const FrameInputs& inputs) {
     for (uint32_t p = 0; p <= draws; ++p) {
         const bool caustic = p == draws; // at the image's resolution, its photons from the list
         params[p].control =
-            glm::uvec4(inputs.settings.radiusMode, inputs.settings.splatShape, p, draws);
+            glm::uvec4(inputs.settings.splatClip ? 1u : 0u, inputs.settings.splatShape, p, draws);
         params[p].shape =
             glm::vec4(inputs.settings.squash, caustic ? 1.0f : float(inputs.settings.splatDivisor),
                       0.0f, 0.0f);
@@ -226,8 +226,7 @@ void SplatPass::bindRaster(const FrameInputs& inputs) {
     const bool isBox = inputs.settings.splatShape == gpu::kSplatShapeBox;
     gl::applyState({.blend = gl::Blend::Additive, .cull = isBox ? gl::Cull::Front : gl::Cull::Off});
     std::vector<std::string> defines = inputs.scene.getSurfaceDefines();
-    defines.push_back(inputs.settings.radiusMode == gpu::kRadiusDensity ? "SPLAT_CLIP_LINES 1"
-                                                                        : "SPLAT_CLIP_LINES 0");
+    defines.push_back(inputs.settings.splatClip ? "SPLAT_CLIP_LINES 1" : "SPLAT_CLIP_LINES 0");
     mPrograms.get(defines).use();
     (isBox ? mCubeVertexArray : mDiscVertexArray).bind();
     mBuffers.bind();

@@ -116,6 +116,13 @@ glm::ivec2 computeSplatSize(const Settings& settings, int width, int height) {
     return {(width + divisor - 1) / divisor, (height + divisor - 1) / divisor};
 }
 
+bool computeSplatClip(const Settings& settings) {
+    // Choices "auto", "on", "off": auto clips the density radii's discs, not the travel modes'.
+    const uint32_t choice = getChoice(settings, "splat_clip");
+    if (choice == 0) return getChoice(settings, "radius_mode") == gpu::kRadiusDensity;
+    return choice == 1;
+}
+
 int computeShadowMapSize(const Settings& settings) {
     if (settings.isSet("shadow_map_size")) return settings.getInt("shadow_map_size");
     if (getChoice(settings, "shadows") != gpu::kShadowsRay) return kShadowMapTexels;
@@ -166,6 +173,7 @@ FrameSettings resolveFrameSettings(const Settings& settings) {
     f.splatPasses = settings.getInt("splat_passes");
     f.splatShape = getChoice(settings, "splat_shape");
     f.splatMode = getChoice(settings, "splat_mode");
+    f.splatClip = computeSplatClip(settings);
     f.splatDivisor = computeSplatDivisor(settings, f.width, f.height);
     f.splatSize = computeSplatSize(settings, f.width, f.height);
     f.denoiseIterations = computeDenoiseIterations(settings, f.splatSize.x, f.splatSize.y);

@@ -29,6 +29,7 @@ inline constexpr std::array<std::string_view, 2> kSplatModeChoices = {"raster", 
 inline constexpr std::array<std::string_view, 2> kShadowChoices = {"map", "ray"};
 inline constexpr std::array<std::string_view, 4> kSplatResolutionChoices = {"auto", "1", "1/2",
                                                                             "1/4"};
+inline constexpr std::array<std::string_view, 3> kSplatClipChoices = {"auto", "on", "off"};
 
 struct FrameSettings {
     int width = 0;  // px
@@ -70,6 +71,7 @@ struct FrameSettings {
     int splatPasses = 1;
     uint32_t splatShape = 0;   // gpu::kSplatShape*
     uint32_t splatMode = 0;    // gpu::kSplatMode*
+    bool splatClip = false;    // discs cut at the surfaces their plane meets (clip lines)
     int splatDivisor = 1;      // image pixels per splat-buffer pixel along an axis (1, 2, 4)
     glm::ivec2 splatSize{0};   // the splat buffer: the image divided, rounded up
     int denoiseIterations = 0; // derived from the splat buffer's size
@@ -98,5 +100,6 @@ int computeSplatDivisor(const Settings& settings, int width, int height);
 glm::ivec2 computeSplatSize(const Settings& settings, int width, int height);
 int computeDenoiseIterations(const Settings& settings, int width, int height);
 int computeShadowMapSize(const Settings& settings);
+bool computeSplatClip(const Settings& settings);
 
 } // namespace ispm

@@ -7,8 +7,8 @@
 
 #ifndef ISPM_SPLAT_WEIGHT_ONLY
 // The splat of result photon `id`: its radius (photon.power.w, set by the density pass; 0 when
-// its disc cannot reach the view), extents along +t, -t, +b, -b (the radius, or with density
-// radii cut to the clip lines across the basis axes) and clip lines (the nonzero poles first).
+// its disc cannot reach the view), extents along +t, -t, +b, -b (the radius, or with clip lines
+// (splat_clip) cut to the lines across the basis axes) and clip lines (the nonzero poles first).
 struct SplatShape {
     float radius;
     vec4 extent;
@@ -16,13 +16,13 @@ struct SplatShape {
     vec2 poles[kClipRays];
 };
 
-SplatShape loadSplatShape(uint id, uint radiusMode) {
+SplatShape loadSplatShape(uint id, uint clipLines) {
     SplatShape s;
     s.radius = photons[id].power.w;
     s.extent = vec4(s.radius);
     s.lines = 0u;
     for (uint i = 0u; i < kClipRays; ++i) s.poles[i] = vec2(0.0);
-    if (radiusMode == kRadiusDensity && s.radius > 0.0) {
+    if (clipLines != 0u && s.radius > 0.0) {
         s.extent = splatClip[id * kClipVec4s + kClipRays / 2u];
         for (uint i = 0u; i < kClipRays / 2u; ++i) {
             vec4 two = splatClip[id * kClipVec4s + i];
@@ -59,8 +59,8 @@ float computeSplatKernel(vec4 centre, vec3 pn, vec3 tangent, vec3 bitangent, flo
 // point lies beyond a clip line. Gather-style renormalisation: the pixel's own disc (radius r,
 // centred on it) is cut by the same lines; dividing by the part of it that lies on the surface
 // keeps a uniform irradiance uniform up to the wall, and the photon's power on the surfaces it
-// reached. Without lines the kept mass is 1: splat.frag's variant for the radius modes that
-// clip nothing (SPLAT_CLIP_LINES 0) calls computeSplatKernel alone, since llvmpipe runs this
+// reached. Without lines the kept mass is 1: splat.frag's variant for discs without clip lines
+// (splat_clip off, SPLAT_CLIP_LINES 0) calls computeSplatKernel alone, since llvmpipe runs this
 // loop's body once even for no line.
 float computeSplatWeight(vec4 centre, vec3 pn, vec3 tangent, vec3 bitangent, uint lines,
                          vec2 poles[kClipRays], float squash, vec3 position, vec3 n) {

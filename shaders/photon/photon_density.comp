@@ -14,8 +14,9 @@
 // 0 where that disc cannot reach the view, and counts the others in view.
 //
 // Stage 1 also culls photons whose disc lies outside the view frustum (radius 0: the splat skips
-// them) and finds the lines where surfaces cut each disc (shared/splat_clip.h): the in-plane
-// rays of the clip, met against the triangles of one BVH box query around the disc.
+// them). With CLIP_DISCS 1 (splat_clip) stage 1 or 2 finds the lines where surfaces cut each
+// disc in view (shared/splat_clip.h): the in-plane rays of the clip, met against the triangles
+// of one BVH box query around the disc.
 #include "lib/constants.glsl"
 #define ISPM_BVH_BOX_VISITOR
 #include "lib/scene_buffers.glsl"
@@ -45,6 +46,7 @@ layout(std140, binding = kBindingPassParams) uniform DensityParamsBlock { Densit
 // no stage pays for another's code, which llvmpipe would run under a mask (it runs both sides
 // of every branch, and every loop at least once).
 const uint kStage = DENSITY_STAGE;
+const bool kClipDiscs = CLIP_DISCS != 0;
 
 // The clip rays run this far above the surface, as a fraction of the radius: steps lower than
 // that do not clip a disc, walls do.
@@ -340,6 +342,7 @@ void setTravelRadius(uint index) {
     }
     countPhoton(unpackLight(photons[index].incoming.w), 2);
     photons[index].power.w = radius;
+    if (kClipDiscs) clipDisc(index, photons[index].positionDistance.xyz, photons[index].normalDensity.xyz, radius);
 }
 
 void main() {
@@ -403,5 +406,5 @@ void main() {
     countPhoton(unpackLight(photons[index].incoming.w), 2);
     photons[index].power.w = radius;
     if (isCausticPhoton(photons[index].normalDensity.w)) appendCausticPhoton(index);
-    clipDisc(index, p, photons[index].normalDensity.xyz, radius);
+    if (kClipDiscs) clipDisc(index, p, photons[index].normalDensity.xyz, radius);
 }

@@ -33,7 +33,7 @@ ISPM_STATIC_ASSERT_SIZE(GatherTile, 16);
 // Parameters of gather_bin.comp, gather_scan.comp and gather.comp (std140, at
 // kBindingPassParams).
 struct GatherParams {
-    uvec4 tiles; // x = tiles across, y = tiles down, z = tile count, w = radius mode (kRadius*)
+    uvec4 tiles; // x = tiles across, y = tiles down, z = tile count, w = 1: clip lines (splat_clip)
     uvec4 splat; // x, y = splat buffer size (px), z = image pixels per buffer pixel, w = which
                  // photons it takes (kSplat*Photons, shared/photon_data.h)
     vec4 shape;  // x = squash (thickness along the normal / radius), yzw unused

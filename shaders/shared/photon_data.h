@@ -170,8 +170,8 @@ ISPM_STATIC_ASSERT_SIZE(EmitParams, 32);
 // Parameters of the splat pass, splat.vert and splat.frag (std140, at kBindingPassParams); one
 // block per splat_passes draw, bound by range.
 struct SplatParams {
-    uvec4 control; // x = radius mode (kRadius*), y = shape (kSplatShape*), z = this draw,
-                   // w = draw count
+    uvec4 control; // x = 1: the discs have clip lines (splat_clip), y = shape (kSplatShape*), z =
+                   // this draw, w = draw count
     vec4 shape;    // x = squash (thickness along the normal / radius), y = image pixels per
                    // splat-buffer pixel along an axis, zw unused
     uvec4 photons; // x = which photons the draw takes (kSplat*Photons), yzw unused

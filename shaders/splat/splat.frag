@@ -21,7 +21,7 @@ flat in vec3 vTangent;
 flat in vec3 vBitangent;
 flat in vec3 vPower;
 flat in vec3 vIncoming;
-#if SPLAT_CLIP_LINES // radius_mode density (SplatPass)
+#if SPLAT_CLIP_LINES // splat_clip (SplatPass)
 flat in uint vLines;
 flat in vec2 vPoles[kClipRays];
 #endif

@@ -27,7 +27,7 @@ flat out vec3 vTangent;  // the splat basis (buildSplatBasis)
 flat out vec3 vBitangent;
 flat out vec3 vPower;    // W
 flat out vec3 vIncoming; // the direction the photon arrived along
-#if SPLAT_CLIP_LINES // radius_mode density (SplatPass)
+#if SPLAT_CLIP_LINES // splat_clip (SplatPass)
 flat out uint vLines;    // clip lines in vPoles (the nonzero poles first)
 flat out vec2 vPoles[kClipRays];
 #endif
@@ -48,7 +48,7 @@ void main() {
     vec3 b;
     buildSplatBasis(n, t, b);
     // Every radius mode's radius, from the density pass; 0 for a photon whose disc cannot reach
-    // the view: it collapses to a point and draws nothing. Density radii come with clip lines:
+    // the view: it collapses to a point and draws nothing. With splat_clip discs come with clip lines:
     // the box or square shrinks to the lines across the basis axes (a box scene's walls), and
     // the fragment stage drops what lies beyond any line.
     SplatShape shape = loadSplatShape(id, params.control.x);

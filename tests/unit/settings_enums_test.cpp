@@ -1,5 +1,6 @@
 // The enumerated settings' choices, in table order, are the uint constants the shaders compare
 // against (shared/*.h): a choice added or moved in one place and not the other fails here.
+#include "scene/frame_settings.h"
 #include "scene/settings.h"
 
 #include <shared/light_trace_data.h>
@@ -41,6 +42,24 @@ TEST(SettingsEnums, ChoicesMatchTheShaderConstants) {
     expectChoices("tonemap", {{"thesis", gpu::kTonemapThesis},
                               {"filmic", gpu::kTonemapFilmic},
                               {"linear", gpu::kTonemapLinear}});
+}
+
+// splat_clip auto clips the density radii's discs and draws the travel modes' whole (the thesis's,
+// and cheaper: no box query per photon); on and off hold for every radius mode.
+TEST(SettingsEnums, SplatClipFollowsTheRadiusModeUnlessSet) {
+    const auto resolve = [](std::string_view mode, std::string_view clip) {
+        Settings s;
+        s.setEnum("radius_mode", mode, "test");
+        s.setEnum("splat_clip", clip, "test");
+        return resolveFrameSettings(s).splatClip;
+    };
+    EXPECT_TRUE(resolve("density", "auto"));
+    EXPECT_FALSE(resolve("travel", "auto"));
+    EXPECT_FALSE(resolve("path_density", "auto"));
+    for (std::string_view mode : {"travel", "path_density", "density"}) {
+        EXPECT_TRUE(resolve(mode, "on")) << mode;
+        EXPECT_FALSE(resolve(mode, "off")) << mode;
+    }
 }
 
 } // namespace
