@@ -20,7 +20,7 @@ LABEL_OFFSET_PT = (5, 4)  # photon-count labels sit just above and right of thei
 REQUIRED_COLUMNS = ("kind", "spp", "photons", "total_ms", "relmse_total")
 # Choice settings a sweep may vary: each combination of their values is a series of its own.
 MODE_COLUMNS = ("radius_mode", "splat_mode", "splat_shape", "splat_resolution", "radius_scale",
-                "shadows", "edge_samples")
+                "importance", "shadows", "edge_samples")
 # Modes drawn by a marker's look instead of its colour, so that the colours stay few: points that
 # differ only in them share colour and marker. Fill: the first value filled, the others hollow.
 FILL_COLUMN = "shadows"
@@ -43,6 +43,12 @@ def read_rows(path):
     if not ispm and not reference:
         fail(f"{path}: no ispm or reference rows")
     return ispm, reference
+
+
+def series_marker(i):
+    """Marker of series i: with more series than colours, a series that repeats a colour takes
+    the next marker, so that no two series look alike."""
+    return (i + i // len(SERIES_COLOURS)) % len(SERIES_MARKERS)
 
 
 def compute_pareto_front(points):
@@ -100,11 +106,12 @@ def main():
         for key, group in groups.items():
             i = styles[key[0]]
             colour = SERIES_COLOURS[i % len(SERIES_COLOURS)]
+            marker = SERIES_MARKERS[series_marker(i)]
             filled = channel_index(FILL_COLUMN, key) == 0
             area = MARKER_SIZES_PT2[min(channel_index(SIZE_COLUMN, key), len(MARKER_SIZES_PT2) - 1)]
             width = EDGE_WIDTHS_PT[min(channel_index(WIDTH_COLUMN, key), len(EDGE_WIDTHS_PT) - 1)]
             ax.scatter([p[0] for p in group], [p[1] for p in group], zorder=3, s=area,
-                       marker=SERIES_MARKERS[i % len(SERIES_MARKERS)], linewidths=width,
+                       marker=marker, linewidths=width,
                        facecolors=colour if filled else "none", edgecolors=colour)
             for time_ms, error, photons in group:
                 ax.annotate(f"{int(float(photons)):,}", (time_ms, error),
@@ -112,7 +119,7 @@ def main():
                             color=colour)
         # The legend names each style once, then what each channel's looks mean.
         for style, i in styles.items():
-            ax.scatter([], [], marker=SERIES_MARKERS[i % len(SERIES_MARKERS)],
+            ax.scatter([], [], marker=SERIES_MARKERS[series_marker(i)],
                        color=SERIES_COLOURS[i % len(SERIES_COLOURS)],
                        label=f"{style or 'ispm configurations'} (median frame time)")
         for c in channels:
