@@ -58,8 +58,11 @@ void PhotonDensityPass::setTravelRadii(const FrameInputs& inputs, glm::uvec4 sli
     params.scales = glm::vec4(1.0f, inputs.scene.getRayEpsilon(), 0.0f, 0.0f);
     params.slice = slice;
     mParams.upload(0, sizeof(params), &params);
-    // This stage reads no table; with splat_clip it clips the discs in view against the scene.
+    // This stage reads no table but the lights' sums (widen_strong); with splat_clip it clips the
+    // discs in view against the scene.
     mBuffers.bind();
+    if (inputs.settings.widenStrong)
+        mCells.bindBase(gl::BufferTarget::Storage, gpu::kBindingDensityCells);
     if (inputs.settings.splatClip) {
         reserveClip();
         inputs.scene.bind();
@@ -67,16 +70,37 @@ void PhotonDensityPass::setTravelRadii(const FrameInputs& inputs, glm::uvec4 sli
     }
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
     mParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
-    useStage(gpu::kDensityStageTravelCull, inputs.settings.splatClip);
+    useStage(gpu::kDensityStageTravelCull, inputs.settings);
     dispatch(slice);
     // The splat's vertex stage reads the radii.
     gl::memoryBarrier(gl::Barrier::Storage);
 }
 
-void PhotonDensityPass::useStage(uint32_t stage, bool clipDiscs) {
+void PhotonDensityPass::sumLightPower(const FrameInputs& inputs, glm::uvec4 slice) {
+    // Per light: its stored photons and their power (photon_density.comp's addLightPower).
+    const size_t bytes = size_t(std::max(inputs.scene.getLightCount(), 1u)) * 2 * sizeof(uint32_t);
+    if (mCells.getSize() != bytes) mCells = gl::Buffer("photon power per light", bytes);
+    if (slice.x == 0) mCells.clearToZero();
+    gpu::DensityParams params{};
+    params.control = glm::uvec4(gpu::kDensityStageTravelPower, 0, 0, inputs.settings.radiusMode);
+    params.slice = slice;
+    mParams.upload(0, sizeof(params), &params);
+    mBuffers.bind();
+    mCells.bindBase(gl::BufferTarget::Storage, gpu::kBindingDensityCells);
+    inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
+    mParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
+    useStage(gpu::kDensityStageTravelPower, inputs.settings);
+    dispatch(slice);
+    // The cull stage reads every light's sums.
+    gl::memoryBarrier(gl::Barrier::Storage);
+}
+
+void PhotonDensityPass::useStage(uint32_t stage, const FrameSettings& settings) {
+    const bool widen = settings.widenStrong && settings.radiusMode != gpu::kRadiusDensity;
     mPrograms
         .get({"DENSITY_STAGE " + std::to_string(stage) + "u",
-              clipDiscs ? "CLIP_DISCS 1" : "CLIP_DISCS 0"})
+              settings.splatClip ? "CLIP_DISCS 1" : "CLIP_DISCS 0",
+              widen ? "WIDEN_STRONG 1" : "WIDEN_STRONG 0"})
         .use();
 }
 
@@ -98,7 +122,8 @@ void PhotonDensityPass::dispatch(glm::uvec4 slice) const {
 }
 
 uint32_t PhotonDensityPass::getStageCount(const FrameSettings& settings) {
-    return settings.radiusMode == gpu::kRadiusDensity ? 2u : 1u;
+    if (settings.radiusMode == gpu::kRadiusDensity) return 2u;
+    return settings.widenStrong ? 2u : 1u;
 }
 
 void PhotonDensityPass::execute(const FrameInputs& inputs) {
@@ -112,7 +137,10 @@ void PhotonDensityPass::executeSlice(const FrameInputs& inputs, uint32_t stage, 
            slices <= gpu::kMaxComputeSlices);
     const glm::uvec4 sliceParams(slice, slices, 0u, 0u);
     if (inputs.settings.radiusMode != gpu::kRadiusDensity) {
-        setTravelRadii(inputs, sliceParams);
+        if (stage + 1 < getStageCount(inputs.settings))
+            sumLightPower(inputs, sliceParams);
+        else
+            setTravelRadii(inputs, sliceParams);
         return;
     }
     const uint32_t slots =
@@ -159,7 +187,7 @@ void PhotonDensityPass::executeSlice(const FrameInputs& inputs, uint32_t stage, 
     mCells.bindBase(gl::BufferTarget::Storage, gpu::kBindingDensityCells);
     if (inputs.settings.splatClip)
         mClip.bindBase(gl::BufferTarget::Storage, gpu::kBindingSplatClip);
-    useStage(params.control.x, inputs.settings.splatClip);
+    useStage(params.control.x, inputs.settings);
     // The block is written anew for every dispatch (the GL orders the update after the
     // dispatch before it that read the last one).
     dispatch(sliceParams);

@@ -25,7 +25,8 @@ class PhotonDensityPass final : public Pass {
     const char* getName() const override { return "density"; }
     void execute(const FrameInputs& inputs) override;
     // Stages that each run over every photon before the next: 2 in radius_mode density (count
-    // into the table, then radii), else 1 (travel radii).
+    // into the table, then radii), else 1 (travel radii), 2 with widen_strong (the lights' power
+    // first).
     static uint32_t getStageCount(const FrameSettings& settings);
     // Slice `slice` of `slices` of stage `stage` (a frame drawn in slices); execute() runs every
     // stage's slices in order.
@@ -49,12 +50,14 @@ class PhotonDensityPass final : public Pass {
     void dispatch(glm::uvec4 slice) const;
 
     PhotonBuffers& mBuffers;
-    void useStage(uint32_t stage, bool clipDiscs);
+    // widen_strong: each light's stored photons and power, for setTravelRadii.
+    void sumLightPower(const FrameInputs& inputs, glm::uvec4 slice);
+    void useStage(uint32_t stage, const FrameSettings& settings);
     void reserveClip(); // mClip, one entry per result photon
 
-    ProgramVariants mPrograms; // by stage (DENSITY_STAGE) and CLIP_DISCS
+    ProgramVariants mPrograms; // by stage (DENSITY_STAGE), CLIP_DISCS and WIDEN_STRONG
     gl::Buffer mParams;        // gpu::DensityParams
-    gl::Buffer mCells;
+    gl::Buffer mCells; // the hashed grid (density radii), or the lights' sums (widen_strong)
     gl::Buffer mClip;
     size_t mCausticOffset = 0;
 };

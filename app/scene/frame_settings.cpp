@@ -174,6 +174,7 @@ FrameSettings resolveFrameSettings(const Settings& settings) {
     f.splatShape = getChoice(settings, "splat_shape");
     f.splatMode = getChoice(settings, "splat_mode");
     f.splatClip = computeSplatClip(settings);
+    f.widenStrong = getChoice(settings, "widen_strong") == 1;
     f.splatDivisor = computeSplatDivisor(settings, f.width, f.height);
     f.splatSize = computeSplatSize(settings, f.width, f.height);
     f.denoiseIterations = computeDenoiseIterations(settings, f.splatSize.x, f.splatSize.y);

@@ -30,6 +30,7 @@ inline constexpr std::array<std::string_view, 2> kShadowChoices = {"map", "ray"}
 inline constexpr std::array<std::string_view, 4> kSplatResolutionChoices = {"auto", "1", "1/2",
                                                                             "1/4"};
 inline constexpr std::array<std::string_view, 3> kSplatClipChoices = {"auto", "on", "off"};
+inline constexpr std::array<std::string_view, 2> kWidenStrongChoices = {"off", "on"};
 
 struct FrameSettings {
     int width = 0;  // px
@@ -72,6 +73,7 @@ struct FrameSettings {
     uint32_t splatShape = 0;   // gpu::kSplatShape*
     uint32_t splatMode = 0;    // gpu::kSplatMode*
     bool splatClip = false;    // discs cut at the surfaces their plane meets (clip lines)
+    bool widenStrong = false;  // travel modes: photons stronger than their light's mean widened
     int splatDivisor = 1;      // image pixels per splat-buffer pixel along an axis (1, 2, 4)
     glm::ivec2 splatSize{0};   // the splat buffer: the image divided, rounded up
     int denoiseIterations = 0; // derived from the splat buffer's size

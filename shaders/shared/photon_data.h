@@ -179,10 +179,14 @@ struct SplatParams {
 ISPM_STATIC_ASSERT_SIZE(SplatParams, 48);
 
 // photon_density.comp's stages: count photons into the grid, then radii and clip lines; in the
-// travel modes only the cull (travel radii against the view frustum, in-view counts).
+// travel modes the cull (travel radii against the view frustum, in-view counts), after the sum of
+// each light's photons and power with widen_strong.
 ISPM_CONST uint kDensityStageCount = 0u;
 ISPM_CONST uint kDensityStageRadius = 1u;
 ISPM_CONST uint kDensityStageTravelCull = 2u;
+ISPM_CONST uint kDensityStageTravelPower = 3u;
+// widen_strong: a travel-mode disc at most this many times wider than its travel radius.
+ISPM_CONST float kMaxWidening = 2.0f;
 
 // Parameters of photon_density.comp (std140, at kBindingPassParams).
 struct DensityParams {

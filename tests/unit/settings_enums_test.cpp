@@ -62,5 +62,12 @@ TEST(SettingsEnums, SplatClipFollowsTheRadiusModeUnlessSet) {
     }
 }
 
+TEST(SettingsEnums, WidenStrongIsOffUnlessSet) {
+    Settings s;
+    EXPECT_FALSE(resolveFrameSettings(s).widenStrong);
+    s.setEnum("widen_strong", "on", "test");
+    EXPECT_TRUE(resolveFrameSettings(s).widenStrong);
+}
+
 } // namespace
 } // namespace ispm::test
