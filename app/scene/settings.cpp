@@ -322,16 +322,17 @@ const std::vector<SettingDesc>& table() {
          "inside them, so light neither leaks through a thin wall nor fades at a wall's foot; "
          "auto: on with radius_mode density, off with travel and path_density (the thesis's "
          "whole discs: no query, but through a wall 2 cm thick they leak 29% and 40% of the "
-         "light beside it); on costs about 1 us a photon in view in the density pass and a "
-         "dearer splat on llvmpipe (Cornell box, 25,000 travel discs, 128x128: 143 -> 199 ms)",
+         "light beside it); on costs 1-7 us a photon in view in the density pass (wider discs "
+         "meet more triangles) and a dearer splat on llvmpipe (Cornell box, 25,000 travel discs, "
+         "128x128: 143 -> 199 ms)",
          toChoices(kSplatClipChoices)},
         {"widen_strong", SettingType::Enum, 0, 0, 1, "",
          "radius_mode travel and path_density: a photon stronger than its light's mean this frame "
          "is drawn sqrt(power / mean) times wider (at most 2x), so that it spreads its power "
          "instead of making a bright spot, as the density radii spread a photon stronger than its "
-         "neighbours (importance sampling's floor sends photons up to 1 / (1 - importance) times "
-         "as strong as the aimed ones); weaker photons keep their radius; off = the radii as "
-         "derived",
+         "neighbours (importance sampling's floor sends photons with up to 1 / (1 - importance) "
+         "times the power they would carry unaimed, 4x at the default); weaker photons keep "
+         "their radius; off = the radii as derived",
          toChoices(kWidenStrongChoices)},
         // Post-processing (linear HDR, between compose and tone map): each off by default, and
         // with all three off no post pass runs.

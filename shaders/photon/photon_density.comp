@@ -15,8 +15,8 @@
 // stage 3 runs first and sums each light's stored photons and their power; stage 2 then draws a
 // photon stronger than its light's mean sqrt(power / mean) times wider (at most kMaxWidening),
 // as the density radii spread a photon stronger than its neighbours: importance sampling's floor
-// sends photons up to 1 / (1 - importance) times the aimed ones' power, and a whole disc of that
-// power is a blotch. A weaker photon keeps its radius.
+// sends photons with up to 1 / (1 - importance) times the power they would carry unaimed, and a
+// whole disc of that power is a blotch. A weaker photon keeps its radius.
 //
 // Stage 1 also culls photons whose disc lies outside the view frustum (radius 0: the splat skips
 // them). With CLIP_DISCS 1 (splat_clip) stage 1 or 2 finds the lines where surfaces cut each

@@ -393,7 +393,7 @@ TEST_F(FailureModeTest, FlickerBetweenSeeds) {
 }
 
 // Travel radii under importance sampling (the default share 0.75): photons from the map's floor
-// arrive up to 4x as strong as the aimed ones and splat whole discs of that power, blotches that
+// arrive with up to 4x their unaimed power and splat whole discs of it, blotches that
 // move from seed to seed. widen_strong draws them sqrt(power / mean) times wider (at most 2x).
 TEST_F(FailureModeTest, WideningStrongPhotonsSteadiesTravelRadii) {
     const Scene scene = loadCornell();
