@@ -55,52 +55,47 @@ void PhotonDensityPass::setTravelRadii(const FrameInputs& inputs, glm::uvec4 sli
     gpu::DensityParams params{};
     params.control = glm::uvec4(gpu::kDensityStageTravelCull, 0, 0, inputs.settings.radiusMode);
     params.travel = glm::vec4(r.radiusMinM, r.radiusMaxM, r.distMinM, r.distMaxM);
-    params.scales = glm::vec4(1.0f, inputs.scene.getRayEpsilon(), 0.0f, 0.0f);
+    params.scales = glm::vec4(1.0f, inputs.scene.getRayEpsilon(), 0.0f, 0.0f); // the clip's rays
     params.slice = slice;
+    runTravelStage(inputs, params);
+}
+
+void PhotonDensityPass::sumLightPower(const FrameInputs& inputs, glm::uvec4 slice) {
+    const size_t bytes = size_t(std::max(inputs.scene.getLightCount(), 1u)) * 2 * sizeof(uint32_t);
+    if (mLightPower.getSize() != bytes) mLightPower = gl::Buffer("photon power per light", bytes);
+    if (slice.x == 0) mLightPower.clearToZero();
+    gpu::DensityParams params{};
+    params.control = glm::uvec4(gpu::kDensityStageTravelPower, 0, 0, inputs.settings.radiusMode);
+    params.slice = slice;
+    runTravelStage(inputs, params);
+}
+
+void PhotonDensityPass::runTravelStage(const FrameInputs& inputs,
+                                       const gpu::DensityParams& params) {
     mParams.upload(0, sizeof(params), &params);
-    // This stage reads no table but the lights' sums (widen_strong); with splat_clip it clips the
-    // discs in view against the scene.
+    // No table: the lights' sums with widen_strong, and for the cull with splat_clip the scene,
+    // against which it clips the discs in view.
     mBuffers.bind();
     if (inputs.settings.widenStrong)
-        mCells.bindBase(gl::BufferTarget::Storage, gpu::kBindingDensityCells);
-    if (inputs.settings.splatClip) {
+        mLightPower.bindBase(gl::BufferTarget::Storage, gpu::kBindingDensityCells);
+    if (inputs.settings.splatClip && params.control.x == gpu::kDensityStageTravelCull) {
         reserveClip();
         inputs.scene.bind();
         mClip.bindBase(gl::BufferTarget::Storage, gpu::kBindingSplatClip);
     }
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
     mParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
-    useStage(gpu::kDensityStageTravelCull, inputs.settings);
-    dispatch(slice);
-    // The splat's vertex stage reads the radii.
-    gl::memoryBarrier(gl::Barrier::Storage);
-}
-
-void PhotonDensityPass::sumLightPower(const FrameInputs& inputs, glm::uvec4 slice) {
-    // Per light: its stored photons and their power (photon_density.comp's addLightPower).
-    const size_t bytes = size_t(std::max(inputs.scene.getLightCount(), 1u)) * 2 * sizeof(uint32_t);
-    if (mCells.getSize() != bytes) mCells = gl::Buffer("photon power per light", bytes);
-    if (slice.x == 0) mCells.clearToZero();
-    gpu::DensityParams params{};
-    params.control = glm::uvec4(gpu::kDensityStageTravelPower, 0, 0, inputs.settings.radiusMode);
-    params.slice = slice;
-    mParams.upload(0, sizeof(params), &params);
-    mBuffers.bind();
-    mCells.bindBase(gl::BufferTarget::Storage, gpu::kBindingDensityCells);
-    inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
-    mParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
-    useStage(gpu::kDensityStageTravelPower, inputs.settings);
-    dispatch(slice);
-    // The cull stage reads every light's sums.
+    useStage(params.control.x, inputs.settings);
+    dispatch(params.slice);
+    // The cull stage reads the lights' sums; the splat's vertex stage reads the radii.
     gl::memoryBarrier(gl::Barrier::Storage);
 }
 
 void PhotonDensityPass::useStage(uint32_t stage, const FrameSettings& settings) {
-    const bool widen = settings.widenStrong && settings.radiusMode != gpu::kRadiusDensity;
     mPrograms
         .get({"DENSITY_STAGE " + std::to_string(stage) + "u",
               settings.splatClip ? "CLIP_DISCS 1" : "CLIP_DISCS 0",
-              widen ? "WIDEN_STRONG 1" : "WIDEN_STRONG 0"})
+              settings.widenStrong ? "WIDEN_STRONG 1" : "WIDEN_STRONG 0"})
         .use();
 }
 

@@ -40,7 +40,9 @@ class PhotonDensityPass final : public Pass {
     // sets, then their indices (bound at kBindingCausticList for splat.vert).
     const gl::Buffer& getCausticList() const { return mCells; }
     size_t getCausticOffset() const { return mCausticOffset; }
-    size_t getGpuBytes() const { return mCells.getSize() + mClip.getSize(); }
+    size_t getGpuBytes() const {
+        return mCells.getSize() + mClip.getSize() + mLightPower.getSize();
+    }
 
   private:
     // Travel modes: each photon's travel (or path-density) radius, 0 where its disc cannot
@@ -52,12 +54,15 @@ class PhotonDensityPass final : public Pass {
     PhotonBuffers& mBuffers;
     // widen_strong: each light's stored photons and power, for setTravelRadii.
     void sumLightPower(const FrameInputs& inputs, glm::uvec4 slice);
+    // Uploads `params` and runs its travel stage (params.control.x) over params.slice.
+    void runTravelStage(const FrameInputs& inputs, const gpu::DensityParams& params);
     void useStage(uint32_t stage, const FrameSettings& settings);
     void reserveClip(); // mClip, one entry per result photon
 
     ProgramVariants mPrograms; // by stage (DENSITY_STAGE), CLIP_DISCS and WIDEN_STRONG
     gl::Buffer mParams;        // gpu::DensityParams
-    gl::Buffer mCells; // the hashed grid (density radii), or the lights' sums (widen_strong)
+    gl::Buffer mCells;         // the hashed grid (density radii), then the caustic list
+    gl::Buffer mLightPower;    // widen_strong: per light its stored photons and power
     gl::Buffer mClip;
     size_t mCausticOffset = 0;
 };

@@ -174,7 +174,8 @@ FrameSettings resolveFrameSettings(const Settings& settings) {
     f.splatShape = getChoice(settings, "splat_shape");
     f.splatMode = getChoice(settings, "splat_mode");
     f.splatClip = computeSplatClip(settings);
-    f.widenStrong = getChoice(settings, "widen_strong") == 1;
+    // The density radii spread strong photons by their neighbours already.
+    f.widenStrong = getChoice(settings, "widen_strong") == 1 && f.radiusMode != gpu::kRadiusDensity;
     f.splatDivisor = computeSplatDivisor(settings, f.width, f.height);
     f.splatSize = computeSplatSize(settings, f.width, f.height);
     f.denoiseIterations = computeDenoiseIterations(settings, f.splatSize.x, f.splatSize.y);

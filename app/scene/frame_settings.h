@@ -73,7 +73,7 @@ struct FrameSettings {
     uint32_t splatShape = 0;   // gpu::kSplatShape*
     uint32_t splatMode = 0;    // gpu::kSplatMode*
     bool splatClip = false;    // discs cut at the surfaces their plane meets (clip lines)
-    bool widenStrong = false;  // travel modes: photons stronger than their light's mean widened
+    bool widenStrong = false;  // travel modes (never density): strong photons widened
     int splatDivisor = 1;      // image pixels per splat-buffer pixel along an axis (1, 2, 4)
     glm::ivec2 splatSize{0};   // the splat buffer: the image divided, rounded up
     int denoiseIterations = 0; // derived from the splat buffer's size

@@ -338,12 +338,15 @@ void clipDisc(uint index, vec3 p, vec3 n, float radius) {
 }
 
 // widen_strong: light l's stored photons at cells[2 l], their power (float bits) at cells[2 l + 1],
-// of every kPowerSampleStride-th photon: the mean of thousands to a few per cent, without every
+// of one photon in kPowerSampleStride: the mean of thousands to a few per cent, without every
 // photon of a light waiting on one word (the float add is a compare-and-swap loop: 40,000 photons
-// of the Cornell box's one light took 4-19 ms, 1 in 8 of them well under 1).
+// of the Cornell box's one light took 4-19 ms, 1 in 8 of them well under 1). Chosen by a hash of
+// its position, not its index: photons are stored in another order each run, and the same
+// photons must set the same mean.
 const uint kPowerSampleStride = 8u;
 void addLightPower(uint index) {
-    if (index % kPowerSampleStride != 0u) return;
+    uvec3 bits = floatBitsToUint(photons[index].positionDistance.xyz);
+    if (hashPcg(bits.x ^ hashPcg(bits.y ^ hashPcg(bits.z))) % kPowerSampleStride != 0u) return;
     uint light = unpackLight(photons[index].incoming.w);
     atomicAdd(cells[2u * light], 1u);
     addFloat(2u * light + 1u, getPhotonPower(index));

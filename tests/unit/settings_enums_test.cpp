@@ -62,11 +62,18 @@ TEST(SettingsEnums, SplatClipFollowsTheRadiusModeUnlessSet) {
     }
 }
 
-TEST(SettingsEnums, WidenStrongIsOffUnlessSet) {
+// widen_strong widens travel and path-density discs; the density radii (the default) spread
+// strong photons by their neighbours already, so it resolves off there.
+TEST(SettingsEnums, WidenStrongIsOffUnlessSetForTravelRadii) {
     Settings s;
+    s.setEnum("radius_mode", "travel", "test");
     EXPECT_FALSE(resolveFrameSettings(s).widenStrong);
     s.setEnum("widen_strong", "on", "test");
     EXPECT_TRUE(resolveFrameSettings(s).widenStrong);
+    s.setEnum("radius_mode", "path_density", "test");
+    EXPECT_TRUE(resolveFrameSettings(s).widenStrong);
+    s.setEnum("radius_mode", "density", "test");
+    EXPECT_FALSE(resolveFrameSettings(s).widenStrong);
 }
 
 } // namespace
