@@ -122,7 +122,8 @@ void DirectPass::execute(const FrameInputs& inputs) {
 
 void DirectPass::shadeEdges(const FrameInputs& inputs) {
     constexpr unsigned kFindGroupSide = 8; // edge_find.comp's local size
-    // Room for every pixel (the header, then one uint each), only once edges are shaded.
+    // Room for every pixel (the header, then one uint each), only once edges are shaded. A pixel's
+    // index leaves the top two bits for its halvings: 16384^2 (the largest image) is 2^28.
     const size_t bytes = sizeof(gpu::DirectEdgeHeader) + sizeof(uint32_t) *
                                                              static_cast<size_t>(inputs.width) *
                                                              static_cast<size_t>(inputs.height);

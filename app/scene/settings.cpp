@@ -92,7 +92,8 @@ const std::vector<SettingDesc>& table() {
          "anti-aliased direct light: pixels at silhouettes, lit creases and edges of the light "
          "(a shadow's, a spot cone's) are shaded again from this many rays through points "
          "spread over the pixel (the BVH; the shadow test of shadows) and get their mean, the "
-         "reference path tracer's box filter; 0 = off (the pixel's centre alone)",
+         "reference path tracer's box filter; pixels whose light changes little against their "
+         "own take a half or a quarter; 0 = off (the pixel's centre alone)",
          {}},
         {"shadow_bias",
          SettingType::Float,

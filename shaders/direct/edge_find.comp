@@ -6,7 +6,8 @@
 // direct light over the surface's reflectance, so a texture's texels are no edge) bends: along
 // one of the four lines through the pixel, the neighbours' mean differs from the pixel's by more
 // than kDirectEdgeContrast of the brightest (a shadow's or a spot cone's edge; a smooth gradient
-// does not bend). Counts edge_shade.comp's work groups as it lists: one for every
+// does not bend). Each listed pixel carries how many times edge_shade.comp halves its samples, by
+// its need (shared/scene_data.h). Counts edge_shade.comp's work groups as it lists: one for every
 // kDirectEdgeGroupSize-th pixel.
 #include "lib/frame_constants.glsl"
 
@@ -52,6 +53,25 @@ bool bends(vec3 before, vec3 centre, vec3 after) {
     return any(greaterThan(abs(before + after - 2.0 * centre), kDirectEdgeContrast * brightest));
 }
 
+// How many times the listed pixel halves its samples, by how far the light spreads over it and
+// its neighbours against its own (kDirectEdgeFullNeed); the background counts with its radiance.
+uint computeHalvings(ivec2 pixel, ivec2 size, Shown centre) {
+    vec3 own = centre.instance > 0.5 ? centre.radiance : frame.background.rgb;
+    vec3 lowest = own;
+    vec3 highest = own;
+    for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+            Shown s = getShown(clamp(pixel + ivec2(dx, dy), ivec2(0), size - 1));
+            vec3 radiance = s.instance > 0.5 ? s.radiance : frame.background.rgb;
+            lowest = min(lowest, radiance);
+            highest = max(highest, radiance);
+        }
+    }
+    vec3 spread = (highest - lowest) / sqrt(own * own + kDirectEdgeNeedEpsilon);
+    float need = max(spread.x, max(spread.y, spread.z));
+    return need >= kDirectEdgeFullNeed ? 0u : (need >= kDirectEdgeHalfNeed ? 1u : 2u);
+}
+
 void main() {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
     ivec2 size = textureSize(uDirect, 0);
@@ -66,7 +86,8 @@ void main() {
                (centre.instance > 0.5 && bends(before.light, centre.light, after.light));
     }
     if (!edge) return;
+    uint halvings = computeHalvings(pixel, size, centre);
     uint index = atomicAdd(header.pixels, 1u);
-    edgePixels[index] = uint(pixel.x) | (uint(pixel.y) << 16u);
+    edgePixels[index] = (uint(pixel.y) * uint(size.x) + uint(pixel.x)) | (halvings << kDirectEdgeHalvingShift);
     if (index % kDirectEdgeGroupSize == 0u) atomicAdd(header.groupsX, 1u);
 }

@@ -1,11 +1,13 @@
 // Direct light averaged over a pixel's area where it changes inside the pixel (the pixels
-// edge_find.comp listed): rays from the eye through `samples` points spread over the pixel (the
-// first two Sobol dimensions, a (0,2)-sequence, Owen-scrambled per pixel and frame: any 2^k of
-// them are stratified along x and along y, so a straight edge is sampled evenly), each
-// shaded as direct.frag shades a pixel's centre (every light, the same shadow test); their mean
-// replaces the pixel's direct light, and alpha the share that hit a surface (compose.frag shows
-// the background in the rest). The reference path tracer's box filter, so silhouettes, creases
-// and shadow edges come out as it draws them. Emission stays the centre's (compose.frag).
+// edge_find.comp listed): rays from the eye through points spread over the pixel (the first two
+// Sobol dimensions, a (0,2)-sequence, Owen-scrambled per pixel and frame: any 2^k of them are
+// stratified along x and along y, so a straight edge is sampled evenly), the setting's number of
+// them halved as often as the list says (a pixel whose light changes little against its own
+// takes a half or a quarter), each shaded as direct.frag shades a pixel's centre (every light,
+// the same shadow test); their mean replaces the pixel's direct light, and alpha the share that
+// hit a surface (compose.frag shows the background in the rest). The reference path tracer's box
+// filter, so silhouettes, creases and shadow edges come out as it draws them. Emission stays the
+// centre's (compose.frag).
 #include "lib/scene_buffers.glsl"
 #include "lib/frame_constants.glsl"
 #include "lib/bvh.glsl"
@@ -48,12 +50,14 @@ void main() {
     uint index = gl_GlobalInvocationID.x;
     if (index >= header.pixels) return;
     uint listed = edgePixels[index];
-    ivec2 pixel = ivec2(listed & 0xffffu, listed >> 16u);
+    uint at = listed & ((1u << kDirectEdgeHalvingShift) - 1u);
+    uint width = uint(frame.imageSize.x);
+    ivec2 pixel = ivec2(at % width, at / width);
     uint rng = seedRandom(uint(pixel.y) * uint(frame.imageSize.x) + uint(pixel.x), kEdgeSeedSlot,
                           frame.counts.z);
     uint seedX = hashPcg(rng);
     uint seedY = hashPcg(seedX);
-    uint samples = params.control.x;
+    uint samples = max(params.control.x >> (listed >> kDirectEdgeHalvingShift), 1u);
     float rayFloorM = uintBitsToFloat(params.control.y);
     vec3 sum = vec3(0.0);
     float covered = 0.0;

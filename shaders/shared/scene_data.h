@@ -161,11 +161,21 @@ ISPM_CONST int kImageDirect = 0;         // the direct light (rgba32f), rewritte
 ISPM_CONST uint kDirectEdgeGroupSize = 64u;
 ISPM_CONST float kDirectEdgeContrast = 0.3f; // bend of the light, as a share of the brightest
 ISPM_CONST float kDirectEdgeCos = 0.95f;     // neighbours' normals apart by more: a crease
+// A listed pixel's need: the spread of the direct light over it and its eight neighbours over
+// sqrt(its own light^2 + kRelMseEpsilon), per channel, the largest. The error of an edge's
+// coverage from N stratified samples falls as N^-1.5, and rel MSE divides it by that same
+// denominator, so a pixel of low need spends its rays for little: below kDirectEdgeFullNeed it
+// takes half the samples (expected rel MSE at most 2^1.5 that of a full pixel at the threshold),
+// below kDirectEdgeHalfNeed a quarter (8 / 9 of it). The background counts with its radiance.
+ISPM_CONST float kDirectEdgeFullNeed = 3.0f;
+ISPM_CONST float kDirectEdgeHalfNeed = 1.0f;
+ISPM_CONST float kDirectEdgeNeedEpsilon = 0.01f; // the rel MSE's epsilon (image/metrics.h)
+ISPM_CONST uint kDirectEdgeHalvingShift = 30u;   // a listed pixel: index | halvings << shift
 struct DirectEdgeHeader {
     uint groupsX; // edge_shade.comp's indirect dispatch: ceil(pixels / kDirectEdgeGroupSize)
     uint groupsY; // 1
     uint groupsZ; // 1
-    uint pixels;  // pixels listed, each x | y << 16
+    uint pixels;  // pixels listed, each y * width + x | halvings << kDirectEdgeHalvingShift
 };
 ISPM_STATIC_ASSERT_SIZE(DirectEdgeHeader, 16);
 
