@@ -20,7 +20,7 @@ LABEL_OFFSET_PT = (5, 4)  # photon-count labels sit just above and right of thei
 REQUIRED_COLUMNS = ("kind", "spp", "photons", "total_ms", "relmse_total")
 # Choice settings a sweep may vary: each combination of their values is a series of its own.
 MODE_COLUMNS = ("radius_mode", "splat_mode", "splat_shape", "splat_resolution", "radius_scale",
-                "importance", "shadows", "edge_samples")
+                "importance", "widen_strong", "shadows", "edge_samples")
 # Modes drawn by a marker's look instead of its colour, so that the colours stay few: points that
 # differ only in them share colour and marker. Fill: the first value filled, the others hollow.
 FILL_COLUMN = "shadows"
