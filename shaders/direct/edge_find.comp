@@ -53,20 +53,14 @@ bool bends(vec3 before, vec3 centre, vec3 after) {
     return any(greaterThan(abs(before + after - 2.0 * centre), kDirectEdgeContrast * brightest));
 }
 
-// How many times the listed pixel halves its samples, by how far the light spreads over it and
-// its neighbours against its own (kDirectEdgeFullNeed); the background counts with its radiance.
-uint computeHalvings(ivec2 pixel, ivec2 size, Shown centre) {
-    vec3 own = centre.instance > 0.5 ? centre.radiance : frame.background.rgb;
-    vec3 lowest = own;
-    vec3 highest = own;
-    for (int dy = -1; dy <= 1; ++dy) {
-        for (int dx = -1; dx <= 1; ++dx) {
-            Shown s = getShown(clamp(pixel + ivec2(dx, dy), ivec2(0), size - 1));
-            vec3 radiance = s.instance > 0.5 ? s.radiance : frame.background.rgb;
-            lowest = min(lowest, radiance);
-            highest = max(highest, radiance);
-        }
-    }
+// The light a pixel shows: the direct light on a surface, the background's radiance elsewhere.
+vec3 getShownRadiance(Shown s) {
+    return s.instance > 0.5 ? s.radiance : frame.background.rgb;
+}
+
+// How many times a listed pixel halves its samples, by how far the light spreads from `lowest`
+// to `highest` over it and its eight neighbours against its own (kDirectEdgeFullNeed).
+uint computeHalvings(vec3 own, vec3 lowest, vec3 highest) {
     vec3 spread = (highest - lowest) / sqrt(own * own + kDirectEdgeNeedEpsilon);
     float need = max(spread.x, max(spread.y, spread.z));
     return need >= kDirectEdgeFullNeed ? 0u : (need >= kDirectEdgeHalfNeed ? 1u : 2u);
@@ -77,16 +71,21 @@ void main() {
     ivec2 size = textureSize(uDirect, 0);
     if (any(greaterThanEqual(pixel, size))) return;
     Shown centre = getShown(pixel);
+    vec3 own = getShownRadiance(centre);
+    vec3 lowest = own;
+    vec3 highest = own;
     bool edge = false;
     const ivec2 kLines[4] = ivec2[4](ivec2(1, 0), ivec2(0, 1), ivec2(1, 1), ivec2(1, -1));
     for (int i = 0; i < 4; ++i) {
         Shown before = getShown(clamp(pixel - kLines[i], ivec2(0), size - 1));
         Shown after = getShown(clamp(pixel + kLines[i], ivec2(0), size - 1));
+        lowest = min(lowest, min(getShownRadiance(before), getShownRadiance(after)));
+        highest = max(highest, max(getShownRadiance(before), getShownRadiance(after)));
         edge = edge || isEdgeWith(centre, before) || isEdgeWith(centre, after) ||
                (centre.instance > 0.5 && bends(before.light, centre.light, after.light));
     }
     if (!edge) return;
-    uint halvings = computeHalvings(pixel, size, centre);
+    uint halvings = computeHalvings(own, lowest, highest);
     uint index = atomicAdd(header.pixels, 1u);
     edgePixels[index] = (uint(pixel.y) * uint(size.x) + uint(pixel.x)) | (halvings << kDirectEdgeHalvingShift);
     if (index % kDirectEdgeGroupSize == 0u) atomicAdd(header.groupsX, 1u);

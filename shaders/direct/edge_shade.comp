@@ -53,8 +53,7 @@ void main() {
     uint at = listed & ((1u << kDirectEdgeHalvingShift) - 1u);
     uint width = uint(frame.imageSize.x);
     ivec2 pixel = ivec2(at % width, at / width);
-    uint rng = seedRandom(uint(pixel.y) * uint(frame.imageSize.x) + uint(pixel.x), kEdgeSeedSlot,
-                          frame.counts.z);
+    uint rng = seedRandom(at, kEdgeSeedSlot, frame.counts.z);
     uint seedX = hashPcg(rng);
     uint seedY = hashPcg(seedX);
     uint samples = max(params.control.x >> (listed >> kDirectEdgeHalvingShift), 1u);
