@@ -204,6 +204,11 @@ void Texture::copyFrom(const Texture& source) const {
                        0, mWidth, mHeight, 1);
 }
 
+void Texture::copyFrom(const Texture& source, int x, int y) const {
+    glCopyImageSubData(source.getId(), GL_TEXTURE_2D, 0, x, y, 0, getId(), GL_TEXTURE_2D, 0, 0, 0,
+                       0, mWidth, mHeight, 1);
+}
+
 void Texture::clear(const glm::vec4& value) {
     if (isDepthFormat(mFormat)) {
         glClearTexImage(getId(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, &value.x);

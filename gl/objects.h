@@ -99,6 +99,8 @@ class Texture {
     void clear(const glm::vec4& value);
     // Copies level 0 of `source` (same size and format; 2D) into this texture on the GPU.
     void copyFrom(const Texture& source) const; // GPU contents only: the object is unchanged
+    // This texture's size of `source` from texel (x, y) on, to this texture's (0, 0).
+    void copyFrom(const Texture& source, int x, int y) const;
 
     void bindUnit(GLuint unit) const;
     void bindImage(GLuint unit, bool read, bool write) const;

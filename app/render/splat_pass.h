@@ -68,6 +68,11 @@ class SplatPass final : public Pass {
     const gl::Texture& getCaustics() const { return mCaustics; }
     // Whether the caustic photons are splatted apart: in radius_mode density.
     static bool separatesCaustics(const FrameSettings& settings);
+    // Where the raster splat draws a buffer of `size` pixels in its target: a buffer under two
+    // rasteriser tiles across (64 px) is centred on a tile border, so that its pixels spread over
+    // two tiles instead of one. llvmpipe shades each tile on one thread: the splat of a 64 x 64
+    // buffer (a 128 x 128 image's at 1/2) took as long on two threads as on one.
+    static glm::ivec2 computeTargetOffset(glm::ivec2 size);
     // The raster splat's draws [firstDraw, firstDraw + drawCount) of inputs.splatDraws, each a
     // share of the photons in order (so slices add up to execute()'s image exactly); the first
     // clears the buffer. Not for splat_mode gather.
@@ -102,6 +107,10 @@ class SplatPass final : public Pass {
     ParamBlocks<gpu::SplatParams> mParams{"splat parameters"}; // one per draw
     gl::Texture mIndirect;
     gl::Framebuffer mFramebuffer;
+    // The raster splat's target when computeTargetOffset is not zero: the buffer at that offset,
+    // copied into mIndirect after the last draw.
+    gl::Texture mTarget;
+    gl::Framebuffer mTargetFramebuffer;
     gl::Texture mCaustics;
     gl::Framebuffer mCausticFramebuffer;
     // splat_mode gather: binning (count, then fill), the tiles' list offsets, the gather.

@@ -173,7 +173,8 @@ struct SplatParams {
     uvec4 control; // x = 1: the discs have clip lines (splat_clip), y = shape (kSplatShape*), z =
                    // this draw, w = draw count
     vec4 shape;    // x = squash (thickness along the normal / radius), y = image pixels per
-                   // splat-buffer pixel along an axis, zw unused
+                   // splat-buffer pixel along an axis, zw = where the buffer's pixel (0, 0) lies
+                   // in the target drawn (SplatPass::computeTargetOffset)
     uvec4 photons; // x = which photons the draw takes (kSplat*Photons), yzw unused
 };
 ISPM_STATIC_ASSERT_SIZE(SplatParams, 48);

@@ -29,8 +29,10 @@ flat in vec2 vPoles[kClipRays];
 layout(location = 0) out vec4 outRadiance;
 
 void main() {
-    // A buffer smaller than the image shades the G-buffer pixel at the middle of its block.
-    ivec2 pixel = getBlockGBufferPixel(ivec2(gl_FragCoord.xy), int(params.shape.y));
+    // A buffer smaller than the image shades the G-buffer pixel at the middle of its block; the
+    // target drawn may hold the buffer at an offset (SplatPass::computeTargetOffset).
+    ivec2 at = ivec2(gl_FragCoord.xy) - ivec2(params.shape.zw);
+    ivec2 pixel = getBlockGBufferPixel(at, int(params.shape.y));
     vec4 position = texelFetch(uPosition, pixel, 0);
     if (position.w < 0.5) discard;
     vec3 n = texelFetch(uNormal, pixel, 0).xyz;
