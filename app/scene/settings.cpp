@@ -302,7 +302,7 @@ const std::vector<SettingDesc>& table() {
          {}},
         {"splat_mode", SettingType::Enum, 0, 0, 1, "",
          "how result photons reach the image: raster (each drawn as an instanced splat of "
-         "splat_shape, the thesis's method) or gather (binned on the GPU into 16x16-pixel tiles "
+         "splat_shape, the thesis's method) or gather (binned on the GPU into 8x8-pixel tiles "
          "by the projected box of their splat, each pixel summing its tile's photons with the "
          "same kernel, normal and clip tests: the image of splat_shape box up to float "
          "round-off)",
