@@ -21,6 +21,17 @@ namespace {
 // frame_ms_target: frames measured at one budget before it changes (their median).
 constexpr size_t kBudgetFrames = 3;
 
+// Whether a and b set every setting alike but the seed.
+bool isSameButSeed(const Settings& a, const Settings& b) {
+    const auto sameIn = [](const Settings& from, const Settings& other) {
+        for (const auto& [name, value] : from.getOverrides()) {
+            if (name != "seed" && other.get(name) != value) return false;
+        }
+        return true;
+    };
+    return sameIn(a, b) && sameIn(b, a);
+}
+
 } // namespace
 
 double computeAdaptationWeight(double timeStepS, double timeConstantS) {
@@ -77,6 +88,7 @@ std::array<Pass*, 17> FrameRunner::getPasses() const {
 
 void FrameRunner::resizePasses() {
     mImportanceStale = true;
+    mImportanceFresh = true;
     for (Pass* pass : getPasses())
         pass->resize(mWidth, mHeight);
 }
@@ -98,6 +110,9 @@ void FrameRunner::setSettings(const Settings& settings) {
 
 void FrameRunner::applySettings(const Settings& settings) {
     mPendingSettings.reset();
+    // A new seed alone (bench's timed frames, accumulation) keeps the importance maps'
+    // history: any map is an unbiased pdf.
+    if (!isSameButSeed(mSettings, settings)) mImportanceFresh = true;
     mSettings = settings;
     mImportanceStale = true;
     mFrameSettings = resolveFrameSettings(settings);
@@ -192,6 +207,7 @@ void FrameRunner::rebuildScene() {
     dropFrameInProgress();
     mPendingSceneUpdate = false; // the new upload holds every edit
     mImportanceStale = true;
+    mImportanceFresh = true;
     mGpuScene = GpuScene(mScene, mGpuScene.getLightResolution());
     resetHistory();
 }
@@ -291,12 +307,17 @@ void FrameRunner::addFrameSteps(double sliceMs) {
         // The maps are rebuilt when the view, the seed, a light view or a setting changed, not
         // when only objects moved: any map is an unbiased pdf, and a kept one keeps the photons'
         // first hits (and with rng fixed or object_space their paths) where nothing moved.
+        // Else new samples are blended into the maps (importance_frames) unless their history
+        // is void; a moved camera keeps it: its aim lags a few frames.
         const bool sameAim = !mImportanceStale && inputs.seed == mImportanceSeed &&
                              mGpuScene.getLightViewsVersion() == mImportanceLightViews;
-        mSteps.push_back({mImportance->getName(), [this, sameAim] {
+        const bool keepHistory = !mImportanceFresh;
+        mSteps.push_back({mImportance->getName(), [this, sameAim, keepHistory] {
                               mImportance->setKeepMaps(sameAim); // its timer row reads ~0 ms
+                              mImportance->setKeepHistory(keepHistory);
                               runPass(*mImportance, *mInputs);
                               mImportanceStale = false;
+                              mImportanceFresh = false;
                               mImportanceSeed = mInputs->seed;
                               mImportanceLightViews = mGpuScene.getLightViewsVersion();
                           }});

@@ -172,6 +172,9 @@ class FrameRunner {
     // What the importance maps were last built for (renderFrame): stale after a camera move, a
     // settings change or a rebuilt scene; else rebuilt when the seed or a light view changed.
     bool mImportanceStale = true;
+    // The maps' history (importance_frames) is void: settings, size or scene changed since the
+    // last build.
+    bool mImportanceFresh = true;
     uint32_t mImportanceSeed = 0;
     uint64_t mImportanceLightViews = 0;
     int mWidth;

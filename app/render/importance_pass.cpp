@@ -18,6 +18,8 @@ namespace {
 // shows only after a further bounce, while a photon landing one bounce away lights it directly.
 constexpr float kVisibleWeight = 0.5f;
 constexpr float kBounceWeight = 1.0f;
+// Gather seed step between blended frames (2^32 / golden ratio: successive seeds spread apart).
+constexpr uint32_t kBlendSeedStep = 0x9e3779b9u;
 
 size_t computeCdfFloats(size_t views) {
     return views * (gpu::kImportanceTexels + gpu::kImportanceSize);
@@ -43,6 +45,8 @@ void ImportancePass::execute(const FrameInputs& inputs) {
     if (mKeepMaps && views == mViewCount) return;
     if (views != mViewCount) {
         mHits = gl::Buffer("importance hits", views * gpu::kImportanceTexels * sizeof(uint32_t));
+        mHistory = gl::Buffer("importance history", views * gpu::kImportanceTexels * sizeof(float));
+        mKeepHistory = false; // nothing in it yet
         mCdfTables = gl::Buffer("importance tables", computeCdfFloats(views) * sizeof(float));
         mFilteredRows = gl::Buffer("importance filtered rows",
                                    views * gpu::kImportanceTexels * 2 * sizeof(float));
@@ -53,8 +57,23 @@ void ImportancePass::execute(const FrameInputs& inputs) {
         mPdfMap.clear(glm::vec4(0.0f));
         mViewCount = views;
     }
-    // Gather samples on a grid of the image's aspect, at most one per pixel.
-    const double samples = inputs.settings.importanceSamples;
+    // The maps' texels are those of the emitting views: when one of them moved (a light did),
+    // the history is void. The sun's fine, shadow-only view follows the camera and the texel
+    // jitter of accumulated frames is a fraction of a map texel: neither counts.
+    std::vector<glm::mat4> emittingViews;
+    for (const LightCamera& camera : cameras) {
+        if (!camera.isShadowOnly) emittingViews.push_back(camera.getClipFromWorld());
+    }
+    if (emittingViews != mHistoryViews) {
+        mKeepHistory = false;
+        mHistoryViews = std::move(emittingViews);
+    }
+    // Gather samples on a grid of the image's aspect, at most one per pixel: all of
+    // importance_samples on a first frame, 1 / importance_frames of them when blended into the
+    // maps' history with that weight.
+    const int frames = std::max(inputs.settings.importanceFrames, 1);
+    const bool blend = mKeepHistory && frames > 1;
+    const double samples = std::max(inputs.settings.importanceSamples / (blend ? frames : 1), 1);
     const double aspect = double(inputs.width) / double(inputs.height);
     const auto across =
         uint32_t(std::clamp(std::lround(std::sqrt(samples * aspect)), 1L, long(inputs.width)));
@@ -63,8 +82,15 @@ void ImportancePass::execute(const FrameInputs& inputs) {
     // light's power alone.
     const float share = inputs.settings.importance;
     gpu::ImportanceParams params{};
-    params.counts = glm::uvec4(across, down, uint32_t(views), inputs.seed);
+    // Blended frames jitter their samples anew even where the seed stays (rng fixed: a moving
+    // view), so that the average covers the pixels; a first frame draws with the seed alone.
+    mBlends = blend ? mBlends + 1 : 0;
+    const uint32_t gatherSeed = inputs.seed + mBlends * kBlendSeedStep;
+    params.counts = glm::uvec4(across, down, uint32_t(views), gatherSeed);
     params.weights = glm::vec4(share, kVisibleWeight, kBounceWeight, inputs.scene.getRayEpsilon());
+    params.history =
+        glm::vec4(blend ? 1.0f / float(frames) : 1.0f,
+                  1.0f / (gpu::kImportanceFixedPoint * float(across * down)), 0.0f, 0.0f);
     mParams.upload(0, sizeof(params), &params);
 
     inputs.scene.bind();
@@ -82,6 +108,7 @@ void ImportancePass::execute(const FrameInputs& inputs) {
         gl::memoryBarrier(gl::Barrier::Storage);
     }
     mCdf.use();
+    mHistory.bindBase(gl::BufferTarget::Storage, gpu::kBindingImportanceHistory);
     mFilteredRows.bindBase(gl::BufferTarget::Storage, gpu::kBindingImportanceRows);
     mPdfMap.bindImage(gpu::kImageImportancePdf, false, true);
     // Shadow-only views (after the others) emit no photons: no tables.

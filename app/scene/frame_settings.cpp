@@ -159,6 +159,7 @@ FrameSettings resolveFrameSettings(const Settings& settings) {
     f.bouncesSet = settings.isSet("bounces");
     f.referenceMethod = getChoice(settings, "reference_method");
     f.importanceSamples = settings.getInt("importance_samples");
+    f.importanceFrames = settings.getInt("importance_frames");
     f.importance = f.importanceSamples > 0 ? settings.getFloat("importance") : 0.0f;
     f.rngGenerator = getChoice(settings, "rng_generator");
     f.rngMode = getChoice(settings, "rng");

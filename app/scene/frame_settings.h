@@ -57,6 +57,7 @@ struct FrameSettings {
     uint32_t referenceMethod = 0; // gpu::kReferencePath, kReferenceLight
     float importance = 0.0f;      // aimed share; 0 when importanceSamples is 0
     int importanceSamples = 0;
+    int importanceFrames = 1;  // frames the maps average (ImportancePass)
     uint32_t rngGenerator = 0; // gpu::kRngPcg, kRngLcg, kRngSobol
     uint32_t rngMode = 0;      // gpu::kRngFixed, kRngPerFrame, kRngObjectSpace
     // Splats.

@@ -167,7 +167,21 @@ const std::vector<SettingDesc>& table() {
          0,
          1048576,
          "",
-         "viewer pixels per frame that build the importance maps (each also casts one bounce ray)",
+         "viewer pixels that build the importance maps (each also casts one bounce ray): all of "
+         "them on a view's first frame, importance_samples / importance_frames on each later one",
+         {}},
+        {"importance_frames",
+         SettingType::Int,
+         4,
+         1,
+         64,
+         "frames",
+         "frames the importance maps average: each frame's samples are blended in with weight "
+         "1 / importance_frames (an exponential average), so the maps hold about 1.75x "
+         "importance_samples at 4 for a quarter of the gather; they start anew when the "
+         "settings, the image size, the scene's lights or objects (added, removed) or a light "
+         "view change, not when the camera or the seed does (any map is an unbiased pdf: a moving "
+         "view's aim lags a few frames); 1 = each frame its own maps",
          {}},
         {"rng", SettingType::Enum, 0, 0, 2, "",
          "which random numbers scatter a photon from frame to frame: fixed (keyed on the grid cell "

@@ -2,7 +2,8 @@
 // probability is a mix of the power the light sends through it (the uniform floor: every texel the
 // light reaches keeps a share) and that power times the gathered importance:
 //   p = (1 - a) base / sum(base) + a base imp / sum(base imp),  a = importance share,
-// base = solid angle x spot falloff (perspective) or 1 (orthographic). Texels the light sends
+// base = solid angle x spot falloff (perspective) or 1 (orthographic), imp the gathered hits per
+// sample averaged over frames (importance_frames: this frame's blended into the history). Texels the light sends
 // nothing through (outside a spot's outer cone) get no photon at all. Writes the conditional CDF
 // of every row and the marginal CDF of the rows (layout in shared/importance_data.h).
 #include "lib/scene_buffers.glsl"
@@ -17,6 +18,7 @@ layout(std140, binding = kBindingImportanceParams) uniform ImportanceParamsBlock
 };
 layout(std430, binding = kBindingImportanceHits) readonly buffer ImportanceHits { uint importanceHits[]; };
 layout(std430, binding = kBindingImportanceRows) coherent buffer ImportanceRows { vec2 importanceRows[]; };
+layout(std430, binding = kBindingImportanceHistory) buffer ImportanceHistory { float importanceHistory[]; };
 layout(std430, binding = kBindingImportanceCdf) writeonly buffer ImportanceCdf { float importanceCdf[]; };
 layout(rgba32f, binding = kImageImportancePdf) uniform writeonly image2DArray uPdfMap;
 
@@ -64,7 +66,7 @@ float filterRow(uint viewIndex, int column, uint row, int radius) {
         int at = column + dx;
         if (at < 0 || at >= int(kImportanceSize)) continue;
         float w = float(radius + 1 - abs(dx));
-        sum += w * float(importanceHits[viewIndex * kImportanceTexels + row * kImportanceSize + uint(at)]);
+        sum += w * importanceHistory[viewIndex * kImportanceTexels + row * kImportanceSize + uint(at)];
         weights += w;
     }
     return sum / weights;
@@ -98,6 +100,13 @@ void main() {
     GpuLight light = lights[view.info.x];
     uint first = viewIndex * kImportanceTexels + row * kImportanceSize;
     if (params.weights.x > 0.0) {
+        // This frame's hits, per gather sample, into the maps' average (importance_frames): the
+        // invocation's own row, which its row filter reads next.
+        for (uint c = 0u; c < kImportanceSize; ++c) {
+            float hits = float(importanceHits[first + c]) * params.history.y;
+            float kept = params.history.x < 1.0 ? importanceHistory[first + c] : 0.0;
+            importanceHistory[first + c] = mix(kept, hits, params.history.x);
+        }
         for (uint c = 0u; c < kImportanceSize; ++c) {
             importanceRows[first + c] = vec2(filterRow(viewIndex, int(c), row, kSharpRadius),
                                              filterRow(viewIndex, int(c), row, kWideRadius));

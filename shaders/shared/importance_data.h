@@ -30,6 +30,9 @@ ISPM_CONST int kBindingImportanceCdf = 16;
 // The CDF build's scratch: per view and texel, the gathered importance filtered along its row by
 // the two tents (vec2, sharp and wide; the columns' pass of the separable filters reads them).
 ISPM_CONST int kBindingImportanceRows = 30;
+// Per view and texel: the maps' gathered importance per sample, averaged over frames (float; the
+// CDF build blends each frame's hits into it, importance_frames).
+ISPM_CONST int kBindingImportanceHistory = 31;
 // Image unit of the emission pdf per map texel (relative to uniform: 1), for the viewer.
 ISPM_CONST int kImageImportancePdf = 0;
 
@@ -55,8 +58,11 @@ struct ImportanceParams {
     uvec4 counts; // x = gather samples across, y = down, z = light view count, w = frame seed
     vec4 weights; // x = importance share (1 - uniform floor), y = weight of a visible point,
                   // z = weight of a point one bounce away, w = ray offset (m)
+    vec4 history; // x = weight of this frame's samples in the maps (1: built anew; else
+                  // 1 / importance_frames), y = scale from a texel's hits to importance per
+                  // gather sample, zw unused
 };
-ISPM_STATIC_ASSERT_SIZE(ImportanceParams, 32);
+ISPM_STATIC_ASSERT_SIZE(ImportanceParams, 48);
 ISPM_CONST int kBindingImportanceParams = 1; // uniform buffer
 
 ISPM_NAMESPACE_END
