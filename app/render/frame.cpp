@@ -311,7 +311,8 @@ void FrameRunner::addFrameSteps(double sliceMs) {
         // is void; a moved camera keeps it: its aim lags a few frames.
         const bool sameAim = !mImportanceStale && inputs.seed == mImportanceSeed &&
                              mGpuScene.getLightViewsVersion() == mImportanceLightViews;
-        const bool keepHistory = !mImportanceFresh;
+        const bool keepHistory =
+            !mImportanceFresh && mGpuScene.getEmittingViewsVersion() == mImportanceEmittingViews;
         mSteps.push_back({mImportance->getName(), [this, sameAim, keepHistory] {
                               mImportance->setKeepMaps(sameAim); // its timer row reads ~0 ms
                               mImportance->setKeepHistory(keepHistory);
@@ -320,6 +321,7 @@ void FrameRunner::addFrameSteps(double sliceMs) {
                               mImportanceFresh = false;
                               mImportanceSeed = mInputs->seed;
                               mImportanceLightViews = mGpuScene.getLightViewsVersion();
+                              mImportanceEmittingViews = mGpuScene.getEmittingViewsVersion();
                           }});
         addPassStep(*mEmit);
     }

@@ -173,8 +173,9 @@ class FrameRunner {
     // settings change or a rebuilt scene; else rebuilt when the seed or a light view changed.
     bool mImportanceStale = true;
     // The maps' history (importance_frames) is void: settings, size or scene changed since the
-    // last build.
+    // last build; also void when GpuScene::getEmittingViewsVersion moved from this.
     bool mImportanceFresh = true;
+    uint64_t mImportanceEmittingViews = 0;
     uint32_t mImportanceSeed = 0;
     uint64_t mImportanceLightViews = 0;
     int mWidth;

@@ -285,6 +285,14 @@ void GpuScene::uploadLightViews() {
         mUploadedViews = std::move(projections);
         ++mLightViewsVersion;
     }
+    std::vector<glm::mat4> emitting;
+    for (const LightCamera& cam : mLightCameras) {
+        if (!cam.isShadowOnly) emitting.push_back(cam.getClipFromWorld());
+    }
+    if (emitting != mEmittingViews) {
+        mEmittingViews = std::move(emitting);
+        ++mEmittingViewsVersion;
+    }
     if (mLightViews.getSize() == views.size() * sizeof(gpu::GpuLightView) &&
         mLightViews.getId() != 0) {
         mLightViews.upload<gpu::GpuLightView>(views);

@@ -66,6 +66,10 @@ class GpuScene {
     // Goes up whenever a light view's projection changes (a light moved, the fit, the jitter):
     // what was aimed through the old views must be aimed again.
     uint64_t getLightViewsVersion() const { return mLightViewsVersion; }
+    // Goes up when an emitting view's own projection changes (a light moved), not with the
+    // sun's shadow-only view (fitted to the viewer) nor with the jitter (a fraction of a texel):
+    // what the importance maps' texels stand for.
+    uint64_t getEmittingViewsVersion() const { return mEmittingViewsVersion; }
     int getLightResolution() const { return mLightResolution; }
     const Aabb& getBounds() const { return mBounds; }
     // Each instance's world box (Scene::computeInstanceBounds), kept with getBounds.
@@ -94,6 +98,8 @@ class GpuScene {
     std::optional<Camera> mViewer;         // setViewer
     std::vector<glm::mat4> mUploadedViews; // clipFromWorld as last uploaded
     uint64_t mLightViewsVersion = 0;
+    std::vector<glm::mat4> mEmittingViews; // the emitting views' clipFromWorld, unjittered
+    uint64_t mEmittingViewsVersion = 0;
     std::vector<gpu::GpuLight> mEmitted; // the lights as last uploaded, view indices cleared
     uint64_t mLightsVersion = 0;
     bool mTransformsMoved = false; // since keepTransformsAsPrevious

@@ -57,21 +57,10 @@ void ImportancePass::execute(const FrameInputs& inputs) {
         mPdfMap.clear(glm::vec4(0.0f));
         mViewCount = views;
     }
-    // The maps' texels are those of the emitting views: when one of them moved (a light did),
-    // the history is void. The sun's fine, shadow-only view follows the camera and the texel
-    // jitter of accumulated frames is a fraction of a map texel: neither counts.
-    std::vector<glm::mat4> emittingViews;
-    for (const LightCamera& camera : cameras) {
-        if (!camera.isShadowOnly) emittingViews.push_back(camera.getClipFromWorld());
-    }
-    if (emittingViews != mHistoryViews) {
-        mKeepHistory = false;
-        mHistoryViews = std::move(emittingViews);
-    }
     // Gather samples on a grid of the image's aspect, at most one per pixel: all of
     // importance_samples on a first frame, 1 / importance_frames of them when blended into the
     // maps' history with that weight.
-    const int frames = std::max(inputs.settings.importanceFrames, 1);
+    const int frames = inputs.settings.importanceFrames;
     const bool blend = mKeepHistory && frames > 1;
     const double samples = std::max(inputs.settings.importanceSamples / (blend ? frames : 1), 1);
     const double aspect = double(inputs.width) / double(inputs.height);

@@ -11,10 +11,6 @@
 
 #include <shared/importance_data.h>
 
-#include <glm/glm.hpp>
-
-#include <vector>
-
 namespace ispm {
 
 class ImportancePass final : public Pass {
@@ -27,8 +23,7 @@ class ImportancePass final : public Pass {
     void setKeepMaps(bool keep) { mKeepMaps = keep; }
     // Blend this frame's samples into the maps of earlier frames (importance_frames), gathering
     // importance_samples / importance_frames of them; else build the maps from all of them anew
-    // (FrameRunner: settings, size or scene changed since; the pass itself sees an emitting
-    // light view move).
+    // (FrameRunner: settings, size, scene or an emitting light view changed since).
     void setKeepHistory(bool keep) { mKeepHistory = keep; }
     void reloadPrograms(ShaderReloadReport& report) override {
         mGather.reloadIfChanged(report);
@@ -49,8 +44,7 @@ class ImportancePass final : public Pass {
   private:
     bool mKeepMaps = false;
     bool mKeepHistory = false;
-    uint32_t mBlends = 0;                 // frames blended into the history since it was built anew
-    std::vector<glm::mat4> mHistoryViews; // the emitting views the history's texels belong to
+    uint32_t mBlends = 0; // frames blended into the history since it was built anew
     const GBuffer& mViewer;
     const GBuffer& mLights;
     ProgramVariants mGather; // by SHADOW_RAYS (setting shadows)
