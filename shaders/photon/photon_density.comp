@@ -321,6 +321,7 @@ void clipDisc(uint index, vec3 p, vec3 n, float radius) {
     vec3 sweep = (abs(gDiscT) + abs(gDiscB)) * radius;
     queryBox(min(gAbove, gBeneath) - sweep, max(gAbove, gBeneath) + sweep);
     vec2 poles[kClipRays];
+    float hitsM[kClipRays];
     for (uint i = 0u; i < kClipRays; ++i) {
         RayQuad above = i < 4u ? gAboveLo : gAboveHi;
         RayQuad beneath = i < 4u ? gBeneathLo : gBeneathHi;
@@ -332,7 +333,9 @@ void clipDisc(uint index, vec3 p, vec3 n, float radius) {
                                   : vec2(above.normalT[lane], above.normalB[lane]);
         vec2 ray2 = getClipDirection(i);
         poles[i] = t < radius ? computeClipPole(ray2 * t, normal2, ray2) : vec2(0.0);
+        hitsM[i] = min(t, radius);
     }
+    removeEndingLines(poles, hitsM, radius);
     removeRepeatedLines(poles, radius);
     writeClip(index, poles, radius);
 }

@@ -2,8 +2,9 @@
 // rays in the photon's surface plane (evenly around it, the first along the splat basis's t) and
 // keeps, for each that hit a surface within the radius, the line where that surface cuts the
 // plane. The splat draws only the pixels on the photon's side of every line, so it neither leaks
-// through a thin wall, nor climbs a corner, nor reaches round a wall's end into the next room,
-// and divides each pixel's share by the kernel mass that the pixel's own disc keeps inside the
+// through a thin wall, nor climbs a corner; a line whose surface ends inside the disc (a
+// building's outer corner, a wall's free end) is dropped (removeEndingLines), and the splat
+// divides each pixel's share by the kernel mass that the pixel's own disc keeps inside the
 // lines (splat.frag), so a uniform irradiance stays uniform up to a wall.
 #ifndef ISPM_SPLAT_CLIP_H
 #define ISPM_SPLAT_CLIP_H
@@ -85,6 +86,38 @@ ISPM_INLINE void removeRepeatedLines(ISPM_INOUT_ARRAY(vec2, poles, kClipRays), f
             vec2 d = poles[j] - poles[i];
             if (dot(poles[j], poles[j]) > 0.0f && dot(d, d) < same2) poles[i] = vec2(0.0f);
         }
+    }
+}
+
+// Zeroes every line whose surface ends inside the disc: on either side of the line's pole, the
+// clip ray that crosses the line farthest out, still within the radius, passed it without meeting
+// anything there (`hitsM`: each ray's distance to what it met, the radius when nothing). A line
+// runs on without end, so at a building's outer corner or a wall's free end it would cut open
+// ground off the disc, with a pixel's kept mass raising the rest: wedges of light along the walls'
+// extensions outdoors. A door in a wall keeps its line: the outermost rays meet the wall beside it.
+// Without the line the disc reaches round the surface's end, as an unclipped disc does.
+ISPM_INLINE void removeEndingLines(ISPM_INOUT_ARRAY(vec2, poles, kClipRays),
+                                   const float hitsM[kClipRays], float radiusM) {
+    // Past the crossing by more than this share of it (and of the radius): not the same surface
+    // (a slanted wall's line, met by rays above and beneath the plane, differs by round-off).
+    const float kPassed = 0.05f;
+    for (uint i = 0u; i < kClipRays; ++i) {
+        float p2 = dot(poles[i], poles[i]);
+        if (p2 <= 0.0f) continue;
+        vec2 along = vec2(-poles[i].y, poles[i].x);
+        float outermost[2] = {0.0f, 0.0f};
+        bool passed[2] = {false, false};
+        for (uint j = 0u; j < kClipRays; ++j) {
+            vec2 ray2 = getClipDirection(j);
+            float toward = dot(ray2, poles[i]);
+            if (toward <= 0.0f) continue;
+            float crossingM = p2 / toward; // where ray j meets the line
+            uint side = dot(ray2, along) >= 0.0f ? 0u : 1u;
+            if (crossingM >= radiusM || crossingM <= outermost[side]) continue;
+            outermost[side] = crossingM;
+            passed[side] = hitsM[j] > crossingM + kPassed * (crossingM + radiusM);
+        }
+        if (passed[0] || passed[1]) poles[i] = vec2(0.0f);
     }
 }
 

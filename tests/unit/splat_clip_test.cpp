@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <initializer_list>
 
 namespace ispm {
 namespace {
@@ -84,6 +86,61 @@ TEST(SplatClip, PoleIsTheWallsNearestPointOnThePhotonsSide) {
     // A surface parallel to the plane (a step's top): the line runs across the ray at the hit.
     const gpu::vec2 across = gpu::computeClipPole(hit, gpu::vec2(0.0f), ray);
     EXPECT_NEAR(glm::length(across), glm::length(hit), 1e-6f);
+}
+
+// Clip lines from the eight rays (unit radius) against solids made of axis-aligned rectangles in
+// the plane, as photon_density.comp finds them: each ray's distance to the nearest rectangle
+// (marched in steps of 1e-4, the rectangles' own face giving the normal), its line's pole.
+struct ClipRays {
+    gpu::vec2 poles[gpu::kClipRays] = {};
+    float hitsM[gpu::kClipRays] = {};
+};
+
+ClipRays castClipRays(std::initializer_list<glm::vec4> rects) { // rect: x0, y0, x1, y1
+    ClipRays out;
+    for (uint32_t j = 0; j < gpu::kClipRays; ++j) {
+        const gpu::vec2 ray = gpu::getClipDirection(j);
+        out.hitsM[j] = 1.0f;
+        for (int step = 1; step < 10000 && out.hitsM[j] == 1.0f; ++step) {
+            const float t = static_cast<float>(step) * 1e-4f;
+            const gpu::vec2 p = ray * t;
+            for (const glm::vec4& r : rects) {
+                if (p.x < r.x || p.x > r.z || p.y < r.y || p.y > r.w) continue;
+                // The face entered: the one the point lies nearest to.
+                const float dx = std::min(p.x - r.x, r.z - p.x);
+                const float dy = std::min(p.y - r.y, r.w - p.y);
+                const gpu::vec2 normal = dx < dy ? gpu::vec2(1.0f, 0.0f) : gpu::vec2(0.0f, 1.0f);
+                out.hitsM[j] = t;
+                out.poles[j] = gpu::computeClipPole(p, normal, ray);
+                break;
+            }
+        }
+    }
+    return out;
+}
+
+TEST(SplatClip, LinesOfSurfacesEndingInsideTheDiscAreDropped) {
+    // A wall along the whole disc (x > 0.3): rays 0, 1 and 7 meet it and its line stays.
+    ClipRays wall = castClipRays({{0.3f, -5.0f, 5.0f, 5.0f}});
+    gpu::removeEndingLines(wall.poles, wall.hitsM, 1.0f);
+    EXPECT_NEAR(wall.poles[0].x, 0.3f, 1e-3f);
+    EXPECT_NEAR(wall.poles[1].x, 0.3f, 1e-3f);
+    EXPECT_NEAR(wall.poles[7].x, 0.3f, 1e-3f);
+    // A building's outer corner at (0.3, 0.2): only ray 1 meets its face x = 0.3; ray 7 crosses
+    // that line at 0.42 and meets nothing, so the face ends inside the disc and the line goes
+    // (kept, it would cut the open ground below y = 0.2 off the disc).
+    ClipRays corner = castClipRays({{0.3f, 0.2f, 5.0f, 5.0f}});
+    ASSERT_NEAR(corner.poles[1].x, 0.3f, 1e-3f);
+    gpu::removeEndingLines(corner.poles, corner.hitsM, 1.0f);
+    for (const gpu::vec2& pole : corner.poles)
+        EXPECT_EQ(pole, gpu::vec2(0.0f));
+    // A wall 0.2 thick with a door (|y| < 0.1): ray 0 passes through the door, but the outermost
+    // rays on both sides (1 and 7) meet the wall, so its line stays and no light leaks through.
+    ClipRays door = castClipRays({{0.3f, 0.1f, 0.5f, 5.0f}, {0.3f, -5.0f, 0.5f, -0.1f}});
+    ASSERT_EQ(door.poles[0], gpu::vec2(0.0f));
+    gpu::removeEndingLines(door.poles, door.hitsM, 1.0f);
+    EXPECT_NEAR(door.poles[1].x, 0.3f, 1e-3f);
+    EXPECT_NEAR(door.poles[7].x, 0.3f, 1e-3f);
 }
 
 TEST(SplatClip, BasisIsOrthonormalAndFollowsAxes) {
