@@ -2,12 +2,18 @@
 // the viewer G-buffer pixel i d + d / 2 (splat.frag), so an image pixel lies between four of
 // them. Each of the four is weighted bilinearly, by the normal test and the off-plane distance
 // of the filter (atrous.frag) on its guide texel (filter_input.frag), and read as irradiance;
-// the sum is multiplied by the pixel's reflectance. A pixel none of the four shares a surface
-// with (a feature thinner than d pixels) takes the bilinear weights alone. At a buffer of the
-// image's size the light passes as it is. The caustic photons' light, splatted apart at the
-// image's size and unfiltered (shared/photon_data.h, kSplatCausticPhotons), is added by the
-// UPSAMPLE_CAUSTICS 1 variant. UPSAMPLE_FILTER 0: the buffer is the image's size (only the caustic
-// light to add). Variants, not uniforms: llvmpipe runs both sides of every branch.
+// the sum is multiplied by the pixel's reflectance. A tap counts only on the pixel's own
+// surface: a surface weight of kSharedSurface or more, with the footprint measured towards the
+// nearest of the pixel's four neighbours d pixels away (beside a depth edge, such as a room's
+// inside seen through its door, the far side would take the step across the edge for the
+// footprint and pass a wall metres behind), and its point within kSameSurfaceReach footprints
+// (not another surface in the same plane: the room's floor beyond the door, the yard before it).
+// A pixel none of the four shares a surface with (a feature thinner than d pixels) takes the
+// bilinear weights alone. At a buffer of the image's size the light passes as it is. The caustic
+// photons' light, splatted apart at the image's size and unfiltered (shared/photon_data.h,
+// kSplatCausticPhotons), is added by the UPSAMPLE_CAUSTICS 1 variant. UPSAMPLE_FILTER 0: the
+// buffer is the image's size (only the caustic light to add). Variants, not uniforms: llvmpipe
+// runs both sides of every branch.
 #include "lib/frame_constants.glsl"
 #include "lib/gbuffer_filter.glsl"
 
@@ -21,6 +27,13 @@ layout(location = 0) out vec4 outRadiance;
 
 const float kMinWeight = 1e-6; // below: no buffer pixel shares the surface
 const float kTentFloor = 1e-2;
+// A tap's surface weight below this: another surface (e^-3 of the plane test, three footprints
+// off the pixel's plane, or normals 20 degrees apart under the normal test's cos^64).
+const float kSharedSurface = 0.05;
+// A tap's point farther than this many footprints along the plane: another surface in the same
+// plane. The four taps lie within 1.5 buffer pixels of the pixel on screen, so a continuous
+// surface holds them within about 2 footprints (more where it turns from the view).
+const float kSameSurfaceReach = 4.0;
 
 vec3 upsample(ivec2 pixel);
 
@@ -43,7 +56,7 @@ vec3 upsample(ivec2 pixel) {
     ivec2 size = textureSize(uSource, 0);
     vec3 n = texelFetch(uNormal, pixel, 0).xyz;
     // Footprints of a buffer pixel on this surface.
-    float planeScale = computePlaneScale(pixel, position.xyz, params.iteration.w);
+    float planeScale = computeNearestPlaneScale(pixel, position.xyz, params.iteration.w);
     vec2 at = (vec2(pixel) - float(params.iteration.w / 2)) / float(params.iteration.w); // in buffer pixels
     ivec2 first = ivec2(floor(at));
     vec3 sum = vec3(0.0);
@@ -61,7 +74,9 @@ vec3 upsample(ivec2 pixel) {
             vec4 guide = texelFetch(uGuide, q, 0);
             if (guide.w == kGuideNoSurface) continue;
             vec3 irradiance = texelFetch(uSource, q, 0).rgb;
-            float w = tent * weighGuide(guide, n, position.xyz, planeScale);
+            float shared_ = weighGuide(guide, n, position.xyz, planeScale);
+            bool near = length(guide.xyz - position.xyz) * planeScale <= kSameSurfaceReach;
+            float w = shared_ >= kSharedSurface && near ? tent * shared_ : 0.0;
             sum += w * irradiance;
             weights += w;
             tentSum += tent * irradiance;

@@ -33,6 +33,22 @@ float computePlaneScale(ivec2 g, vec3 position, int step) {
     return 1.0 / max(kPlaneFootprints * footprint, 1e-30);
 }
 
+// computePlaneScale's, from the nearest of the points `step` pixels to the left, right, below and
+// above: a pixel beside a depth edge (a wall's inside seen through a door) measures its
+// footprint on its own surface, not across the edge.
+float computeNearestPlaneScale(ivec2 g, vec3 position, int step) {
+    ivec2 size = ivec2(frame.imageSize.xy);
+    float footprint = 1e30;
+    const ivec2 kSides[4] = ivec2[4](ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1));
+    for (int i = 0; i < 4; ++i) {
+        ivec2 beside = g + kSides[i] * step;
+        if (any(lessThan(beside, ivec2(0))) || any(greaterThanEqual(beside, size))) continue;
+        vec4 besidePosition = texelFetch(uPosition, beside, 0);
+        if (besidePosition.w >= 0.5) footprint = min(footprint, length(besidePosition.xyz - position));
+    }
+    return 1.0 / max(kPlaneFootprints * footprint, 1e-30);
+}
+
 // A tap's surface (its point and unit normal) weighed against the pixel's (n, position): the
 // normal test times the off-plane distance's.
 float weighSurface(vec3 qPosition, vec3 qNormal, vec3 n, vec3 position, float planeScale) {

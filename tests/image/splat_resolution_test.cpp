@@ -1,7 +1,8 @@
 // Splats drawn into a buffer of 1/2 or 1/4 of the image's resolution and brought back by the
 // joint-bilateral upsample (UpsamplePass) are as close to the converged image (eight seeds
 // averaged at full resolution) as full-resolution splats of the same photons, keep their energy,
-// and carry no colour across an edge (the red wall's light stays off the white wall beside it).
+// and carry no colour across an edge (the red wall's light stays off the white wall beside it)
+// nor light across a depth edge (a wall seen through a window keeps its own).
 #include "support/gl_fixture.h"
 
 #include "image/metrics.h"
@@ -10,6 +11,9 @@
 #include "render/splat_pass.h"
 #include "scene/scene_loader.h"
 
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -148,6 +152,76 @@ TEST_F(SplatResolutionTest, DiscsOfAPixelKeepTheirEnergy) {
         // The same photons summed over other pixels: measured within 0.8%; sampled half an image
         // pixel off, the shrunk discs lost 15% (1/2) and 14% (1/4).
         EXPECT_NEAR(shrunk, fullShrunk, 0.02) << resolution;
+    }
+}
+
+// A sunlit wall with a window 2 m square, 8 m before the camera, and a closed room behind it
+// whose back wall, 4 m behind, is seen through the window: the front wall's face takes the light
+// the sunlit yard before it sends, the back wall only what comes in through the window. Returns the
+// mean indirect light over the back wall's pixels at `resolution`, over that at 1 with the same
+// photons.
+double renderBackWallThroughWindow(const std::string& resolution) {
+    const nlohmann::json doc = nlohmann::json::parse(R"({
+        "camera": {"position": [0, 2, -8], "target": [0, 2, 0], "fov_y_deg": 50},
+        "materials": {"grey": {"diffuse": [0.6, 0.6, 0.6]}},
+        "objects": [
+            {"type": "box", "material": "grey", "min": [-12, -0.1, -12], "max": [12, 0, 12]},
+            {"type": "box", "material": "grey", "min": [-5, 0, 0], "max": [-1, 5, 0.2]},
+            {"type": "box", "material": "grey", "min": [1, 0, 0], "max": [5, 5, 0.2]},
+            {"type": "box", "material": "grey", "min": [-1, 0, 0], "max": [1, 1, 0.2]},
+            {"type": "box", "material": "grey", "min": [-1, 3, 0], "max": [1, 5, 0.2]},
+            {"type": "box", "material": "grey", "min": [-5, 0, 4], "max": [5, 5, 4.2]},
+            {"type": "box", "material": "grey", "min": [-5, 5, 0], "max": [5, 5.2, 4.2]},
+            {"type": "box", "material": "grey", "min": [-5.2, 0, 0], "max": [-5, 5, 4.2]},
+            {"type": "box", "material": "grey", "min": [5, 0, 0], "max": [5.2, 5, 4.2]}
+        ],
+        "lights": [{"type": "sun", "direction": [0.3, -1, 0.3], "irradiance": [100, 100, 100]}]
+    })");
+    const Scene scene = parseScene(doc, "window.json", ".");
+    auto render = [&](const std::string& r, Image* position) {
+        Settings s = scene.settings;
+        s.set("width", kSize, "test");
+        s.set("height", kSize, "test");
+        s.set("photons", 20000, "test");
+        s.setEnum("radius_mode", "path_density", "test");
+        s.set("denoise", 0, "test");
+        s.setEnum("splat_resolution", r, "test");
+        FrameRunner runner(scene, s, gl::TimingMethod::CpuFinish);
+        runner.renderFrame();
+        if (position)
+            *position = readTextureImage(runner.getViewerGBuffer().getChannel("position"));
+        return readTextureImage(runner.getAov(Aov::Indirect));
+    };
+    Image position;
+    const Image sub = render(resolution, &position);
+    const Image full = render("1", nullptr);
+    double light = 0.0;
+    double lightFull = 0.0;
+    int pixels = 0;
+    for (size_t i = 0; i < position.pixels.size(); ++i) {
+        if (position.pixels[i].z < 3.9f) continue; // the back wall's face, z = 4
+        light += double(sub.pixels[i].x);
+        lightFull += double(full.pixels[i].x);
+        ++pixels;
+    }
+    std::printf("splat_resolution %s: %d px of the back wall, mean light %.4f against %.4f at "
+                "full resolution\n",
+                resolution.c_str(), pixels, light / std::max(pixels, 1),
+                lightFull / std::max(pixels, 1));
+    EXPECT_GT(pixels, 400) << "the window shows too little of the back wall";
+    EXPECT_GT(lightFull, 0.0) << "no indirect light on the back wall";
+    return lightFull > 0.0 ? light / lightFull : 0.0;
+}
+
+TEST_F(SplatResolutionTest, AWallSeenThroughAWindowKeepsItsOwnLight) {
+    for (const char* resolution : {"1/2", "1/4"}) {
+        const double ratio = renderBackWallThroughWindow(resolution);
+        // The back wall's pixels next to the window's edges have buffer pixels on the front wall
+        // among their four taps. Measured 1.000 at 1/2 and 1.004 at 1/4; when the plane test's
+        // footprint was taken towards the pixel's right-hand neighbour alone (across the edge
+        // for pixels at the window's right: a 4 m step as the footprint), the front wall's light
+        // passed and the back wall read 1.064 and 1.130.
+        EXPECT_NEAR(ratio, 1.0, 0.03) << resolution;
     }
 }
 
