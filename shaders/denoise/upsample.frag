@@ -28,11 +28,13 @@ layout(location = 0) out vec4 outRadiance;
 const float kMinWeight = 1e-6; // below: no buffer pixel shares the surface
 const float kTentFloor = 1e-2;
 // A tap's surface weight below this: another surface (e^-3 of the plane test, three footprints
-// off the pixel's plane, or normals 20 degrees apart under the normal test's cos^64).
+// off the pixel's plane, or normals 17 degrees apart under the normal test's cos^64).
 const float kSharedSurface = 0.05;
 // A tap's point farther than this many footprints along the plane: another surface in the same
 // plane. The four taps lie within 1.5 buffer pixels of the pixel on screen, so a continuous
-// surface holds them within about 2 footprints (more where it turns from the view).
+// surface holds them within about 2 footprints; a surface seen at under about 20 degrees, whose
+// footprint along the view is 2.7 or more times its nearest, loses its far taps and may take the
+// bilinear weights alone (the distant yard near the horizon, among its own light).
 const float kSameSurfaceReach = 4.0;
 
 vec3 upsample(ivec2 pixel);
