@@ -269,6 +269,8 @@ void GpuScene::setLightJitter(glm::vec2 texels) {
 
 void GpuScene::uploadLightViews() {
     std::vector<gpu::GpuLightView> views;
+    std::vector<glm::mat4> projections; // as uploaded: jittered
+    std::vector<glm::mat4> emitting;    // the emitting views' own, unjittered
     for (size_t i = 0; i < mLightCameras.size(); ++i) {
         const LightCamera& cam = mLightCameras[i];
         gpu::GpuLightView v{};
@@ -277,17 +279,12 @@ void GpuScene::uploadLightViews() {
         v.axisTexel = glm::vec4(cam.axis, cam.isOrthographic ? cam.texelSizeM : cam.texelPerDepth);
         v.info = glm::uvec4(cam.lightIndex, cam.isOrthographic ? 1u : 0u, 0u, 0u);
         views.push_back(v);
-    }
-    std::vector<glm::mat4> projections;
-    for (const gpu::GpuLightView& v : views)
         projections.push_back(v.clipFromWorld);
+        if (!cam.isShadowOnly) emitting.push_back(cam.getClipFromWorld());
+    }
     if (projections != mUploadedViews) {
         mUploadedViews = std::move(projections);
         ++mLightViewsVersion;
-    }
-    std::vector<glm::mat4> emitting;
-    for (const LightCamera& cam : mLightCameras) {
-        if (!cam.isShadowOnly) emitting.push_back(cam.getClipFromWorld());
     }
     if (emitting != mEmittingViews) {
         mEmittingViews = std::move(emitting);

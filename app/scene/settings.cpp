@@ -180,9 +180,8 @@ const std::vector<SettingDesc>& table() {
          "1 / importance_frames (an exponential average), so the maps hold about 1.75x "
          "importance_samples at 4 for a quarter of the gather; they start anew when the "
          "settings, the image size, the scene's lights or objects (added, removed) or an "
-         "emitting light view change, not when the camera or the seed does (any map is an unbiased "
-         "pdf: a moving "
-         "view's aim lags a few frames); 1 = each frame its own maps",
+         "emitting light view change, not when the camera or the seed does (any map is an "
+         "unbiased pdf: a moving view's aim lags a few frames); 1 = each frame its own maps",
          {}},
         {"rng", SettingType::Enum, 0, 0, 2, "",
          "which random numbers scatter a photon from frame to frame: fixed (keyed on the grid cell "

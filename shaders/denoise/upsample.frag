@@ -3,11 +3,10 @@
 // them. Each of the four is weighted bilinearly, by the normal test and the off-plane distance
 // of the filter (atrous.frag) on its guide texel (filter_input.frag), and read as irradiance;
 // the sum is multiplied by the pixel's reflectance. A tap counts only on the pixel's own
-// surface: a surface weight of kSharedSurface or more, with the footprint measured towards the
-// nearest of the pixel's four neighbours d pixels away (beside a depth edge, such as a room's
-// inside seen through its door, the far side would take the step across the edge for the
-// footprint and pass a wall metres behind), and its point within kSameSurfaceReach footprints
-// (not another surface in the same plane: the room's floor beyond the door, the yard before it).
+// surface: a surface weight of kSharedSurface or more (the footprint measured towards the nearest
+// of the pixel's four neighbours d pixels away, computePlaneScale), and its point within
+// kSameSurfaceReach footprints (not another surface in the same plane: the room's floor beyond
+// the door, the yard before it).
 // A pixel none of the four shares a surface with (a feature thinner than d pixels) takes the
 // bilinear weights alone. At a buffer of the image's size the light passes as it is. The caustic
 // photons' light, splatted apart at the image's size and unfiltered (shared/photon_data.h,
@@ -58,7 +57,7 @@ vec3 upsample(ivec2 pixel) {
     ivec2 size = textureSize(uSource, 0);
     vec3 n = texelFetch(uNormal, pixel, 0).xyz;
     // Footprints of a buffer pixel on this surface.
-    float planeScale = computeNearestPlaneScale(pixel, position.xyz, params.iteration.w);
+    float planeScale = computePlaneScale(pixel, position.xyz, params.iteration.w);
     vec2 at = (vec2(pixel) - float(params.iteration.w / 2)) / float(params.iteration.w); // in buffer pixels
     ivec2 first = ivec2(floor(at));
     vec3 sum = vec3(0.0);

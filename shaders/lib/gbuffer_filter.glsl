@@ -22,21 +22,12 @@ float weighNormals(float cosAngle) {
 
 vec3 getReflectance(ivec2 g) { return max(texelFetch(uDiffuse, g, 0).rgb, vec3(kMinReflectance)); }
 
-// 1 / (kPlaneFootprints x the distance on the surface of G-buffer pixel g to the point `step`
-// pixels beside it): the off-plane distance over it is a tap's exponent. A pixel alone on its
-// surface gets no plane test.
+// 1 / (kPlaneFootprints x the distance on the surface of G-buffer pixel g to the nearest of the
+// points `step` pixels to its left, right, below and above): the off-plane distance over it is a
+// tap's exponent. The nearest, so that a pixel beside a depth edge (a room's inside seen through
+// its door) measures its footprint on its own surface, not the step across the edge (which let a
+// wall metres in front pass the plane test). A pixel alone on its surface gets no plane test.
 float computePlaneScale(ivec2 g, vec3 position, int step) {
-    ivec2 size = ivec2(frame.imageSize.xy);
-    ivec2 beside = g + ivec2(g.x + step < size.x ? step : -step, 0);
-    vec4 besidePosition = texelFetch(uPosition, clamp(beside, ivec2(0), size - 1), 0);
-    float footprint = besidePosition.w >= 0.5 ? length(besidePosition.xyz - position) : 1e30;
-    return 1.0 / max(kPlaneFootprints * footprint, 1e-30);
-}
-
-// computePlaneScale's, from the nearest of the points `step` pixels to the left, right, below and
-// above: a pixel beside a depth edge (a wall's inside seen through a door) measures its
-// footprint on its own surface, not across the edge.
-float computeNearestPlaneScale(ivec2 g, vec3 position, int step) {
     ivec2 size = ivec2(frame.imageSize.xy);
     float footprint = 1e30;
     const ivec2 kSides[4] = ivec2[4](ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1));

@@ -333,7 +333,7 @@ void clipDisc(uint index, vec3 p, vec3 n, float radius) {
                                   : vec2(above.normalT[lane], above.normalB[lane]);
         vec2 ray2 = getClipDirection(i);
         poles[i] = t < radius ? computeClipPole(ray2 * t, normal2, ray2) : vec2(0.0);
-        hitsM[i] = min(t, radius);
+        hitsM[i] = t; // the radius where nothing was met (RayQuad none)
     }
     removeEndingLines(poles, hitsM, radius);
     removeRepeatedLines(poles, radius);

@@ -28,19 +28,25 @@ struct SplatImages {
     Image diffuse; // the viewer G-buffer's reflectance, row 0 at the top like indirect
 };
 
-SplatImages renderCornell(const std::string& resolution, int seed = 1, float radiusScale = 1.0f) {
-    const Scene scene = loadScene(std::string(ISPM_ASSET_DIR) + "/scenes/cornell.json");
+// The scene's settings at kSize, 20,000 photons, splats at `resolution`, unfiltered.
+Settings makeSplatSettings(const Scene& scene, const std::string& resolution) {
     Settings s = scene.settings;
     s.set("width", kSize, "test");
     s.set("height", kSize, "test");
     s.set("photons", 20000, "test");
-    s.set("bounces", 2, "test");
-    s.set("shadow_map_size", 512, "test");
     // The splats alone: the filter would smooth both images alike and hide the upsample's errors.
     s.set("denoise", 0, "test");
+    s.setEnum("splat_resolution", resolution, "test");
+    return s;
+}
+
+SplatImages renderCornell(const std::string& resolution, int seed = 1, float radiusScale = 1.0f) {
+    const Scene scene = loadScene(std::string(ISPM_ASSET_DIR) + "/scenes/cornell.json");
+    Settings s = makeSplatSettings(scene, resolution);
+    s.set("bounces", 2, "test");
+    s.set("shadow_map_size", 512, "test");
     s.set("seed", seed, "test");
     s.set("radius_scale", radiusScale, "test");
-    s.setEnum("splat_resolution", resolution, "test");
     FrameRunner runner(scene, s, gl::TimingMethod::CpuFinish);
     runner.renderFrame();
     return {readTextureImage(runner.getAov(Aov::Indirect)),
@@ -179,13 +185,8 @@ double renderBackWallThroughWindow(const std::string& resolution) {
     })");
     const Scene scene = parseScene(doc, "window.json", ".");
     auto render = [&](const std::string& r, Image* position) {
-        Settings s = scene.settings;
-        s.set("width", kSize, "test");
-        s.set("height", kSize, "test");
-        s.set("photons", 20000, "test");
+        Settings s = makeSplatSettings(scene, r);
         s.setEnum("radius_mode", "path_density", "test");
-        s.set("denoise", 0, "test");
-        s.setEnum("splat_resolution", r, "test");
         FrameRunner runner(scene, s, gl::TimingMethod::CpuFinish);
         runner.renderFrame();
         if (position)
