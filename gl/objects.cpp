@@ -62,8 +62,22 @@ void Buffer::upload(size_t offsetBytes, size_t bytes, const void* data) const {
 void Buffer::download(size_t offsetBytes, size_t bytes, void* out) const {
     assert(offsetBytes + bytes <= mSize);
     if (bytes == 0) return;
-    glGetNamedBufferSubData(getId(), static_cast<GLintptr>(offsetBytes),
-                            static_cast<GLsizeiptr>(bytes), out);
+    if (bytes > kStagedReadBytes) {
+        glGetNamedBufferSubData(getId(), static_cast<GLintptr>(offsetBytes),
+                                static_cast<GLsizeiptr>(bytes), out);
+        return;
+    }
+    if (mStagingSize < bytes) {
+        GLuint id = 0;
+        glCreateBuffers(1, &id);
+        mStaging = Handle<deleteBuffer>(id);
+        mStagingSize = bytes;
+        glNamedBufferStorage(id, static_cast<GLsizeiptr>(bytes), nullptr, GL_CLIENT_STORAGE_BIT);
+        setLabel(GL_BUFFER, id, "read-back staging");
+    }
+    glCopyNamedBufferSubData(getId(), mStaging.get(), static_cast<GLintptr>(offsetBytes), 0,
+                             static_cast<GLsizeiptr>(bytes));
+    glGetNamedBufferSubData(mStaging.get(), 0, static_cast<GLsizeiptr>(bytes), out);
 }
 
 void Buffer::clearToZero() const {

@@ -52,7 +52,11 @@ class Buffer {
     template <typename T> void upload(std::span<const T> items, size_t offsetBytes = 0) const {
         upload(offsetBytes, items.size_bytes(), items.data());
     }
+    // Waits for the GPU. A read of at most kStagedReadBytes goes through a small buffer of this
+    // one's own (a GPU copy, then the read): a driver that moves a buffer read often by the host
+    // into host memory (NVIDIA's does) then moves that one, not the counters the shaders use.
     void download(size_t offsetBytes, size_t bytes, void* out) const;
+    static constexpr size_t kStagedReadBytes = 64 * 1024;
     template <typename T> std::vector<T> read(size_t count, size_t offsetBytes = 0) const {
         std::vector<T> items(count);
         download(offsetBytes, count * sizeof(T), items.data());
@@ -73,6 +77,8 @@ class Buffer {
   private:
     Handle<deleteBuffer> mHandle;
     size_t mSize = 0;
+    mutable Handle<deleteBuffer> mStaging; // download's copy of small reads
+    mutable size_t mStagingSize = 0;
 };
 
 enum class Filter { Nearest, Linear };

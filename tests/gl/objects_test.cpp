@@ -41,6 +41,22 @@ TEST_F(ObjectsTest, BufferRoundTripMoveAndDelete) {
     EXPECT_FALSE(glIsBuffer(id));
 }
 
+TEST_F(ObjectsTest, SmallReadsThroughTheStagingCopyMatchLargeOnes) {
+    // Reads of up to kStagedReadBytes go through a copy; the rest straight from the buffer.
+    constexpr size_t kWords = gl::Buffer::kStagedReadBytes / sizeof(uint32_t) * 2;
+    std::vector<uint32_t> data(kWords);
+    std::iota(data.begin(), data.end(), 11u);
+    const gl::Buffer buffer = gl::Buffer::fromSpan<uint32_t>("staged reads", data);
+    EXPECT_EQ(buffer.read<uint32_t>(kWords), data); // large: direct
+    // Offsets, and a size past the staging copy's first (it grows).
+    EXPECT_EQ(buffer.read<uint32_t>(2, 40), std::vector<uint32_t>({21u, 22u}));
+    const std::vector<uint32_t> staged = buffer.read<uint32_t>(1000, 400);
+    EXPECT_EQ(staged, std::vector<uint32_t>(data.begin() + 100, data.begin() + 1100));
+    // A read sees what the GPU wrote after the last one.
+    buffer.clearRangeToZero(40, 8);
+    EXPECT_EQ(buffer.read<uint32_t>(3, 36), std::vector<uint32_t>({20u, 0u, 0u}));
+}
+
 TEST_F(ObjectsTest, TextureUploadReadAndArrays) {
     constexpr int kW = 7; // awkward sizes catch row-stride mistakes
     constexpr int kH = 3;
