@@ -196,6 +196,13 @@ const char* getContextPathName(ContextPath path) {
     return "?";
 }
 
+bool isCurrentRendererSoftware() {
+    const auto* text = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    const std::string_view renderer(text ? text : "");
+    return renderer.find("llvmpipe") != std::string_view::npos ||
+           renderer.find("softpipe") != std::string_view::npos;
+}
+
 namespace {
 const Context* gLoadedBy = nullptr; // whose GetProcAddress filled glad's pointers
 } // namespace
@@ -225,9 +232,7 @@ void Context::initialise(ContextPath path, std::string device) {
     mInfo.version = read(GL_VERSION);
     mInfo.glslVersion = read(GL_SHADING_LANGUAGE_VERSION);
     mInfo.device = std::move(device);
-    mInfo.isSoftware = mInfo.renderer.find("llvmpipe") != std::string::npos ||
-                       mInfo.renderer.find("softpipe") != std::string::npos ||
-                       isSoftwareDevice(mInfo.device.c_str());
+    mInfo.isSoftware = isCurrentRendererSoftware() || isSoftwareDevice(mInfo.device.c_str());
     installDebugOutput();
 }
 

@@ -26,6 +26,9 @@ struct ContextInfo {
     bool isSoftware = false; // llvmpipe/softpipe: timer queries are not trusted there
 };
 
+// Whether the current context renders in software (llvmpipe, softpipe): its GL_RENDERER.
+bool isCurrentRendererSoftware();
+
 class Context {
   public:
     virtual ~Context();

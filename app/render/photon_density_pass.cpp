@@ -148,7 +148,8 @@ void PhotonDensityPass::executeSlice(const FrameInputs& inputs, uint32_t stage, 
     if (cellBytes != mCells.getSize()) mCells = gl::Buffer("photon density cells", cellBytes);
     if (inputs.settings.splatClip) reserveClip();
     if (stage == 0 && slice == 0) {
-        mCells.clearToZero();
+        // The table (the caustic list is written before it is read; its command follows).
+        mZeroFill.fill(mCells, mCausticOffset);
         const glm::uvec4 draw[gpu::kSplatDrawUvec4s] = {
             {gpu::getSplatIndexCount(inputs.settings.splatShape), 0, 0, 0}, {0, 0, 0, 0}};
         mCells.upload(mCausticOffset, sizeof(draw), draw);

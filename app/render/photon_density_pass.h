@@ -7,6 +7,7 @@
 
 #include "render/pass.h"
 #include "render/photon_buffers.h"
+#include "render/zero_fill.h"
 
 namespace ispm {
 
@@ -31,7 +32,10 @@ class PhotonDensityPass final : public Pass {
     // Slice `slice` of `slices` of stage `stage` (a frame drawn in slices); execute() runs every
     // stage's slices in order.
     void executeSlice(const FrameInputs& inputs, uint32_t stage, uint32_t slice, uint32_t slices);
-    void reloadPrograms(ShaderReloadReport& report) override { mPrograms.reloadIfChanged(report); }
+    void reloadPrograms(ShaderReloadReport& report) override {
+        mPrograms.reloadIfChanged(report);
+        mZeroFill.reloadIfChanged(report);
+    }
     // Per result photon: its disc's clip lines and box extents (shared/splat_clip.h), written
     // with splat_clip.
     const gl::Buffer& getClip() const { return mClip; }
@@ -60,6 +64,7 @@ class PhotonDensityPass final : public Pass {
     void reserveClip(); // mClip, one entry per result photon
 
     ProgramVariants mPrograms; // by stage (DENSITY_STAGE), CLIP_DISCS and WIDEN_STRONG
+    ZeroFill mZeroFill;        // clears the table each frame
     gl::Buffer mParams;        // gpu::DensityParams
     gl::Buffer mCells;         // the hashed grid (density radii), then the caustic list
     gl::Buffer mLightPower;    // widen_strong: per light its stored photons and power
