@@ -6,18 +6,24 @@
 # later without stalling) and prints the per-pass medians with the thesis's figures beside the
 # passes they correspond to. On a software renderer it says so: its times are CPU-clock times.
 # Usage: tools/gpu-bench.sh [BUILD_DIR] [BENCH-ARGS...]   (default build-gpu; e.g. --frames 50)
+# ISPM_BIN=path runs that binary instead of building one (a GPU machine without the build's
+# dependencies; BUILD_DIR is then ignored).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-build-gpu}
 [ $# -gt 0 ] && shift
-# A new build folder is configured Release without tests; an existing one keeps its options.
-if [ -f "$build/CMakeCache.txt" ]; then
-    cmake -S "$root" -B "$build" > /dev/null
+if [ -n "${ISPM_BIN:-}" ]; then
+    ispm=$ISPM_BIN
 else
-    cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DISPM_BUILD_TESTS=OFF > /dev/null
+    # A new build folder is configured Release without tests; an existing one keeps its options.
+    if [ -f "$build/CMakeCache.txt" ]; then
+        cmake -S "$root" -B "$build" > /dev/null
+    else
+        cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DISPM_BUILD_TESTS=OFF > /dev/null
+    fi
+    cmake --build "$build" -j"$(nproc)" --target ispm > /dev/null
+    ispm="$build/ispm"
 fi
-cmake --build "$build" -j"$(nproc)" --target ispm > /dev/null
-ispm="$build/ispm"
 "$ispm" info | sed -n '1,4p'
 json=$(mktemp)
 trap 'rm -f "$json"' EXIT

@@ -40,5 +40,5 @@ print(trace, d["total_median_ms"], d["photons"]["stored"])')
     perPhoton=$(python3 -c "print($trace / max($stored, 1))")
     [ -z "$base" ] && base=$perPhoton
     ratio=$(python3 -c "print('%.2f' % ($perPhoton / $base))")
-    printf "%-6s %10s %8s %10.1f %10.1f %22s\n" "$name" "$triangles" "$stored" "$trace" "$frame" "$ratio"
+    printf "%-6s %10s %8s %10.3f %10.2f %22s\n" "$name" "$triangles" "$stored" "$trace" "$frame" "$ratio"
 done
