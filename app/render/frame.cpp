@@ -460,14 +460,17 @@ void FrameRunner::adaptPhotonBudget() {
     Settings next = mSettings;
     next.set("photons", photons, "frame_ms_target");
     setSettings(next);
-    // Timer queries answer a few frames late: those frames still measured the old budget.
-    mBudgetSettle = mTimer.getMethod() == gl::TimingMethod::TimerQuery
-                        ? int(gl::PassTimer::kMaxFramesInFlight)
-                        : 0;
+    // Timer queries answer frames late: the frames still in flight measure the old budget.
+    mBudgetSettle = int(mTimer.getFramesInFlight());
 }
 
 void FrameRunner::waitForTimings() {
-    if (auto samples = mTimer.collectLatest()) setTimings(*samples);
+    // bench and render wait after every frame, so finishFrame's collect rarely finds a frame's
+    // queries answered on a GPU: the budget follows these.
+    if (auto samples = mTimer.collectLatest()) {
+        setTimings(*samples);
+        adaptPhotonBudget();
+    }
 }
 
 void FrameRunner::setTimings(const std::vector<gl::PassTimer::Sample>& samples) {

@@ -1,6 +1,6 @@
 // frame_ms_target in a running FrameRunner: a target no frame can meet takes the budget down to
 // its floor in 2x steps, a target far above the frame takes it up, and a still view that
-// accumulates keeps its budget.
+// accumulates keeps its budget; timer queries read after every frame (bench) set it too.
 #include "support/gl_fixture.h"
 
 #include "render/frame.h"
@@ -52,6 +52,18 @@ TEST_F(FrameBudgetTest, BudgetFollowsTheTarget) {
             runner.renderFrame();
         EXPECT_EQ(runner.getSettings().getInt("photons"), 8000);
     }
+}
+
+TEST_F(FrameBudgetTest, TimerQueriesReadAfterEveryFrameStillSetTheBudget) {
+    // bench and render wait for each frame's timer queries (waitForTimings) as soon as it is
+    // drawn, before the frame after it looks for finished ones: the budget must follow them.
+    const Scene scene = loadScene(std::string(ISPM_ASSET_DIR) + "/scenes/cornell.json");
+    FrameRunner runner(scene, makeSettings(scene, 1e6, 0), gl::TimingMethod::TimerQuery);
+    for (int f = 0; f < 3; ++f) {
+        runner.renderFrame();
+        runner.waitForTimings();
+    }
+    EXPECT_EQ(runner.getSettings().getInt("photons"), 16000);
 }
 
 } // namespace
