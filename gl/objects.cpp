@@ -62,6 +62,9 @@ void Buffer::upload(size_t offsetBytes, size_t bytes, const void* data) const {
 void Buffer::download(size_t offsetBytes, size_t bytes, void* out) const {
     assert(offsetBytes + bytes <= mSize);
     if (bytes == 0) return;
+    // Shader writes reach buffer commands (the copy, the read) only after this barrier (GL 4.5
+    // section 7.13.2); here, so that no caller has to remember it.
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     if (bytes > kStagedReadBytes) {
         glGetNamedBufferSubData(getId(), static_cast<GLintptr>(offsetBytes),
                                 static_cast<GLsizeiptr>(bytes), out);
