@@ -1,10 +1,12 @@
-// KHR_debug callback: one log line per message, counted by severity/type.
+// KHR_debug callback: one log line per error or warning (every message with ISPM_GL_DEBUG=1),
+// counted by severity/type.
 #include "gl/debug.h"
 
 #include "gl/gl.h"
 
 #include <atomic>
 #include <cstdio>
+#include <cstdlib>
 #include <deque>
 #include <mutex>
 
@@ -65,7 +67,10 @@ void GLAPIENTRY onDebugMessage(GLenum source, GLenum type, GLuint id, GLenum sev
     } else {
         ++gOther;
     }
-    if (isError || isWarning || gVerbose) {
+    // A performance message describes the driver's own choices (NVIDIA's: where it keeps a
+    // buffer, a shader rebuilt for a state): counted, printed when verbose.
+    const bool isPerformance = type == GL_DEBUG_TYPE_PERFORMANCE;
+    if (isError || (isWarning && !isPerformance) || gVerbose) {
         std::fprintf(stderr, "[gl %s %u] %s\n", describeType(type), id, text.c_str());
     }
 }
@@ -73,6 +78,8 @@ void GLAPIENTRY onDebugMessage(GLenum source, GLenum type, GLuint id, GLenum sev
 } // namespace
 
 void installDebugOutput() {
+    if (const char* verbose = std::getenv("ISPM_GL_DEBUG"); verbose && *verbose)
+        gVerbose = std::string_view(verbose) != "0";
     glEnable(GL_DEBUG_OUTPUT);
     glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
     glDebugMessageCallback(onDebugMessage, nullptr);

@@ -21,7 +21,9 @@ DebugCounts getDebugCounts();
 void resetDebugCounts();
 // The last error messages (bounded), for test failure reports.
 std::vector<std::string> getRecentDebugErrors();
-// Logs notifications too (off by default: llvmpipe is chatty about shader compiles).
+// Logs notifications and performance messages too (off by default: llvmpipe is chatty about
+// shader compiles, NVIDIA about where it keeps buffers); ISPM_GL_DEBUG=1 sets it when the
+// debug output is installed.
 void setDebugVerbose(bool verbose);
 
 // Drops the shader compiler's messages until the enclosing DebugGroup ends (which restores the

@@ -1,4 +1,5 @@
-// The headless context: 4.5 core, a named path, debug output that really reports errors.
+// The headless context: 4.5 core, a named path, debug output that really reports errors and
+// keeps the driver's performance notes quiet unless asked.
 #include "support/gl_fixture.h"
 
 #include "gl/gl.h"
@@ -30,6 +31,35 @@ TEST_F(ContextTest, DebugOutputCountsErrors) {
     EXPECT_GE(gl::getDebugCounts().errors, 1u);
     EXPECT_FALSE(gl::getRecentDebugErrors().empty());
     gl::resetDebugCounts(); // the error was provoked on purpose
+}
+
+TEST_F(ContextTest, PerformanceMessagesAreCountedAndPrintedWhenVerbose) {
+    // NVIDIA's driver reports where it keeps each buffer as a medium-severity performance
+    // message: counted as a warning, printed only with ISPM_GL_DEBUG=1 (setDebugVerbose), while
+    // a warning about ispm's own use of GL is always printed.
+    const auto insert = [](GLenum type, const char* text) {
+        glDebugMessageInsert(GL_DEBUG_SOURCE_APPLICATION, type, 1, GL_DEBUG_SEVERITY_MEDIUM, -1,
+                             text);
+    };
+    const uint64_t before = gl::getDebugCounts().warnings;
+    testing::internal::CaptureStderr();
+    insert(GL_DEBUG_TYPE_PERFORMANCE, "driver note one");
+    std::string printed = testing::internal::GetCapturedStderr();
+    EXPECT_EQ(gl::getDebugCounts().warnings, before + 1);
+    EXPECT_EQ(printed.find("driver note one"), std::string::npos);
+
+    gl::setDebugVerbose(true);
+    testing::internal::CaptureStderr();
+    insert(GL_DEBUG_TYPE_PERFORMANCE, "driver note two");
+    printed = testing::internal::GetCapturedStderr();
+    gl::setDebugVerbose(false);
+    EXPECT_NE(printed.find("driver note two"), std::string::npos);
+
+    testing::internal::CaptureStderr();
+    insert(GL_DEBUG_TYPE_UNDEFINED_BEHAVIOR, "undefined use");
+    printed = testing::internal::GetCapturedStderr();
+    EXPECT_NE(printed.find("undefined use"), std::string::npos);
+    EXPECT_EQ(gl::getDebugCounts().warnings, before + 3);
 }
 
 TEST(ContextPaths, ForcedPathsWorkOrFailClearly) {
