@@ -74,6 +74,9 @@ DensityRun runDensity(const Scene& scene, std::vector<gpu::ResultPhoton> photons
     const auto count = uint32_t(photons.size());
     PhotonBuffers buffers;
     buffers.reserve(1, count);
+    // Every binding the pass's shaders declare holds a buffer, as in a frame (the light counters
+    // a photon in view is counted into; an unbound one is undefined behaviour).
+    buffers.startFrame({}, scene.lights.size());
     buffers.getResult().upload(std::span<const gpu::ResultPhoton>(photons));
     gpu::PhotonCounters counters{};
     counters.result = glm::uvec4(count, count, 0, 1);
