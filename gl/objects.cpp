@@ -70,7 +70,7 @@ void Buffer::download(size_t offsetBytes, size_t bytes, void* out) const {
                                 static_cast<GLsizeiptr>(bytes), out);
         return;
     }
-    if (mStagingSize < bytes) {
+    if (!mStaging || mStagingSize < bytes) { // none yet (or moved away), or too small
         GLuint id = 0;
         glCreateBuffers(1, &id);
         mStaging = Handle<deleteBuffer>(id);
