@@ -17,6 +17,7 @@ class ZeroFill {
     // later shader, command and update reads of the buffer.
     void fill(const gl::Buffer& buffer, size_t bytes) const;
     void reloadIfChanged(ShaderReloadReport& report);
+    bool usesCompute() const { return mCompute; } // else glClearBufferSubData
 
   private:
     bool mCompute = false;

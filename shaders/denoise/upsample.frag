@@ -76,7 +76,9 @@ vec3 upsample(ivec2 pixel) {
             if (guide.w == kGuideNoSurface) continue;
             vec3 irradiance = texelFetch(uSource, q, 0).rgb;
             float shared_ = weighGuide(guide, n, position.xyz, planeScale);
-            bool near = length(guide.xyz - position.xyz) * planeScale <= kSameSurfaceReach;
+            // planeScale is 1 / (kPlaneFootprints footprints).
+            float footprints = length(guide.xyz - position.xyz) * planeScale * kPlaneFootprints;
+            bool near = footprints <= kSameSurfaceReach;
             float w = shared_ >= kSharedSurface && near ? tent * shared_ : 0.0;
             sum += w * irradiance;
             weights += w;

@@ -1,8 +1,7 @@
 // ZeroFill: both methods zero exactly the range asked for, across the compute fill's 64 MiB
-// chunks, and the renderer picks the clear on llvmpipe.
+// chunks, and Auto picks the clear on llvmpipe.
 #include "support/gl_fixture.h"
 
-#include "gl/context.h"
 #include "render/zero_fill.h"
 
 #include <algorithm>
@@ -46,11 +45,13 @@ TEST_F(ZeroFillTest, ComputeFillCrossesItsChunks) {
     EXPECT_TRUE(std::all_of(firstMarker, words.end(), [](uint32_t w) { return w == kMarker; }));
 }
 
-TEST_F(ZeroFillTest, SoftwareRenderersAreRecognised) {
-    // The tests run on llvmpipe (DESIGN.md), where Auto must take the clear.
-    const std::string renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    EXPECT_EQ(gl::isCurrentRendererSoftware(), renderer.find("llvmpipe") != std::string::npos ||
-                                                   renderer.find("softpipe") != std::string::npos);
+TEST_F(ZeroFillTest, AutoClearsOnSoftwareRenderersAndFillsOnGpus) {
+    // Auto follows the context's renderer: the clear on llvmpipe (the tests' renderer,
+    // DESIGN.md), the compute fill on a GPU; the explicit methods are what they say.
+    const bool software = getTestContext().getInfo().isSoftware;
+    EXPECT_EQ(ZeroFill().usesCompute(), !software);
+    EXPECT_TRUE(ZeroFill(ZeroFill::Method::Compute).usesCompute());
+    EXPECT_FALSE(ZeroFill(ZeroFill::Method::Clear).usesCompute());
 }
 
 } // namespace
