@@ -56,6 +56,22 @@ vec3 safeInverse(vec3 d) {
                       abs(d.z) > kTiny ? d.z : (d.z >= 0.0 ? kTiny : -kTiny));
 }
 
+// Traversal visits the nearer child of an interior node first: both children's boxes are tested
+// when the node is visited, the missed ones dropped, and the nearer pushed last. The hits found
+// under it then cut off the farther one, whose box is tested again when popped. The stack holds
+// node indices alone (a stack per invocation: on a GPU a larger one costs occupancy). Expects
+// stack, top, invDir and hit in scope; `nodes` is the level's array.
+#define ISPM_BVH_PUSH_CHILDREN(nodes, a, b, origin)                                                \
+    {                                                                                              \
+        GpuBvhNode childA = nodes[a];                                                              \
+        GpuBvhNode childB = nodes[b];                                                              \
+        float tA = intersectBox(origin, invDir, childA.lo.xyz, childA.hi.xyz, hit.t);              \
+        float tB = intersectBox(origin, invDir, childB.lo.xyz, childB.hi.xyz, hit.t);              \
+        bool aFirst = tA <= tB;                                                                    \
+        if (max(tA, tB) < kNoHitDistance && top < kBvhStackSize) stack[top++] = aFirst ? b : a;    \
+        if (min(tA, tB) < kNoHitDistance && top < kBvhStackSize) stack[top++] = aFirst ? a : b;    \
+    }
+
 // Closest hit in one instance (updates hit when closer than hit.t); with anyHit, the first hit
 // found ends the search (a shadow ray asks only whether something is there).
 bool intersectInstance(uint instanceIndex, vec3 originW, vec3 dirW, inout RayHit hit, bool anyHit) {
@@ -87,9 +103,8 @@ bool intersectInstance(uint instanceIndex, vec3 originW, vec3 dirW, inout RayHit
                     found = true;
                 }
             }
-        } else if (top + 2 <= kBvhStackSize) {
-            stack[top++] = a;
-            stack[top++] = b;
+        } else {
+            ISPM_BVH_PUSH_CHILDREN(blasNodes, a, b, origin)
         }
     }
     return found;
@@ -118,9 +133,8 @@ bool traceRayWith(vec3 origin, vec3 dir, float tMax, bool anyHit, out RayHit hit
                 found = intersectInstance(tlasInstanceOrder[i], origin, dir, hit, anyHit) || found;
                 if (anyHit && found) return true;
             }
-        } else if (top + 2 <= kBvhStackSize) {
-            stack[top++] = a;
-            stack[top++] = b;
+        } else {
+            ISPM_BVH_PUSH_CHILDREN(tlasNodes, a, b, origin)
         }
     }
     return found;
