@@ -46,7 +46,10 @@ PhotonDensityPass::PhotonDensityPass(PhotonBuffers& buffers)
     : mBuffers(buffers),
       mPrograms({.label = "photon density",
                  .stages = {{gl::ShaderStage::Compute, "photon/photon_density.comp"}}}),
-      mParams("photon density parameters", sizeof(gpu::DensityParams)) {}
+      mOrderPrograms({.label = "photon order",
+                      .stages = {{gl::ShaderStage::Compute, "photon/photon_order.comp"}}}),
+      mParams("photon density parameters", sizeof(gpu::DensityParams)),
+      mOrderParams("photon order parameters", sizeof(gpu::OrderParams)) {}
 
 void PhotonDensityPass::setTravelRadii(const FrameInputs& inputs, glm::uvec4 slice) {
     const SplatRadii r = computeSplatRadii(inputs.scene.getSurfaceArea(),
@@ -116,6 +119,28 @@ void PhotonDensityPass::dispatch(glm::uvec4 slice) const {
     mBuffers.dispatchSlice(stored, slice.x, slice.y);
 }
 
+void PhotonDensityPass::sortPhotons(const FrameInputs& inputs, size_t countsAt, size_t orderAt) {
+    mCells.clearRangeToZero(countsAt * sizeof(uint32_t), gpu::kOrderCells * sizeof(uint32_t));
+    const Aabb& bounds = inputs.scene.getBounds();
+    const glm::vec3 extent = glm::max(bounds.getExtent(), glm::vec3(1e-6f));
+    const gpu::OrderParams params{
+        .lo = glm::vec4(bounds.lo, 0.0f),
+        .scale = glm::vec4(float(1u << gpu::kOrderAxisBits) / extent, 0.0f),
+        .control = glm::uvec4(uint32_t(countsAt), uint32_t(orderAt), 0u, 0u)};
+    mOrderParams.upload(0, sizeof(params), &params);
+    mBuffers.bind();
+    mCells.bindBase(gl::BufferTarget::Storage, gpu::kBindingDensityCells);
+    mOrderParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
+    for (uint32_t stage : {gpu::kOrderStageCount, gpu::kOrderStageScan, gpu::kOrderStageScatter}) {
+        mOrderPrograms.get({"ORDER_STAGE " + std::to_string(stage) + "u"}).use();
+        if (stage == gpu::kOrderStageScan)
+            gl::dispatchCompute(1);
+        else
+            dispatch(glm::uvec4(0u, 1u, 0u, 0u)); // every stored photon
+        gl::memoryBarrier(gl::Barrier::Storage);
+    }
+}
+
 uint32_t PhotonDensityPass::getStageCount(const FrameSettings& settings) {
     if (settings.radiusMode == gpu::kRadiusDensity) return 2u;
     return settings.widenStrong ? 2u : 1u;
@@ -141,11 +166,17 @@ void PhotonDensityPass::executeSlice(const FrameInputs& inputs, uint32_t stage, 
     const uint32_t slots =
         std::bit_ceil(std::max(mBuffers.getResultCapacity(), 1u) * kSlotsPerPhoton);
     // The table, then the caustic photons' draw command and list (a slot is 32 bytes: the
-    // list's offset suits any storage-buffer alignment up to 32 x slots).
+    // list's offset suits any storage-buffer alignment up to 32 x slots), then with splat_clip
+    // the radius stage's order: per grid cell a count, then the photons' indices.
+    const size_t capacity = std::max(mBuffers.getResultCapacity(), 1u);
     mCausticOffset = size_t(slots) * gpu::kDensitySlotUints * sizeof(uint32_t);
-    const size_t cellBytes = mCausticOffset + gpu::kSplatDrawUvec4s * sizeof(glm::uvec4) +
-                             size_t(std::max(mBuffers.getResultCapacity(), 1u)) * sizeof(uint32_t);
+    const size_t orderCountsOffset =
+        mCausticOffset + gpu::kSplatDrawUvec4s * sizeof(glm::uvec4) + capacity * sizeof(uint32_t);
+    const size_t orderOffset = orderCountsOffset + gpu::kOrderCells * sizeof(uint32_t);
+    const size_t cellBytes =
+        inputs.settings.splatClip ? orderOffset + capacity * sizeof(uint32_t) : orderCountsOffset;
     if (cellBytes != mCells.getSize()) mCells = gl::Buffer("photon density cells", cellBytes);
+    mOrderOffset = inputs.settings.splatClip ? orderOffset : 0;
     if (inputs.settings.splatClip) reserveClip();
     if (stage == 0 && slice == 0) {
         // The table (the caustic list is written before it is read; its command follows).
@@ -153,6 +184,9 @@ void PhotonDensityPass::executeSlice(const FrameInputs& inputs, uint32_t stage, 
         const glm::uvec4 draw[gpu::kSplatDrawUvec4s] = {
             {gpu::getSplatIndexCount(inputs.settings.splatShape), 0, 0, 0}, {0, 0, 0, 0}};
         mCells.upload(mCausticOffset, sizeof(draw), draw);
+        if (inputs.settings.splatClip)
+            sortPhotons(inputs, orderCountsOffset / sizeof(uint32_t),
+                        orderOffset / sizeof(uint32_t));
     }
     const int neighbours = std::max(int(std::lround(float(inputs.settings.splatNeighbours) *
                                                     inputs.progressive.neighbourFactor)),
@@ -174,6 +208,7 @@ void PhotonDensityPass::executeSlice(const FrameInputs& inputs, uint32_t stage, 
     params.control = glm::uvec4(stage == 0 ? gpu::kDensityStageCount : gpu::kDensityStageRadius,
                                 slots - 1, inputs.progressive.spreadStrongPhotons ? 1u : 0u, 0u);
     params.slice = sliceParams;
+    params.slice.z = uint32_t(mOrderOffset / sizeof(uint32_t));
     mParams.upload(0, sizeof(params), &params);
 
     mBuffers.bind();

@@ -34,6 +34,7 @@ class PhotonDensityPass final : public Pass {
     void executeSlice(const FrameInputs& inputs, uint32_t stage, uint32_t slice, uint32_t slices);
     void reloadPrograms(ShaderReloadReport& report) override {
         mPrograms.reloadIfChanged(report);
+        mOrderPrograms.reloadIfChanged(report);
         mZeroFill.reloadIfChanged(report);
     }
     // Per result photon: its disc's clip lines and box extents (shared/splat_clip.h), written
@@ -44,6 +45,10 @@ class PhotonDensityPass final : public Pass {
     // sets, then their indices (bound at kBindingCausticList for splat.vert).
     const gl::Buffer& getCausticList() const { return mCells; }
     size_t getCausticOffset() const { return mCausticOffset; }
+    // splat_clip (radius_mode density): the stored photons' indices in the order the radius
+    // stage took them (photon_order.comp), at this many bytes into getCausticList()'s buffer;
+    // 0 without splat_clip.
+    size_t getOrderOffset() const { return mOrderOffset; }
     size_t getGpuBytes() const {
         return mCells.getSize() + mClip.getSize() + mLightPower.getSize();
     }
@@ -62,14 +67,20 @@ class PhotonDensityPass final : public Pass {
     void runTravelStage(const FrameInputs& inputs, const gpu::DensityParams& params);
     void useStage(uint32_t stage, const FrameSettings& settings);
     void reserveClip(); // mClip, one entry per result photon
+    // splat_clip: the stored photons' spatial order for the radius stage (photon_order.comp),
+    // its counts at uint countsAt of mCells, the indices at orderAt.
+    void sortPhotons(const FrameInputs& inputs, size_t countsAt, size_t orderAt);
 
-    ProgramVariants mPrograms; // by stage (DENSITY_STAGE), CLIP_DISCS and WIDEN_STRONG
-    ZeroFill mZeroFill;        // clears the table each frame
-    gl::Buffer mParams;        // gpu::DensityParams
-    gl::Buffer mCells;         // the hashed grid (density radii), then the caustic list
-    gl::Buffer mLightPower;    // widen_strong: per light its stored photons and power
+    ProgramVariants mPrograms;      // by stage (DENSITY_STAGE), CLIP_DISCS and WIDEN_STRONG
+    ProgramVariants mOrderPrograms; // by stage (ORDER_STAGE)
+    ZeroFill mZeroFill;             // clears the table each frame
+    gl::Buffer mParams;             // gpu::DensityParams
+    gl::Buffer mOrderParams;        // gpu::OrderParams
+    gl::Buffer mCells;              // the hashed grid (density radii), the caustic list, the order
+    gl::Buffer mLightPower;         // widen_strong: per light its stored photons and power
     gl::Buffer mClip;
     size_t mCausticOffset = 0;
+    size_t mOrderOffset = 0;
 };
 
 } // namespace ispm

@@ -381,8 +381,10 @@ void setTravelRadius(uint index) {
 
 void main() {
     uvec2 range = computeSliceRange(counters.splatDraw.y, params.slice.x, params.slice.y);
-    uint index = range.x + gl_GlobalInvocationID.x;
-    if (index >= range.y) return;
+    uint at = range.x + gl_GlobalInvocationID.x;
+    if (at >= range.y) return;
+    // The radius stage takes the photons in spatial order where photon_order.comp made one.
+    uint index = kStage == kDensityStageRadius && params.slice.z != 0u ? cells[params.slice.z + at] : at;
     if (kStage == kDensityStageTravelPower) {
         addLightPower(index);
         return;

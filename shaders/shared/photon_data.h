@@ -189,6 +189,28 @@ ISPM_CONST uint kDensityStageTravelPower = 3u;
 // widen_strong: a travel-mode disc at most this many times wider than its travel radius.
 ISPM_CONST float kMaxWidening = 2.0f;
 
+// The radius stage's order (splat_clip on): photon_order.comp sorts the stored photons by the
+// Morton code of the cell that holds each in a grid of 2^kOrderAxisBits cells a side over the
+// scene's bounds (a counting sort: count per cell, one group's prefix sum, scatter), so that
+// neighbouring invocations take neighbouring photons: their clip queries walk the same BVH
+// nodes and their table lookups the same cells, which a SIMD renderer runs together (llvmpipe
+// runs a group's lanes in step). The counts and the order follow the caustic list in the
+// density cells buffer.
+ISPM_CONST uint kOrderAxisBits = 5u;
+ISPM_CONST uint kOrderCells = 1u << (3u * kOrderAxisBits);
+ISPM_CONST uint kOrderScanGroupSize = 1024u; // the scan's one group: kOrderCells / 32 invocations
+ISPM_CONST uint kOrderStageCount = 0u;
+ISPM_CONST uint kOrderStageScan = 1u;
+ISPM_CONST uint kOrderStageScatter = 2u;
+
+// Parameters of photon_order.comp (std140, at kBindingPassParams).
+struct OrderParams {
+    vec4 lo;       // xyz = the scene bounds' low corner (m), w unused
+    vec4 scale;    // xyz = grid cells per metre along each axis, w unused
+    uvec4 control; // x = the counts' first uint in the density cells, y = the order's, zw unused
+};
+ISPM_STATIC_ASSERT_SIZE(OrderParams, 48);
+
 // Parameters of photon_density.comp (std140, at kBindingPassParams).
 struct DensityParams {
     vec4 grid;     // x = finest cell (m), y = neighbours k, z = radius min (m), w = radius max (m)
@@ -199,7 +221,8 @@ struct DensityParams {
                    // neighbours only, w = radius mode
     vec4 travel;   // travel modes: radius_min, radius_max (m, times radius_scale), dist_min,
                    // dist_max (m)
-    uvec4 slice;   // x = this slice, y = slices (computeSliceRange); zw unused
+    uvec4 slice;   // x = this slice, y = slices (computeSliceRange); z = the radius stage's
+                   // photon order's first uint in the cells (photon_order.comp), 0: index order
 };
 ISPM_STATIC_ASSERT_SIZE(DensityParams, 80);
 

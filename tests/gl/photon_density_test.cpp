@@ -51,6 +51,8 @@ void addSquare(std::vector<gpu::ResultPhoton>& photons, float x0, float z0, floa
 struct DensityRun {
     std::vector<gpu::ResultPhoton> photons; // with radii
     std::vector<glm::vec4> clip;            // kClipVec4s per photon (shared/splat_clip.h)
+    std::vector<uint32_t> order;            // the radius stage's photon order (with clip lines)
+    Aabb bounds;                            // the scene's, which the order's grid spans
 };
 
 // Runs the density pass alone on `photons`, with the frame of `scene` (camera, BVH); `travelM`
@@ -91,7 +93,13 @@ DensityRun runDensity(const Scene& scene, std::vector<gpu::ResultPhoton> photons
     density.execute(inputs);
     std::vector<glm::vec4> clip; // none in the travel modes
     if (!travelM) clip = density.getClip().read<glm::vec4>(size_t(count) * gpu::kClipVec4s);
-    return {buffers.getResult().read<gpu::ResultPhoton>(count), clip};
+    std::vector<uint32_t> order(count);
+    if (density.getOrderOffset() > 0) {
+        density.getCausticList().download(density.getOrderOffset(), count * sizeof(uint32_t),
+                                          order.data());
+    }
+    return {buffers.getResult().read<gpu::ResultPhoton>(count), clip, order,
+            runner.getGpuScene().getBounds()};
 }
 
 // The median radius of the photons inside [lo, hi] on x and z.
@@ -140,6 +148,45 @@ TEST_F(PhotonDensityTest, RadiusHoldsKPhotonsOnAPlaneOfKnownDensity) {
     // off by sqrt(2) (a wrong k or block area).
     EXPECT_NEAR(double(sparse) / expectedSparse, 1.0, 0.2);
     EXPECT_NEAR(double(dense) / expectedDense, 1.0, 0.2);
+}
+
+// The cell of the order's grid that holds `p`, as photon_order.comp numbers it (Morton order).
+uint32_t computeOrderCell(const Aabb& bounds, glm::vec3 p) {
+    constexpr uint32_t kSide = 1u << gpu::kOrderAxisBits;
+    const glm::vec3 at = (p - bounds.lo) * (float(kSide) / glm::max(bounds.getExtent(), 1e-6f));
+    const glm::uvec3 c(glm::clamp(at, glm::vec3(0.0f), glm::vec3(float(kSide - 1u))));
+    uint32_t cell = 0;
+    for (uint32_t i = 0; i < gpu::kOrderAxisBits; ++i) {
+        for (uint32_t axis = 0; axis < 3; ++axis)
+            cell |= ((c[int(axis)] >> i) & 1u) << (3u * i + axis);
+    }
+    return cell;
+}
+
+TEST_F(PhotonDensityTest, RadiusStageTakesEveryPhotonOnceInSpatialOrder) {
+    // With clip lines the radius stage takes the photons sorted by grid cell (photon_order.comp),
+    // so that neighbouring invocations query the same part of the BVH: every photon exactly
+    // once, cells in Morton order. Two squares far apart, the second written first.
+    std::vector<gpu::ResultPhoton> photons;
+    addSquare(photons, 1.0f, -0.5f, 1.0f, 40, 2u);
+    addSquare(photons, -2.0f, -0.5f, 1.0f, 40, 1u);
+    const DensityRun run = runDensity(makeFloorScene(), photons);
+    std::vector<int> seen(photons.size(), 0);
+    uint32_t lastCell = 0;
+    size_t descents = 0;
+    for (uint32_t index : run.order) {
+        ASSERT_LT(index, photons.size());
+        ++seen[index];
+        const uint32_t cell =
+            computeOrderCell(run.bounds, glm::vec3(photons[index].positionDistance));
+        descents += cell < lastCell ? 1 : 0;
+        lastCell = cell;
+    }
+    EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), std::ptrdiff_t(photons.size()))
+        << "each photon once";
+    EXPECT_EQ(descents, 0u) << "cells in ascending order";
+    // The squares lie in different cells: the list is not the upload's order.
+    EXPECT_NE(run.order.front(), 0u);
 }
 
 // `count` photons at independent uniform positions on [x0, x0 + width] x [z0, z0 + length] of
