@@ -119,14 +119,15 @@ void PhotonDensityPass::dispatch(glm::uvec4 slice) const {
     mBuffers.dispatchSlice(stored, slice.x, slice.y);
 }
 
-void PhotonDensityPass::sortPhotons(const FrameInputs& inputs, size_t countsAt, size_t orderAt) {
-    mCells.clearRangeToZero(countsAt * sizeof(uint32_t), gpu::kOrderCells * sizeof(uint32_t));
-    const Aabb& bounds = inputs.scene.getBounds();
+gpu::OrderParams makeOrderParams(const Aabb& bounds, size_t countsAt, size_t orderAt) {
     const glm::vec3 extent = glm::max(bounds.getExtent(), glm::vec3(1e-6f));
-    const gpu::OrderParams params{
-        .lo = glm::vec4(bounds.lo, 0.0f),
-        .scale = glm::vec4(float(1u << gpu::kOrderAxisBits) / extent, 0.0f),
-        .control = glm::uvec4(uint32_t(countsAt), uint32_t(orderAt), 0u, 0u)};
+    return {.lo = glm::vec4(bounds.lo, 0.0f),
+            .scale = glm::vec4(float(1u << gpu::kOrderAxisBits) / extent, 0.0f),
+            .control = glm::uvec4(uint32_t(countsAt), uint32_t(orderAt), 0u, 0u)};
+}
+
+void PhotonDensityPass::sortPhotons(const FrameInputs& inputs, size_t countsAt, size_t orderAt) {
+    const gpu::OrderParams params = makeOrderParams(inputs.scene.getBounds(), countsAt, orderAt);
     mOrderParams.upload(0, sizeof(params), &params);
     mBuffers.bind();
     mCells.bindBase(gl::BufferTarget::Storage, gpu::kBindingDensityCells);
@@ -165,28 +166,29 @@ void PhotonDensityPass::executeSlice(const FrameInputs& inputs, uint32_t stage, 
     }
     const uint32_t slots =
         std::bit_ceil(std::max(mBuffers.getResultCapacity(), 1u) * kSlotsPerPhoton);
-    // The table, then the caustic photons' draw command and list (a slot is 32 bytes: the
-    // list's offset suits any storage-buffer alignment up to 32 x slots), then with splat_clip
-    // the radius stage's order: per grid cell a count, then the photons' indices.
+    // The table (a slot is 32 bytes), with splat_clip the radius stage's order's counts (one
+    // per grid cell, zeroed with the table), the caustic photons' draw command and list (at an
+    // offset that suits any storage-buffer alignment up to 32 x slots), then with splat_clip the
+    // order's photon indices.
+    const bool ordered = inputs.settings.splatClip;
     const size_t capacity = std::max(mBuffers.getResultCapacity(), 1u);
-    mCausticOffset = size_t(slots) * gpu::kDensitySlotUints * sizeof(uint32_t);
-    const size_t orderCountsOffset =
+    const size_t countsOffset = size_t(slots) * gpu::kDensitySlotUints * sizeof(uint32_t);
+    mCausticOffset = countsOffset + (ordered ? gpu::kOrderCells * sizeof(uint32_t) : 0);
+    const size_t orderOffset =
         mCausticOffset + gpu::kSplatDrawUvec4s * sizeof(glm::uvec4) + capacity * sizeof(uint32_t);
-    const size_t orderOffset = orderCountsOffset + gpu::kOrderCells * sizeof(uint32_t);
-    const size_t cellBytes =
-        inputs.settings.splatClip ? orderOffset + capacity * sizeof(uint32_t) : orderCountsOffset;
+    const size_t cellBytes = orderOffset + (ordered ? capacity * sizeof(uint32_t) : 0);
     if (cellBytes != mCells.getSize()) mCells = gl::Buffer("photon density cells", cellBytes);
-    mOrderOffset = inputs.settings.splatClip ? orderOffset : 0;
+    mOrderOffset = ordered ? orderOffset : 0;
     if (inputs.settings.splatClip) reserveClip();
     if (stage == 0 && slice == 0) {
-        // The table (the caustic list is written before it is read; its command follows).
+        // The table and the counts (the caustic list is written before it is read; its command
+        // follows).
         mZeroFill.fill(mCells, mCausticOffset);
         const glm::uvec4 draw[gpu::kSplatDrawUvec4s] = {
             {gpu::getSplatIndexCount(inputs.settings.splatShape), 0, 0, 0}, {0, 0, 0, 0}};
         mCells.upload(mCausticOffset, sizeof(draw), draw);
-        if (inputs.settings.splatClip)
-            sortPhotons(inputs, orderCountsOffset / sizeof(uint32_t),
-                        orderOffset / sizeof(uint32_t));
+        if (ordered)
+            sortPhotons(inputs, countsOffset / sizeof(uint32_t), orderOffset / sizeof(uint32_t));
     }
     const int neighbours = std::max(int(std::lround(float(inputs.settings.splatNeighbours) *
                                                     inputs.progressive.neighbourFactor)),
@@ -209,6 +211,7 @@ void PhotonDensityPass::executeSlice(const FrameInputs& inputs, uint32_t stage, 
                                 slots - 1, inputs.progressive.spreadStrongPhotons ? 1u : 0u, 0u);
     params.slice = sliceParams;
     params.slice.z = uint32_t(mOrderOffset / sizeof(uint32_t));
+    params.slice.w = uint32_t(mCausticOffset / sizeof(uint32_t));
     mParams.upload(0, sizeof(params), &params);
 
     mBuffers.bind();

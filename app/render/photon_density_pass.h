@@ -8,6 +8,9 @@
 #include "render/pass.h"
 #include "render/photon_buffers.h"
 #include "render/zero_fill.h"
+#include "scene/scene.h"
+
+#include <shared/photon_data.h>
 
 namespace ispm {
 
@@ -19,6 +22,10 @@ float computeEvenRadius(double surfaceAreaM2, int photons, int neighbours);
 // radius_max's derived value in radius_mode density (before radius_scale): 4 times the even
 // radius.
 float computeDensityRadiusMax(double surfaceAreaM2, int photons, int neighbours);
+
+// photon_order.comp's parameters for a scene within `bounds`: its grid spans them; the counts
+// and the order at uint countsAt and orderAt of the density cells.
+gpu::OrderParams makeOrderParams(const Aabb& bounds, size_t countsAt, size_t orderAt);
 
 class PhotonDensityPass final : public Pass {
   public:

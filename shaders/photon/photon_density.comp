@@ -41,8 +41,9 @@ layout(std430, binding = kBindingSplatClip) writeonly buffer SplatClip { vec4 sp
 // bits) at S + 2; at S + 4 .. S + 7 the extent of its photons along the two axes of the plane
 // their facing is closest to, as fixed-point fractions of the cell (kExtentOne = the whole
 // cell): M - min u, max u, M - min v, max v, all kept by atomicMax from a cleared table.
-// After the table's slots: the caustic photons in view, for their own splat draw: its command
-// (kSplatDrawUvec4s uvec4s, the instance count added here), then their indices.
+// At params.slice.w (after the table's slots, and with splat_clip the order's counts): the
+// caustic photons in view, for their own splat draw: its command (kSplatDrawUvec4s uvec4s, the
+// instance count added here), then their indices; with splat_clip at params.slice.z the order.
 layout(std430, binding = kBindingDensityCells) buffer DensityCells { uint cells[]; };
 
 layout(std140, binding = kBindingPassParams) uniform DensityParamsBlock { DensityParams params; };
@@ -99,7 +100,7 @@ void addFloat(uint index, float value) {
 const float kExtentOne = 16777216.0; // 2^24: a whole cell in the extent words
 
 void appendCausticPhoton(uint index) {
-    uint list = (params.control.y + 1u) * kDensitySlotUints;
+    uint list = params.slice.w;
     uint at = atomicAdd(cells[list + 1u], 1u);
     cells[list + 4u * kSplatDrawUvec4s + at] = index;
 }

@@ -17,21 +17,7 @@ layout(std430, binding = kBindingDensityCells) buffer DensityCells { uint cells[
 layout(std140, binding = kBindingPassParams) uniform OrderParamsBlock { OrderParams params; };
 
 const uint kStage = ORDER_STAGE;
-const uint kSide = 1u << kOrderAxisBits;
 const uint kCellsPerInvocation = kOrderCells / kOrderScanGroupSize;
-
-// Bit i of v at bit 3i.
-uint spreadBits(uint v) {
-    uint spread = 0u;
-    for (uint i = 0u; i < kOrderAxisBits; ++i) spread |= ((v >> i) & 1u) << (3u * i);
-    return spread;
-}
-
-uint getCell(uint index) {
-    vec3 at = (photons[index].positionDistance.xyz - params.lo.xyz) * params.scale.xyz;
-    uvec3 c = uvec3(clamp(at, vec3(0.0), vec3(float(kSide - 1u))));
-    return spreadBits(c.x) | (spreadBits(c.y) << 1u) | (spreadBits(c.z) << 2u);
-}
 
 shared uint gSums[kOrderScanGroupSize];
 
@@ -62,7 +48,7 @@ void main() {
     }
     uint index = gl_GlobalInvocationID.x;
     if (index >= counters.splatDraw.y) return;
-    uint cell = getCell(index);
+    uint cell = computeOrderCell(photons[index].positionDistance.xyz, params);
     if (kStage == kOrderStageCount) {
         atomicAdd(cells[counts + cell], 1u);
         return;

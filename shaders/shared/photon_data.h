@@ -194,8 +194,8 @@ ISPM_CONST float kMaxWidening = 2.0f;
 // scene's bounds (a counting sort: count per cell, one group's prefix sum, scatter), so that
 // neighbouring invocations take neighbouring photons: their clip queries walk the same BVH
 // nodes and their table lookups the same cells, which a SIMD renderer runs together (llvmpipe
-// runs a group's lanes in step). The counts and the order follow the caustic list in the
-// density cells buffer.
+// runs a group's lanes in step). In the density cells buffer the counts follow the table (one
+// clear for both), the order the caustic list.
 ISPM_CONST uint kOrderAxisBits = 5u;
 ISPM_CONST uint kOrderCells = 1u << (3u * kOrderAxisBits);
 ISPM_CONST uint kOrderScanGroupSize = 1024u; // the scan's one group: kOrderCells / 32 invocations
@@ -211,6 +211,23 @@ struct OrderParams {
 };
 ISPM_STATIC_ASSERT_SIZE(OrderParams, 48);
 
+// Bit i of v (i < kOrderAxisBits) at bit 3i.
+ISPM_INLINE uint spreadOrderBits(uint v) {
+    uint spread = 0u;
+    for (uint i = 0u; i < kOrderAxisBits; ++i)
+        spread |= ((v >> i) & 1u) << (3u * i);
+    return spread;
+}
+
+// The order's cell of a photon at `position`: its grid cell (outside the bounds, the nearest),
+// numbered in Morton order.
+ISPM_INLINE uint computeOrderCell(vec3 position, OrderParams params) {
+    const float last = float((1u << kOrderAxisBits) - 1u);
+    vec3 at = clamp((position - vec3(params.lo)) * vec3(params.scale), vec3(0.0f), vec3(last));
+    uvec3 c = uvec3(at);
+    return spreadOrderBits(c.x) | (spreadOrderBits(c.y) << 1u) | (spreadOrderBits(c.z) << 2u);
+}
+
 // Parameters of photon_density.comp (std140, at kBindingPassParams).
 struct DensityParams {
     vec4 grid;     // x = finest cell (m), y = neighbours k, z = radius min (m), w = radius max (m)
@@ -222,7 +239,8 @@ struct DensityParams {
     vec4 travel;   // travel modes: radius_min, radius_max (m, times radius_scale), dist_min,
                    // dist_max (m)
     uvec4 slice;   // x = this slice, y = slices (computeSliceRange); z = the radius stage's
-                   // photon order's first uint in the cells (photon_order.comp), 0: index order
+                   // photon order's first uint in the cells (photon_order.comp), 0: index order;
+                   // w = the caustic list's first uint in the cells (its draw command)
 };
 ISPM_STATIC_ASSERT_SIZE(DensityParams, 80);
 

@@ -150,19 +150,6 @@ TEST_F(PhotonDensityTest, RadiusHoldsKPhotonsOnAPlaneOfKnownDensity) {
     EXPECT_NEAR(double(dense) / expectedDense, 1.0, 0.2);
 }
 
-// The cell of the order's grid that holds `p`, as photon_order.comp numbers it (Morton order).
-uint32_t computeOrderCell(const Aabb& bounds, glm::vec3 p) {
-    constexpr uint32_t kSide = 1u << gpu::kOrderAxisBits;
-    const glm::vec3 at = (p - bounds.lo) * (float(kSide) / glm::max(bounds.getExtent(), 1e-6f));
-    const glm::uvec3 c(glm::clamp(at, glm::vec3(0.0f), glm::vec3(float(kSide - 1u))));
-    uint32_t cell = 0;
-    for (uint32_t i = 0; i < gpu::kOrderAxisBits; ++i) {
-        for (uint32_t axis = 0; axis < 3; ++axis)
-            cell |= ((c[int(axis)] >> i) & 1u) << (3u * i + axis);
-    }
-    return cell;
-}
-
 TEST_F(PhotonDensityTest, RadiusStageTakesEveryPhotonOnceInSpatialOrder) {
     // With clip lines the radius stage takes the photons sorted by grid cell (photon_order.comp),
     // so that neighbouring invocations query the same part of the BVH: every photon exactly
@@ -171,6 +158,8 @@ TEST_F(PhotonDensityTest, RadiusStageTakesEveryPhotonOnceInSpatialOrder) {
     addSquare(photons, 1.0f, -0.5f, 1.0f, 40, 2u);
     addSquare(photons, -2.0f, -0.5f, 1.0f, 40, 1u);
     const DensityRun run = runDensity(makeFloorScene(), photons);
+    // The grid the pass lays over the scene (the counts' and order's offsets do not matter here).
+    const gpu::OrderParams grid = makeOrderParams(run.bounds, 0, 0);
     std::vector<int> seen(photons.size(), 0);
     uint32_t lastCell = 0;
     size_t descents = 0;
@@ -178,7 +167,7 @@ TEST_F(PhotonDensityTest, RadiusStageTakesEveryPhotonOnceInSpatialOrder) {
         ASSERT_LT(index, photons.size());
         ++seen[index];
         const uint32_t cell =
-            computeOrderCell(run.bounds, glm::vec3(photons[index].positionDistance));
+            gpu::computeOrderCell(glm::vec3(photons[index].positionDistance), grid);
         descents += cell < lastCell ? 1 : 0;
         lastCell = cell;
     }
