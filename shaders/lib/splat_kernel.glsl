@@ -12,8 +12,10 @@
 struct SplatShape {
     float radius;
     vec4 extent;
-    uint lines;
+    uint lines;      // clip lines in poles
+    uint wholeLines; // of them the first, running past the disc both ways (kWedgeOpenBoth)
     vec2 poles[kClipRays];
+    uint wedges[kClipRays]; // each line's wedge (findLineWedges)
 };
 
 SplatShape loadSplatShape(uint id, uint clipLines) {
@@ -21,13 +23,21 @@ SplatShape loadSplatShape(uint id, uint clipLines) {
     s.radius = photons[id].power.w;
     s.extent = vec4(s.radius);
     s.lines = 0u;
-    for (uint i = 0u; i < kClipRays; ++i) s.poles[i] = vec2(0.0);
+    s.wholeLines = 0u;
+    for (uint i = 0u; i < kClipRays; ++i) {
+        s.poles[i] = vec2(0.0);
+        s.wedges[i] = kWedgeOpenBoth;
+    }
     if (clipLines != 0u && s.radius > 0.0) {
+        // Packed by the density pass (writeClip): the whole lines, the bounded ones, zero poles.
         s.extent = splatClip[id * kClipVec4s + kClipRays / 2u];
-        for (uint i = 0u; i < kClipRays / 2u; ++i) {
-            vec4 two = splatClip[id * kClipVec4s + i];
-            if (dot(two.xy, two.xy) > 0.0) s.poles[s.lines++] = two.xy;
-            if (dot(two.zw, two.zw) > 0.0) s.poles[s.lines++] = two.zw;
+        for (uint i = 0u; i < kClipRays; ++i) {
+            vec4 two = splatClip[id * kClipVec4s + i / 2u];
+            s.poles[i] = i % 2u == 0u ? two.xy : two.zw;
+            s.wedges[i] = uint(splatClip[id * kClipVec4s + kClipRays / 2u + 1u + i / 4u][i % 4u]);
+            bool line = dot(s.poles[i], s.poles[i]) > 0.0;
+            s.lines += line ? 1u : 0u;
+            s.wholeLines += line && s.wedges[i] == kWedgeOpenBoth ? 1u : 0u;
         }
     }
     return s;
@@ -56,18 +66,19 @@ float computeSplatKernel(vec4 centre, vec3 pn, vec3 tangent, vec3 bitangent, flo
 }
 
 // The kernel over the kept mass, or a negative value where computeSplatKernel gives none or the
-// point lies beyond a clip line. Gather-style renormalisation: the pixel's own disc (radius r,
+// point lies beyond a clip line (in its wedge). Gather-style renormalisation: the pixel's own disc (radius r,
 // centred on it) is cut by the same lines; dividing by the part of it that lies on the surface
 // keeps a uniform irradiance uniform up to the wall, and the photon's power on the surfaces it
 // reached. Without lines the kept mass is 1: splat.frag's variant for discs without clip lines
 // (splat_clip off, SPLAT_CLIP_LINES 0) calls computeSplatKernel alone, since llvmpipe runs this
 // loop's body once even for no line.
-float computeSplatWeight(vec4 centre, vec3 pn, vec3 tangent, vec3 bitangent, uint lines,
-                         vec2 poles[kClipRays], float squash, vec3 position, vec3 n) {
+float computeSplatWeight(vec4 centre, vec3 pn, vec3 tangent, vec3 bitangent, uint wholeLines,
+                         uint lines, vec2 poles[kClipRays], uint wedges[kClipRays], float squash,
+                         vec3 position, vec3 n) {
     vec2 x;
     float kernel = computeSplatKernel(centre, pn, tangent, bitangent, squash, position, n, x);
     if (kernel < 0.0) return -1.0;
-    float keptMass = computeKeptMass(x, poles, lines, centre.w);
+    float keptMass = computeKeptMass(x, poles, wedges, wholeLines, lines, centre.w);
     if (keptMass < 0.0) return -1.0; // beyond a clip line
     return kernel / keptMass;
 }

@@ -290,11 +290,33 @@ void visitBoxTriangle(vec3 p0, vec3 p1, vec3 p2) {
     }
 }
 
-void writeClip(uint index, vec2 poles[kClipRays], float radius) {
-    for (uint i = 0u; i < kClipRays / 2u; ++i) {
-        splatClip[index * kClipVec4s + i] = vec4(poles[2u * i], poles[2u * i + 1u]);
+// The lines packed as the splat takes them (loadSplatShape): those running past the disc both
+// ways first, then the bounded ones, then zero poles.
+void writeClip(uint index, vec2 poles[kClipRays], uint wedges[kClipRays], float radius) {
+    vec2 packedPoles[kClipRays];
+    uint packedWedges[kClipRays];
+    uint lines = 0u;
+    for (uint pass = 0u; pass < 2u; ++pass) {
+        for (uint i = 0u; i < kClipRays; ++i) {
+            if (dot(poles[i], poles[i]) <= 0.0 || (wedges[i] == kWedgeOpenBoth) != (pass == 0u)) continue;
+            packedPoles[lines] = poles[i];
+            packedWedges[lines] = wedges[i];
+            ++lines;
+        }
     }
-    splatClip[index * kClipVec4s + kClipRays / 2u] = computeClipExtent(poles, radius);
+    for (uint i = lines; i < kClipRays; ++i) {
+        packedPoles[i] = vec2(0.0);
+        packedWedges[i] = kWedgeOpenBoth;
+    }
+    for (uint i = 0u; i < kClipRays / 2u; ++i) {
+        splatClip[index * kClipVec4s + i] = vec4(packedPoles[2u * i], packedPoles[2u * i + 1u]);
+    }
+    splatClip[index * kClipVec4s + kClipRays / 2u] = computeClipExtent(poles, wedges, radius);
+    for (uint i = 0u; i < kClipRays / 4u; ++i) {
+        splatClip[index * kClipVec4s + kClipRays / 2u + 1u + i] =
+            vec4(uvec4(packedWedges[4u * i], packedWedges[4u * i + 1u], packedWedges[4u * i + 2u],
+                       packedWedges[4u * i + 3u]));
+    }
 }
 
 // Rays above the surface find the walls it meets (concave edges); rays just beneath it, inside
@@ -336,9 +358,10 @@ void clipDisc(uint index, vec3 p, vec3 n, float radius) {
         poles[i] = t < radius ? computeClipPole(ray2 * t, normal2, ray2) : vec2(0.0);
         hitsM[i] = t; // the radius where nothing was met (RayQuad none)
     }
-    removeEndingLines(poles, hitsM, radius);
+    uint wedges[kClipRays];
+    findLineWedges(poles, hitsM, radius, wedges);
     removeRepeatedLines(poles, radius);
-    writeClip(index, poles, radius);
+    writeClip(index, poles, wedges, radius);
 }
 
 // widen_strong: light l's stored photons at cells[2 l], their power (float bits) at cells[2 l + 1],

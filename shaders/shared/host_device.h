@@ -17,6 +17,7 @@
 #define ISPM_OUT(T) T&
 // An array parameter the function writes (C++ passes arrays as pointers already).
 #define ISPM_INOUT_ARRAY(T, name, n) T name[n]
+#define ISPM_OUT_ARRAY(T, name, n) T name[n]
 ISPM_NAMESPACE_BEGIN
 // The GLSL built-ins shared functions use, from glm.
 using glm::abs;
@@ -54,6 +55,7 @@ ISPM_NAMESPACE_END
 #define ISPM_INOUT(T) inout T
 #define ISPM_OUT(T) out T
 #define ISPM_INOUT_ARRAY(T, name, n) inout T name[n]
+#define ISPM_OUT_ARRAY(T, name, n) out T name[n]
 #endif
 
 #endif

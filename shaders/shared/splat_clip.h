@@ -3,7 +3,8 @@
 // keeps, for each that hit a surface within the radius, the line where that surface cuts the
 // plane. The splat draws only the pixels on the photon's side of every line, so it neither leaks
 // through a thin wall, nor climbs a corner; a line whose surface ends inside the disc (a
-// building's outer corner, a wall's free end) is dropped (removeEndingLines), and the splat
+// building's outer corner, a wall's free end) cuts only the wedge behind the surface
+// (findLineWedges), and the splat
 // divides each pixel's share by the kernel mass that the pixel's own disc keeps inside the
 // lines (splat.frag), so a uniform irradiance stays uniform up to a wall.
 #ifndef ISPM_SPLAT_CLIP_H
@@ -15,12 +16,19 @@
 ISPM_NAMESPACE_BEGIN
 
 // Per result photon kClipVec4s vec4s: kClipRays / 2 with two lines each, then the box extents
-// along +t, -t, +b, -b (m). A line is its pole: the point of the line nearest the photon, in the
-// plane's (t, b) coordinates (m); the photon's side is { x : dot(x, pole) < dot(pole, pole) }.
-// (0, 0): no line (the ray hit nothing, or a wall another ray had found).
+// along +t, -t, +b, -b (m), then kClipRays / 4 with each line's wedge (findLineWedges) in its
+// lanes, as a float holding the integer. A line is its pole: the point of the line nearest the
+// photon, in the plane's (t, b) coordinates (m); the photon's side is { x : dot(x, pole) <
+// dot(pole, pole) }. (0, 0): no line (the ray hit nothing, or a wall another ray had found).
 ISPM_CONST int kBindingSplatClip = 18;
 ISPM_CONST uint kClipRays = 8u; // photon_density.comp holds them in the lanes of two vec4s
-ISPM_CONST uint kClipVec4s = kClipRays / 2u + 1u;
+ISPM_CONST uint kClipVec4s = kClipRays / 2u + 1u + kClipRays / 4u;
+// A line's wedge: the directions from the photon, seen from which the surface stands on the line
+// (a wall's span), as two codes: the bound on the side counterclockwise of the pole (low byte) and
+// on the clockwise side (next byte), each a direction getWedgeDirection gives or kWedgeOpen, the
+// surface running on past the disc that way.
+ISPM_CONST uint kWedgeOpen = 2u * kClipRays;
+ISPM_CONST uint kWedgeOpenBoth = kWedgeOpen | (kWedgeOpen << 8u);
 
 // A kept mass below this is taken as this: a pixel in a slot narrower than the disc keeps a
 // finite weight (it may then lose some light), and the few photons a pixel deep in a corner
@@ -89,46 +97,125 @@ ISPM_INLINE void removeRepeatedLines(ISPM_INOUT_ARRAY(vec2, poles, kClipRays), f
     }
 }
 
-// Zeroes every line whose surface ends inside the disc: on either side of the line's pole, the
-// clip ray that crosses the line farthest out, still within the radius, passed it without meeting
-// anything there (`hitsM`: each ray's distance to what it met, the radius when nothing). A line
-// runs on without end, so at a building's outer corner or a wall's free end it would cut open
-// ground off the disc, with a pixel's kept mass raising the rest: wedges of light along the walls'
-// extensions outdoors. A door in a wall keeps its line: the outermost rays meet the wall beside it.
-// Without the line the disc reaches round the surface's end, as an unclipped disc does.
-ISPM_INLINE void removeEndingLines(ISPM_INOUT_ARRAY(vec2, poles, kClipRays),
-                                   const float hitsM[kClipRays], float radiusM) {
+// Direction of wedge bound `code` in the plane's (t, b) coordinates: the clip rays' directions
+// (even codes) and the bisectors between neighbouring rays (odd codes).
+// The splat's fragment stage calls it per covered pixel: cosines from a table (codes step 22.5
+// degrees, kClipRays being 8), turned by the quadrant.
+ISPM_INLINE vec2 getWedgeDirection(uint code) {
+    const float kCos[5] = {1.0f, 0.92387953f, 0.70710678f, 0.38268343f, 0.0f};
+    uint step = code % 4u;
+    vec2 d = vec2(kCos[step], kCos[4u - step]);
+    uint quadrant = (code / 4u) % 4u;
+    return quadrant == 0u
+               ? d
+               : (quadrant == 1u ? vec2(-d.y, d.x) : (quadrant == 2u ? -d : vec2(d.y, -d.x)));
+}
+
+// The bound between clip ray `met` (the outermost that met the line on its side) and its
+// neighbour `passed` (the next one out, which crossed the line without meeting anything there).
+ISPM_INLINE uint computeWedgeBound(uint met, uint passed) {
+    bool after = passed == (met + 1u) % kClipRays; // counterclockwise of `met`
+    return (2u * met + (after ? 1u : 2u * kClipRays - 1u)) % (2u * kClipRays);
+}
+
+// Each line's wedge (kWedgeOpen where none, or a zero pole): on either side of the line's pole,
+// the clip rays that cross the line within the radius, taken outward, either meet it or pass it
+// (`hitsM`: each ray's distance to what it met, the radius when nothing). Where one passes
+// beyond the outermost that met it, the surface ends between the two (a wall's free end, a
+// building's outer corner): the wedge's bound on that side is the bisector of the two rays, and
+// the disc reaches round the end while the line still cuts it behind the surface (without the
+// bound a line would cut open ground off the disc; without the line light would leak through
+// the wall into the room behind it). A door in a wall does not bound it: the rays through the
+// door lie between rays that meet the wall.
+ISPM_INLINE void findLineWedges(const vec2 poles[kClipRays], const float hitsM[kClipRays],
+                                float radiusM, ISPM_OUT_ARRAY(uint, wedges, kClipRays)) {
     // Past the crossing by more than this share of it (and of the radius): not the same surface
     // (a slanted wall's line, met by rays above and beneath the plane, differs by round-off).
     const float kPassed = 0.05f;
     for (uint i = 0u; i < kClipRays; ++i) {
+        wedges[i] = kWedgeOpenBoth;
         float p2 = dot(poles[i], poles[i]);
         if (p2 <= 0.0f) continue;
-        vec2 along = vec2(-poles[i].y, poles[i].x);
-        float outermost[2] = {0.0f, 0.0f};
-        bool passed[2] = {false, false};
+        vec2 along = vec2(-poles[i].y, poles[i].x); // counterclockwise of the pole
+        // Per ray crossing the line within the radius: its side (0: counterclockwise of the pole,
+        // 1: clockwise), how far out along the line it crosses (times |pole|; -1: it does not
+        // cross) and whether it met the line there.
+        float outM[kClipRays];
+        bool meets[kClipRays];
+        // Per side the outermost and innermost ray that met the line (-1: none).
+        float outerM[2] = {-1.0f, -1.0f};
+        float innerM[2] = {radiusM * 2.0f, radiusM * 2.0f};
+        uint outer[2] = {0u, 0u};
+        uint inner[2] = {0u, 0u};
         for (uint j = 0u; j < kClipRays; ++j) {
             vec2 ray2 = getClipDirection(j);
             float toward = dot(ray2, poles[i]);
-            if (toward <= 0.0f) continue;
-            float crossingM = p2 / toward; // where ray j meets the line
-            uint side = dot(ray2, along) >= 0.0f ? 0u : 1u;
-            if (crossingM >= radiusM || crossingM <= outermost[side]) continue;
-            outermost[side] = crossingM;
-            passed[side] = hitsM[j] > crossingM + kPassed * (crossingM + radiusM);
+            float crossingM = toward > 0.0f ? p2 / toward : radiusM; // where ray j meets the line
+            outM[j] = -1.0f;
+            meets[j] = false;
+            if (crossingM >= radiusM) continue;
+            float signedOutM = dot(ray2, along) * crossingM;
+            uint side = signedOutM >= 0.0f ? 0u : 1u;
+            outM[j] = abs(signedOutM);
+            meets[j] = hitsM[j] <= crossingM + kPassed * (crossingM + radiusM);
+            if (!meets[j]) continue;
+            if (outM[j] > outerM[side]) {
+                outerM[side] = outM[j];
+                outer[side] = j;
+            }
+            if (outM[j] < innerM[side]) {
+                innerM[side] = outM[j];
+                inner[side] = j;
+            }
         }
-        if (passed[0] || passed[1]) poles[i] = vec2(0.0f);
+        uint bounds[2] = {kWedgeOpen, kWedgeOpen};
+        for (uint side = 0u; side < 2u; ++side) {
+            // The innermost ray beyond the outermost that met the line on this side, that
+            // passed it (a door's rays lie between rays that met the wall).
+            float passedM = radiusM * 2.0f;
+            uint passed = kClipRays;
+            for (uint j = 0u; j < kClipRays; ++j) {
+                vec2 ray2 = getClipDirection(j);
+                bool onSide = (dot(ray2, along) >= 0.0f) == (side == 0u);
+                if (outM[j] < 0.0f || meets[j] || !onSide) continue;
+                if (outM[j] > outerM[side] && outM[j] < passedM) {
+                    passedM = outM[j];
+                    passed = j;
+                }
+            }
+            // A side no ray met: the surface ends between the other side's innermost ray that
+            // met it and this one.
+            uint from = outerM[side] >= 0.0f ? outer[side] : inner[1u - side];
+            if (passed < kClipRays) bounds[side] = computeWedgeBound(from, passed);
+        }
+        wedges[i] = bounds[0] | (bounds[1] << 8u);
     }
 }
 
+// Whether in-plane offset x (beyond the line of `pole`, or on it) lies in the line's wedge.
+ISPM_INLINE bool isInWedge(vec2 x, uint wedge) {
+    uint ccw = wedge & 0xffu;
+    uint cw = wedge >> 8u;
+    if (ccw != kWedgeOpen) {
+        vec2 d = getWedgeDirection(ccw);
+        if (x.x * d.y - x.y * d.x < 0.0f) return false; // counterclockwise of the bound
+    }
+    if (cw != kWedgeOpen) {
+        vec2 d = getWedgeDirection(cw);
+        if (d.x * x.y - d.y * x.x < 0.0f) return false; // clockwise of the bound
+    }
+    return true;
+}
+
 // How far the box around a disc of radius r reaches along +t, -t, +b, -b: up to a line across
-// that axis (a box scene's wall), else r.
-ISPM_INLINE vec4 computeClipExtent(const vec2 poles[kClipRays], float radiusM) {
+// that axis (a box scene's wall) that runs past the disc both ways, else r.
+ISPM_INLINE vec4 computeClipExtent(const vec2 poles[kClipRays], const uint wedges[kClipRays],
+                                   float radiusM) {
     const float kAlong = 0.999f; // a line across an axis, not a slanted one
     vec4 extent = vec4(radiusM);
     for (uint i = 0u; i < kClipRays; ++i) {
         float c = length(poles[i]);
-        if (c <= 0.0f) continue;
+        if (c <= 0.0f || wedges[i] != kWedgeOpenBoth) continue;
         vec2 axis = poles[i] / c;
         if (axis.x > kAlong) extent.x = min(extent.x, c);
         if (-axis.x > kAlong) extent.y = min(extent.y, c);
@@ -147,15 +234,28 @@ ISPM_INLINE float computeMassBeyondLine(vec2 x, vec2 pole, float radiusM) {
 }
 
 // Kernel mass that the disc of radius r around in-plane offset x keeps on the photon's side of
-// the first `lines` poles, distinct lines all nonzero (removeRepeatedLines, then packed to the
-// front as loadSplatShape does; the corners two walls cut off together are counted twice, and
-// the floor keeps the result positive); -1 when x itself lies beyond one of them. One pass over
-// the lines: the splat's fragment stage runs it per covered pixel.
-ISPM_INLINE float computeKeptMass(vec2 x, const vec2 poles[kClipRays], uint lines, float radiusM) {
+// the first `lines` poles, distinct lines all nonzero, the first `wholeLines` of them running
+// past the disc both ways (kWedgeOpenBoth) and the rest with their wedges (removeRepeatedLines,
+// then packed as loadSplatShape does; the corners two walls cut off together are counted twice,
+// and the floor keeps the result positive); -1 when x itself lies beyond one of them, in its
+// wedge. A bounded line counts where x's nearest point on it lies in its wedge; beyond it outside
+// its wedge (round a wall's end) x loses nothing to it. The splat's fragment stage runs it per
+// covered pixel, so the whole lines take the short loop (llvmpipe runs a branch's both sides).
+ISPM_INLINE float computeKeptMass(vec2 x, const vec2 poles[kClipRays], const uint wedges[kClipRays],
+                                  uint wholeLines, uint lines, float radiusM) {
     float lost = 0.0f;
-    for (uint i = 0u; i < lines; ++i) {
+    for (uint i = 0u; i < wholeLines; ++i) {
         if (isBeyondLine(x, poles[i])) return -1.0f;
         lost += computeMassBeyondLine(x, poles[i], radiusM);
+    }
+    for (uint i = wholeLines; i < lines; ++i) {
+        float p2 = dot(poles[i], poles[i]);
+        float beyond = dot(x, poles[i]) - p2;
+        if (beyond > 0.0f) {
+            if (isInWedge(x, wedges[i])) return -1.0f;
+        } else if (isInWedge(x - poles[i] * (beyond / p2), wedges[i])) {
+            lost += computeMassBeyondLine(x, poles[i], radiusM);
+        }
     }
     return max(1.0f - lost, kMinKeptMass);
 }

@@ -25,12 +25,13 @@ layout(rgba32f, binding = kImageGatherOutput) uniform writeonly image2D uOutput;
 #include "lib/splat_kernel.glsl"
 
 shared vec4 sCentre[kGatherBatch];    // xyz position, w radius
-shared vec4 sNormal[kGatherBatch];    // xyz normal, w = clip lines (uint bits)
+shared vec4 sNormal[kGatherBatch];    // xyz normal, w = clip lines | whole ones << 8 (uint bits)
 shared vec4 sTangent[kGatherBatch];
 shared vec4 sBitangent[kGatherBatch];
 shared vec4 sPower[kGatherBatch];
 shared vec4 sIncoming[kGatherBatch];
 shared vec4 sPoles[kGatherBatch][kClipRays / 2u];
+shared uvec4 sWedges[kGatherBatch][kClipRays / 4u];
 
 void stagePhoton(uint slot, uint id) {
     SplatShape shape = loadSplatShape(id, params.tiles.w);
@@ -39,13 +40,16 @@ void stagePhoton(uint slot, uint id) {
     vec3 b;
     buildSplatBasis(n, t, b);
     sCentre[slot] = vec4(photons[id].positionDistance.xyz, shape.radius);
-    sNormal[slot] = vec4(n, uintBitsToFloat(shape.lines));
+    sNormal[slot] = vec4(n, uintBitsToFloat(shape.lines | (shape.wholeLines << 8u)));
     sTangent[slot] = vec4(t, 0.0);
     sBitangent[slot] = vec4(b, 0.0);
     sPower[slot] = vec4(photons[id].power.rgb, 0.0);
     sIncoming[slot] = vec4(photons[id].incoming.xyz, 0.0);
     for (uint i = 0u; i < kClipRays / 2u; ++i)
         sPoles[slot][i] = vec4(shape.poles[2u * i], shape.poles[2u * i + 1u]);
+    for (uint i = 0u; i < kClipRays / 4u; ++i)
+        sWedges[slot][i] = uvec4(shape.wedges[4u * i], shape.wedges[4u * i + 1u],
+                                 shape.wedges[4u * i + 2u], shape.wedges[4u * i + 3u]);
 }
 
 void main() {
@@ -77,13 +81,16 @@ void main() {
             float reach = sCentre[j].w * max(1.0, params.shape.x);
             if (dot(d, d) > reach * reach) continue;
             vec2 poles[kClipRays];
+            uint wedges[kClipRays];
             for (uint i = 0u; i < kClipRays / 2u; ++i) {
                 poles[2u * i] = sPoles[j][i].xy;
                 poles[2u * i + 1u] = sPoles[j][i].zw;
             }
+            for (uint i = 0u; i < kClipRays; ++i) wedges[i] = sWedges[j][i / 4u][i % 4u];
+            uint lines = floatBitsToUint(sNormal[j].w);
             float weight = computeSplatWeight(sCentre[j], sNormal[j].xyz, sTangent[j].xyz,
-                                              sBitangent[j].xyz, floatBitsToUint(sNormal[j].w),
-                                              poles, params.shape.x, position.xyz, n);
+                                              sBitangent[j].xyz, lines >> 8u, lines & 0xffu, poles,
+                                              wedges, params.shape.x, position.xyz, n);
             if (weight < 0.0) continue;
             vec3 f = evaluateSplatBrdf(diffuse, specular, n, -sIncoming[j].xyz, wo,
                                            frame.specularTrace.x);

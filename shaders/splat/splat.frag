@@ -24,6 +24,7 @@ flat in vec3 vIncoming;
 #if SPLAT_CLIP_LINES // splat_clip (SplatPass)
 flat in uint vLines;
 flat in vec2 vPoles[kClipRays];
+flat in uint vWedges[kClipRays];
 #endif
 
 layout(location = 0) out vec4 outRadiance;
@@ -37,8 +38,9 @@ void main() {
     if (position.w < 0.5) discard;
     vec3 n = texelFetch(uNormal, pixel, 0).xyz;
 #if SPLAT_CLIP_LINES
-    float weight = computeSplatWeight(vCentre, vNormal, vTangent, vBitangent, vLines, vPoles,
-                                      params.shape.x, position.xyz, n);
+    float weight = computeSplatWeight(vCentre, vNormal, vTangent, vBitangent, vLines >> 8u,
+                                      vLines & 0xffu, vPoles, vWedges, params.shape.x,
+                                      position.xyz, n);
 #else
     vec2 x;
     float weight =

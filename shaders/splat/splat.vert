@@ -28,8 +28,9 @@ flat out vec3 vBitangent;
 flat out vec3 vPower;    // W
 flat out vec3 vIncoming; // the direction the photon arrived along
 #if SPLAT_CLIP_LINES // splat_clip (SplatPass)
-flat out uint vLines;    // clip lines in vPoles (the nonzero poles first)
+flat out uint vLines;    // clip lines in vPoles (the nonzero poles first), whole ones << 8
 flat out vec2 vPoles[kClipRays];
+flat out uint vWedges[kClipRays];
 #endif
 
 // The draw is indexed (splat_pass.cpp holds the triangles): gl_VertexID is the corner, its
@@ -60,8 +61,9 @@ void main() {
     float radius = shape.radius;
     vec4 extent = shape.extent; // along +t, -t, +b, -b
 #if SPLAT_CLIP_LINES
-    vLines = shape.lines;
+    vLines = shape.lines | (shape.wholeLines << 8u);
     vPoles = shape.poles;
+    vWedges = shape.wedges;
 #endif
     vec3 c = vec3((gl_VertexID & 1) != 0 ? 1.0 : -1.0, (gl_VertexID & 2) != 0 ? 1.0 : -1.0,
                   (gl_VertexID & 4) != 0 ? 1.0 : -1.0);

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
+#include <iterator>
 
 namespace ispm {
 namespace {
@@ -54,7 +55,9 @@ TEST(SplatClip, KeptMassOfACornerCountsEachWallOnce) {
     EXPECT_EQ(poles[7], gpu::vec2(0.0f));
     // The distinct lines packed to the front, as loadSplatShape hands them to the kernel.
     const gpu::vec2 lines[gpu::kClipRays] = {poles[0], poles[6]};
-    const float computed = gpu::computeKeptMass(gpu::vec2(0.0f), lines, 2u, 1.0f);
+    uint32_t open[gpu::kClipRays];
+    std::fill(std::begin(open), std::end(open), gpu::kWedgeOpenBoth);
+    const float computed = gpu::computeKeptMass(gpu::vec2(0.0f), lines, open, 2u, 2u, 1.0f);
     // The corner region both lines cut off is counted twice: measured 0.617 against 0.643, so
     // 0.03 allows it and still fails a formula that ignores a wall (off by 0.17) or counts the
     // first wall three times (off by 0.4).
@@ -63,11 +66,12 @@ TEST(SplatClip, KeptMassOfACornerCountsEachWallOnce) {
     // grows (measured 0.458 against 0.508); 0.06 still fails a missing wall (off by 0.17).
     const double keptNearWall =
         integrateKernel([](double x, double y) { return x + 0.2 < 0.3 && y > -0.5; });
-    EXPECT_NEAR(gpu::computeKeptMass(gpu::vec2(0.2f, 0.0f), lines, 2u, 1.0f), keptNearWall, 0.06);
+    EXPECT_NEAR(gpu::computeKeptMass(gpu::vec2(0.2f, 0.0f), lines, open, 2u, 2u, 1.0f),
+                keptNearWall, 0.06);
     // Beyond a line the pixel receives nothing; with no lines the whole disc is kept.
-    EXPECT_LT(gpu::computeKeptMass(gpu::vec2(0.31f, 0.0f), lines, 2u, 1.0f), 0.0f);
+    EXPECT_LT(gpu::computeKeptMass(gpu::vec2(0.31f, 0.0f), lines, open, 2u, 2u, 1.0f), 0.0f);
     const gpu::vec2 none[gpu::kClipRays] = {};
-    EXPECT_FLOAT_EQ(gpu::computeKeptMass(gpu::vec2(0.0f), none, 0u, 1.0f), 1.0f);
+    EXPECT_FLOAT_EQ(gpu::computeKeptMass(gpu::vec2(0.0f), none, open, 0u, 0u, 1.0f), 1.0f);
     EXPECT_FALSE(gpu::isBeyondLine(gpu::vec2(0.29f, 0.0f), poles[0]));
     EXPECT_TRUE(gpu::isBeyondLine(gpu::vec2(0.31f, 0.5f), poles[0]));
     EXPECT_FALSE(gpu::isBeyondLine(gpu::vec2(5.0f, 5.0f), none[0]));
@@ -119,28 +123,83 @@ ClipRays castClipRays(std::initializer_list<glm::vec4> rects) { // rect: x0, y0,
     return out;
 }
 
-TEST(SplatClip, LinesOfSurfacesEndingInsideTheDiscAreDropped) {
-    // A wall along the whole disc (x > 0.3): rays 0, 1 and 7 meet it and its line stays.
-    ClipRays wall = castClipRays({{0.3f, -5.0f, 5.0f, 5.0f}});
-    gpu::removeEndingLines(wall.poles, wall.hitsM, 1.0f);
+// Lines and wedges as photon_density.comp leaves them: wedges found, repeated lines zeroed.
+struct ClipLines {
+    gpu::vec2 poles[gpu::kClipRays] = {};
+    uint32_t wedges[gpu::kClipRays] = {};
+};
+
+ClipLines findLines(ClipRays rays) {
+    ClipLines out;
+    gpu::findLineWedges(rays.poles, rays.hitsM, 1.0f, out.wedges);
+    gpu::removeRepeatedLines(rays.poles, 1.0f);
+    std::copy(std::begin(rays.poles), std::end(rays.poles), std::begin(out.poles));
+    return out;
+}
+
+// Whether in-plane point x is cut off the disc (beyond a line, in its wedge).
+bool isClipped(const ClipLines& lines, gpu::vec2 x) {
+    for (uint32_t i = 0; i < gpu::kClipRays; ++i)
+        if (gpu::isBeyondLine(x, lines.poles[i]) && gpu::isInWedge(x, lines.wedges[i])) return true;
+    return false;
+}
+
+TEST(SplatClip, LinesOfSurfacesEndingInsideTheDiscCutOnlyBehindThem) {
+    // A wall along the whole disc (x > 0.3): rays 0, 1 and 7 meet it, its line runs past the
+    // disc both ways and cuts everything beyond it.
+    const ClipLines wall = findLines(castClipRays({{0.3f, -5.0f, 5.0f, 5.0f}}));
     EXPECT_NEAR(wall.poles[0].x, 0.3f, 1e-3f);
-    EXPECT_NEAR(wall.poles[1].x, 0.3f, 1e-3f);
-    EXPECT_NEAR(wall.poles[7].x, 0.3f, 1e-3f);
-    // A building's outer corner at (0.3, 0.2): only ray 1 meets its face x = 0.3; ray 7 crosses
-    // that line at 0.42 and meets nothing, so the face ends inside the disc and the line goes
-    // (kept, it would cut the open ground below y = 0.2 off the disc).
-    ClipRays corner = castClipRays({{0.3f, 0.2f, 5.0f, 5.0f}});
+    EXPECT_EQ(wall.wedges[0], gpu::kWedgeOpenBoth);
+    EXPECT_TRUE(isClipped(wall, {0.5f, -0.6f}));
+    EXPECT_FALSE(isClipped(wall, {0.25f, 0.6f}));
+    // A building's outer corner at (0.3, 0.2): ray 1 meets its face x = 0.3, rays 0 and 7 cross
+    // that line and meet nothing there, so the face ends between rays 1 and 0: the wedge's
+    // clockwise bound is their bisector (22.5 degrees), the counterclockwise side open. The
+    // building's inside behind the face is cut, the open ground round the corner is not (a whole
+    // line would cut it; no line would let the light through the building).
+    const ClipLines corner = findLines(castClipRays({{0.3f, 0.2f, 5.0f, 5.0f}}));
     ASSERT_NEAR(corner.poles[1].x, 0.3f, 1e-3f);
-    gpu::removeEndingLines(corner.poles, corner.hitsM, 1.0f);
-    for (const gpu::vec2& pole : corner.poles)
-        EXPECT_EQ(pole, gpu::vec2(0.0f));
+    EXPECT_EQ(corner.wedges[1], gpu::kWedgeOpen | (1u << 8u));
+    EXPECT_TRUE(isClipped(corner, {0.5f, 0.5f}));
+    EXPECT_TRUE(isClipped(corner, {0.35f, 0.9f}));
+    EXPECT_FALSE(isClipped(corner, {0.5f, 0.0f}));
+    EXPECT_FALSE(isClipped(corner, {0.6f, -0.5f}));
+    // The kept mass: a pixel at the origin loses the disc behind the face (x > 0.3 within the
+    // wedge) and keeps the ground round the corner, so it keeps more than against a whole line.
+    const gpu::vec2 lines[gpu::kClipRays] = {corner.poles[1]};
+    const uint32_t wedges[gpu::kClipRays] = {corner.wedges[1]};
+    uint32_t open[gpu::kClipRays];
+    std::fill(std::begin(open), std::end(open), gpu::kWedgeOpenBoth);
+    const float keptWedge = gpu::computeKeptMass(gpu::vec2(0.0f), lines, wedges, 0u, 1u, 1.0f);
+    const float keptLine = gpu::computeKeptMass(gpu::vec2(0.0f), lines, open, 1u, 1u, 1.0f);
+    EXPECT_NEAR(keptLine, 1.0 - integrateKernel([](double x, double) { return x > 0.3; }), 1e-3);
+    EXPECT_GT(keptWedge, keptLine);
+    // Round the corner, beyond the line outside the wedge: a pixel there receives, and its disc
+    // loses nothing to the face.
+    EXPECT_FLOAT_EQ(gpu::computeKeptMass(gpu::vec2(0.5f, -0.3f), lines, wedges, 0u, 1u, 1.0f),
+                    1.0f);
     // A wall 0.2 thick with a door (|y| < 0.1): ray 0 passes through the door, but the outermost
-    // rays on both sides (1 and 7) meet the wall, so its line stays and no light leaks through.
-    ClipRays door = castClipRays({{0.3f, 0.1f, 0.5f, 5.0f}, {0.3f, -5.0f, 0.5f, -0.1f}});
+    // rays on both sides (1 and 7) meet the wall, so its line runs on both ways and no light
+    // leaks through.
+    const ClipLines door =
+        findLines(castClipRays({{0.3f, 0.1f, 0.5f, 5.0f}, {0.3f, -5.0f, 0.5f, -0.1f}}));
     ASSERT_EQ(door.poles[0], gpu::vec2(0.0f));
-    gpu::removeEndingLines(door.poles, door.hitsM, 1.0f);
     EXPECT_NEAR(door.poles[1].x, 0.3f, 1e-3f);
-    EXPECT_NEAR(door.poles[7].x, 0.3f, 1e-3f);
+    EXPECT_EQ(door.wedges[1], gpu::kWedgeOpenBoth);
+    EXPECT_TRUE(isClipped(door, {0.6f, 0.0f}));
+}
+
+TEST(SplatClip, WedgeDirectionsStepHalfTheAngleBetweenRays) {
+    for (uint32_t code = 0; code < 2 * gpu::kClipRays; ++code) {
+        const double angle = 2.0 * kPi * code / (2.0 * gpu::kClipRays);
+        const gpu::vec2 d = gpu::getWedgeDirection(code);
+        // 1e-6: the table's eight digits; a wrong quadrant or step is off by 0.38 or more.
+        EXPECT_NEAR(d.x, std::cos(angle), 1e-6) << "code " << code;
+        EXPECT_NEAR(d.y, std::sin(angle), 1e-6) << "code " << code;
+        if (code % 2 == 0) {
+            EXPECT_NEAR(glm::length(d - gpu::getClipDirection(code / 2)), 0.0f, 1e-6f);
+        }
+    }
 }
 
 TEST(SplatClip, BasisIsOrthonormalAndFollowsAxes) {
