@@ -45,13 +45,14 @@ void PhotonBuffers::bindLightCounters() const {
     mLightCounts.bindBase(gl::BufferTarget::Storage, gpu::kBindingLightCounts);
 }
 
-void PhotonBuffers::dispatchSlice(size_t countOffset, uint32_t slice, uint32_t slices) const {
+void PhotonBuffers::dispatchSlice(size_t countOffset, uint32_t slice, uint32_t slices,
+                                  uint32_t photonsPerLane) const {
     // The count was written by a shader: the read must see it.
     gl::memoryBarrier(gl::Barrier::BufferUpdate);
     uint32_t count = 0;
     mCounters.download(countOffset, sizeof(count), &count);
     const glm::uvec2 range = gpu::computeSliceRange(count, slice, slices);
-    const uint32_t groups = (range.y - range.x + gpu::kTraceGroupSize - 1) / gpu::kTraceGroupSize;
+    const uint32_t groups = gpu::computeTraceGroups(range.y - range.x, photonsPerLane);
     if (groups > 0) gl::dispatchCompute(groups);
 }
 

@@ -49,11 +49,12 @@ class PhotonBuffers {
     const gl::Buffer& getSplatDraws() const { return mSplatDraws; }
     uint32_t getBounceCapacity() const { return mBounceCapacity; }
     uint32_t getResultCapacity() const { return mResultCapacity; }
-    // Dispatches the photon pass bound now (groups of kTraceGroupSize) over slice `slice` of
-    // `slices` of the photons counted at `countOffset` in the counters (computeSliceRange): the
-    // count is read back first, a wait the viewer's sliced frames make anyway. Nothing to do for
-    // an empty slice.
-    void dispatchSlice(size_t countOffset, uint32_t slice, uint32_t slices) const;
+    // Dispatches the photon pass bound now (groups of kTraceGroupSize, `photonsPerLane` photons
+    // a lane: computeTraceGroups) over slice `slice` of `slices` of the photons counted at
+    // `countOffset` in the counters (computeSliceRange): the count is read back first, a wait the
+    // viewer's sliced frames make anyway. Nothing to do for an empty slice.
+    void dispatchSlice(size_t countOffset, uint32_t slice, uint32_t slices,
+                       uint32_t photonsPerLane = 1) const;
     // Reads the counters back: for reports and tests, never inside a frame. `emitted` per light.
     PhotonCounts readCounts(const std::vector<uint32_t>& emitted) const;
     size_t getGpuBytes() const {

@@ -1,6 +1,7 @@
 // Trace: prepare (GPU count -> dispatch), trace, prepare (results -> splat draws).
 #include "render/photon_trace_pass.h"
 
+#include "gl/context.h"
 #include "gl/gl.h"
 #include "gl/state.h"
 #include "render/gpu_scene.h"
@@ -23,7 +24,8 @@ PhotonTracePass::PhotonTracePass(PhotonBuffers& buffers)
           ReloadableProgram({.label = "photon trace",
                              .stages = {{gl::ShaderStage::Compute, "photon/photon_trace.comp"}}})),
       mPrepareParams("photon prepare parameters", sizeof(gpu::PrepareParams)),
-      mTraceParams("photon trace parameters", sizeof(gpu::TraceParams)) {}
+      mTraceParams("photon trace parameters", sizeof(gpu::TraceParams)),
+      mPhotonsPerLane(gl::isCurrentRendererSoftware() ? gpu::kTracePhotonsPerLaneSoftware : 1u) {}
 
 void PhotonTracePass::execute(const FrameInputs& inputs) {
     executeSlice(inputs, 0, 1);
@@ -34,7 +36,8 @@ void PhotonTracePass::executeSlice(const FrameInputs& inputs, uint32_t slice, ui
     gpu::PrepareParams prepare{};
     prepare.control = glm::uvec4(mBuffers.getResultCapacity(), mBuffers.getBounceCapacity(),
                                  gpu::kPrepareStageBeforeTrace, inputs.splatDraws);
-    prepare.splat = glm::uvec4(gpu::getSplatIndexCount(inputs.settings.splatShape), 0u, 0u, 0u);
+    prepare.splat =
+        glm::uvec4(gpu::getSplatIndexCount(inputs.settings.splatShape), mPhotonsPerLane, 0u, 0u);
     gpu::TraceParams trace{};
     trace.control = glm::uvec4(static_cast<uint32_t>(inputs.settings.bounces), inputs.seed,
                                inputs.settings.rngGenerator, inputs.settings.rngMode);
@@ -59,7 +62,8 @@ void PhotonTracePass::executeSlice(const FrameInputs& inputs, uint32_t slice, ui
         gl::dispatchComputeIndirect(mBuffers.getCounters(),
                                     offsetof(gpu::PhotonCounters, traceDispatch));
     } else {
-        mBuffers.dispatchSlice(offsetof(gpu::PhotonCounters, bounce), slice, slices);
+        mBuffers.dispatchSlice(offsetof(gpu::PhotonCounters, bounce), slice, slices,
+                               mPhotonsPerLane);
     }
     gl::memoryBarrier(gl::Barrier::Storage);
     if (slice + 1 < slices) return;

@@ -27,6 +27,7 @@ class PhotonTracePass final : public Pass {
     ReloadableProgram mTrace;
     gl::Buffer mPrepareParams; // gpu::PrepareParams
     gl::Buffer mTraceParams;   // gpu::TraceParams
+    uint32_t mPhotonsPerLane;  // photon_trace.comp: 1, or kTracePhotonsPerLaneSoftware on llvmpipe
 };
 
 } // namespace ispm

@@ -14,7 +14,7 @@ void main() {
     if (params.control.z == kPrepareStageBeforeTrace) {
         uint bounced = min(counters.bounce.x, params.control.y);
         counters.bounce.x = bounced;
-        counters.traceDispatch = uvec4((bounced + kTraceGroupSize - 1u) / kTraceGroupSize, 1u, 1u, 0u);
+        counters.traceDispatch = uvec4(computeTraceGroups(bounced, params.splat.y), 1u, 1u, 0u);
         counters.result = uvec4(0u, params.control.x, 0u, params.control.y);
         return;
     }

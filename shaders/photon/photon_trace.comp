@@ -46,24 +46,40 @@ uint hashObjectPoint(RayHit hit) {
     return hashPcg(hit.instance ^ hashPcg(hit.triangle ^ hashPcg(b.x ^ hashPcg(b.y))));
 }
 
+// Lanes of a work group run in step on a SIMD renderer, and a photon's path ends at any bounce
+// (a miss, absorption): so each lane walks its photons one bounce per step and takes its next
+// photon (every `lanes`-th of the slice) as soon as one ends, instead of idling until the
+// longest path of its group is done (the dispatch's lanes: computeTraceGroups).
 void main() {
     uvec2 range = computeSliceRange(counters.bounce.x, params.slice.x, params.slice.y);
-    uint index = range.x + gl_GlobalInvocationID.x;
-    if (index >= range.y) return;
-    BouncePhoton photon = bouncePhotons[index];
-    vec3 position = photon.positionDistance.xyz;
-    float travelled = photon.positionDistance.w;
-    vec3 dir = photon.directionDensity.xyz;
-    float density = photon.directionDensity.w;
-    vec3 power = photon.power.rgb;
-    uint id = floatBitsToUint(photon.power.w);
+    uint lanes = gl_NumWorkGroups.x * kTraceGroupSize;
+    uint next = range.x + gl_GlobalInvocationID.x;
     uint bounces = params.control.x;
-    uint light = findPhotonLight(id);
-    for (uint reflections = 1u; reflections <= bounces; ++reflections) {
+    vec3 position, dir, power;
+    float travelled, density;
+    uint id, light;
+    uint reflections = 0u; // 0: the lane holds no photon
+    while (true) {
+        if (reflections == 0u) {
+            if (next >= range.y) break;
+            BouncePhoton photon = bouncePhotons[next];
+            next += lanes;
+            position = photon.positionDistance.xyz;
+            travelled = photon.positionDistance.w;
+            dir = photon.directionDensity.xyz;
+            density = photon.directionDensity.w;
+            power = photon.power.rgb;
+            id = floatBitsToUint(photon.power.w);
+            light = findPhotonLight(id);
+            reflections = 1u;
+        }
         float offset = computeRayOffset(position, params.ray.x);
         vec3 origin = position + dir * offset;
         RayHit hit;
-        if (!traceRay(origin, dir, kNoHitDistance, hit)) break;
+        if (!traceRay(origin, dir, kNoHitDistance, hit)) {
+            reflections = 0u;
+            continue;
+        }
         position = origin + dir * hit.t;
         travelled += hit.t + offset;
         vec3 geometric = computeHitNormal(hit);
@@ -71,7 +87,10 @@ void main() {
         vec3 n = frontFace ? geometric : -geometric;
         GpuMaterial m = materials[triangles[hit.triangle].w];
         if (isStoredSurface(m)) storePhoton(position, travelled, n, density, dir, reflections, light, power);
-        if (reflections == bounces) break;
+        if (reflections == bounces) {
+            reflections = 0u;
+            continue;
+        }
         // object_space: the numbers of where the photon hit, in the hit triangle's own terms
         // (instance, triangle, barycentrics on a 2^-16 grid), so they stay while that surface
         // and the path to it stay, however the object moved; else the photon's emission cell.
@@ -80,7 +99,11 @@ void main() {
         vec3 diffuse = getHitDiffuse(m, hit.triangle, hit.barycentric);
         uint event = scatterPhoton(dir, power, n, diffuse, m.specular, m.transmissive,
                                    frontFace, rng, params.control.z);
-        if (event == kScatterAbsorbed) break;
+        if (event == kScatterAbsorbed) {
+            reflections = 0u;
+            continue;
+        }
         density = updatePathDensity(density, event, m.specular.w);
+        ++reflections;
     }
 }
