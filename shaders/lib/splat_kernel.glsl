@@ -42,6 +42,10 @@ SplatShape loadSplatShape(uint id, uint clipLines) {
     }
     return s;
 }
+
+// The shape's line counts in one uint, as the splat hands them on (a flat varying, the gather's
+// shared memory) to computeSplatWeight: the lines, and the whole ones << 8.
+uint packLineCounts(SplatShape s) { return s.lines | (s.wholeLines << 8u); }
 #endif
 
 // The splat's kernel 2 / (pi r^2) (1 - s^2 / r^2) over the in-plane distance s at G-buffer point
@@ -66,19 +70,19 @@ float computeSplatKernel(vec4 centre, vec3 pn, vec3 tangent, vec3 bitangent, flo
 }
 
 // The kernel over the kept mass, or a negative value where computeSplatKernel gives none or the
-// point lies beyond a clip line (in its wedge). Gather-style renormalisation: the pixel's own disc (radius r,
-// centred on it) is cut by the same lines; dividing by the part of it that lies on the surface
-// keeps a uniform irradiance uniform up to the wall, and the photon's power on the surfaces it
-// reached. Without lines the kept mass is 1: splat.frag's variant for discs without clip lines
+// point lies beyond a clip line (in its wedge); `lineCounts` as packLineCounts gives them.
+// Gather-style renormalisation: the pixel's own disc (radius r, centred on it) is cut by the
+// same lines; dividing by the part of it that lies on the surface keeps a uniform irradiance
+// uniform up to the wall, and the photon's power on the surfaces it reached. Without lines the kept mass is 1: splat.frag's variant for discs without clip lines
 // (splat_clip off, SPLAT_CLIP_LINES 0) calls computeSplatKernel alone, since llvmpipe runs this
 // loop's body once even for no line.
-float computeSplatWeight(vec4 centre, vec3 pn, vec3 tangent, vec3 bitangent, uint wholeLines,
-                         uint lines, vec2 poles[kClipRays], uint wedges[kClipRays], float squash,
+float computeSplatWeight(vec4 centre, vec3 pn, vec3 tangent, vec3 bitangent, uint lineCounts,
+                         vec2 poles[kClipRays], uint wedges[kClipRays], float squash,
                          vec3 position, vec3 n) {
     vec2 x;
     float kernel = computeSplatKernel(centre, pn, tangent, bitangent, squash, position, n, x);
     if (kernel < 0.0) return -1.0;
-    float keptMass = computeKeptMass(x, poles, wedges, wholeLines, lines, centre.w);
+    float keptMass = computeKeptMass(x, poles, wedges, lineCounts >> 8u, lineCounts & 0xffu, centre.w);
     if (keptMass < 0.0) return -1.0; // beyond a clip line
     return kernel / keptMass;
 }

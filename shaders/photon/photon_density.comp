@@ -358,9 +358,9 @@ void clipDisc(uint index, vec3 p, vec3 n, float radius) {
         poles[i] = t < radius ? computeClipPole(ray2 * t, normal2, ray2) : vec2(0.0);
         hitsM[i] = t; // the radius where nothing was met (RayQuad none)
     }
+    removeRepeatedLines(poles, radius);
     uint wedges[kClipRays];
     findLineWedges(poles, hitsM, radius, wedges);
-    removeRepeatedLines(poles, radius);
     writeClip(index, poles, wedges, radius);
 }
 

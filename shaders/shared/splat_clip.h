@@ -111,84 +111,79 @@ ISPM_INLINE vec2 getWedgeDirection(uint code) {
                : (quadrant == 1u ? vec2(-d.y, d.x) : (quadrant == 2u ? -d : vec2(d.y, -d.x)));
 }
 
-// The bound between clip ray `met` (the outermost that met the line on its side) and its
-// neighbour `passed` (the next one out, which crossed the line without meeting anything there).
+// The bound between clip ray `met` (the outermost that met a line on its side) and its neighbour
+// `passed` (the next one out, which crossed the line without meeting anything there).
 ISPM_INLINE uint computeWedgeBound(uint met, uint passed) {
     bool after = passed == (met + 1u) % kClipRays; // counterclockwise of `met`
     return (2u * met + (after ? 1u : 2u * kClipRays - 1u)) % (2u * kClipRays);
 }
 
-// Each line's wedge (kWedgeOpen where none, or a zero pole): on either side of the line's pole,
-// the clip rays that cross the line within the radius, taken outward, either meet it or pass it
-// (`hitsM`: each ray's distance to what it met, the radius when nothing). Where one passes
-// beyond the outermost that met it, the surface ends between the two (a wall's free end, a
-// building's outer corner): the wedge's bound on that side is the bisector of the two rays, and
-// the disc reaches round the end while the line still cuts it behind the surface (without the
-// bound a line would cut open ground off the disc; without the line light would leak through
-// the wall into the room behind it). A door in a wall does not bound it: the rays through the
-// door lie between rays that meet the wall.
+// Each line's wedge (kWedgeOpenBoth where none, or a zero pole): the clip rays that cross the
+// line within the radius, taken by where along the line they cross it, either meet it or pass
+// it (`hitsM`: each ray's distance to what it met, the radius when nothing). Where one passes
+// beyond the outermost that met it, the surface ends between the two neighbouring rays (a
+// wall's free end, a building's outer corner): the wedge's bound on that side is their bisector,
+// and the disc reaches round the end while the line still cuts it behind the surface (without
+// the bound a line would cut open ground off the disc; without the line light would leak
+// through the wall into the room behind it). A door in a wall does not bound it: the rays
+// through the door lie between rays that meet the wall.
 ISPM_INLINE void findLineWedges(const vec2 poles[kClipRays], const float hitsM[kClipRays],
                                 float radiusM, ISPM_OUT_ARRAY(uint, wedges, kClipRays)) {
     // Past the crossing by more than this share of it (and of the radius): not the same surface
     // (a slanted wall's line, met by rays above and beneath the plane, differs by round-off).
     const float kPassed = 0.05f;
+    const float kNone = 4.0f * radiusM; // beyond any crossing within the radius
     for (uint i = 0u; i < kClipRays; ++i) {
         wedges[i] = kWedgeOpenBoth;
         float p2 = dot(poles[i], poles[i]);
         if (p2 <= 0.0f) continue;
         vec2 along = vec2(-poles[i].y, poles[i].x); // counterclockwise of the pole
-        // Per ray crossing the line within the radius: its side (0: counterclockwise of the pole,
-        // 1: clockwise), how far out along the line it crosses (times |pole|; -1: it does not
-        // cross) and whether it met the line there.
-        float outM[kClipRays];
+        // Where each ray crosses the line, along it (times |pole|, counterclockwise positive;
+        // kNone: not within the radius), whether it met the line there, and the rays that met it
+        // farthest out each way.
+        float atM[kClipRays];
         bool meets[kClipRays];
-        // Per side the outermost and innermost ray that met the line (-1: none).
-        float outerM[2] = {-1.0f, -1.0f};
-        float innerM[2] = {radiusM * 2.0f, radiusM * 2.0f};
-        uint outer[2] = {0u, 0u};
-        uint inner[2] = {0u, 0u};
+        float highM = -kNone;
+        float lowM = kNone;
+        uint high = kClipRays;
+        uint low = kClipRays;
         for (uint j = 0u; j < kClipRays; ++j) {
             vec2 ray2 = getClipDirection(j);
             float toward = dot(ray2, poles[i]);
-            float crossingM = toward > 0.0f ? p2 / toward : radiusM; // where ray j meets the line
-            outM[j] = -1.0f;
-            meets[j] = false;
-            if (crossingM >= radiusM) continue;
-            float signedOutM = dot(ray2, along) * crossingM;
-            uint side = signedOutM >= 0.0f ? 0u : 1u;
-            outM[j] = abs(signedOutM);
-            meets[j] = hitsM[j] <= crossingM + kPassed * (crossingM + radiusM);
+            float crossingM = toward > 0.0f ? p2 / toward : radiusM;
+            atM[j] = crossingM < radiusM ? dot(ray2, along) * crossingM : kNone;
+            meets[j] = atM[j] != kNone && hitsM[j] <= crossingM + kPassed * (crossingM + radiusM);
             if (!meets[j]) continue;
-            if (outM[j] > outerM[side]) {
-                outerM[side] = outM[j];
-                outer[side] = j;
+            if (atM[j] > highM) {
+                highM = atM[j];
+                high = j;
             }
-            if (outM[j] < innerM[side]) {
-                innerM[side] = outM[j];
-                inner[side] = j;
+            if (atM[j] < lowM) {
+                lowM = atM[j];
+                low = j;
             }
         }
-        uint bounds[2] = {kWedgeOpen, kWedgeOpen};
-        for (uint side = 0u; side < 2u; ++side) {
-            // The innermost ray beyond the outermost that met the line on this side, that
-            // passed it (a door's rays lie between rays that met the wall).
-            float passedM = radiusM * 2.0f;
-            uint passed = kClipRays;
-            for (uint j = 0u; j < kClipRays; ++j) {
-                vec2 ray2 = getClipDirection(j);
-                bool onSide = (dot(ray2, along) >= 0.0f) == (side == 0u);
-                if (outM[j] < 0.0f || meets[j] || !onSide) continue;
-                if (outM[j] > outerM[side] && outM[j] < passedM) {
-                    passedM = outM[j];
-                    passed = j;
-                }
+        if (high == kClipRays) continue; // round-off: no ray met its own line
+        // The nearest crossing rays beyond those, which passed the line: where it ends. The
+        // crossing rays are neighbours in angle, so each end lies between neighbouring rays.
+        float endHighM = kNone;
+        float endLowM = -kNone;
+        uint endHigh = kClipRays;
+        uint endLow = kClipRays;
+        for (uint j = 0u; j < kClipRays; ++j) {
+            if (atM[j] == kNone || meets[j]) continue;
+            if (atM[j] > highM && atM[j] < endHighM) {
+                endHighM = atM[j];
+                endHigh = j;
             }
-            // A side no ray met: the surface ends between the other side's innermost ray that
-            // met it and this one.
-            uint from = outerM[side] >= 0.0f ? outer[side] : inner[1u - side];
-            if (passed < kClipRays) bounds[side] = computeWedgeBound(from, passed);
+            if (atM[j] < lowM && atM[j] > endLowM) {
+                endLowM = atM[j];
+                endLow = j;
+            }
         }
-        wedges[i] = bounds[0] | (bounds[1] << 8u);
+        uint ccw = endHigh < kClipRays ? computeWedgeBound(high, endHigh) : kWedgeOpen;
+        uint cw = endLow < kClipRays ? computeWedgeBound(low, endLow) : kWedgeOpen;
+        wedges[i] = ccw | (cw << 8u);
     }
 }
 

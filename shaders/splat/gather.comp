@@ -25,7 +25,7 @@ layout(rgba32f, binding = kImageGatherOutput) uniform writeonly image2D uOutput;
 #include "lib/splat_kernel.glsl"
 
 shared vec4 sCentre[kGatherBatch];    // xyz position, w radius
-shared vec4 sNormal[kGatherBatch];    // xyz normal, w = clip lines | whole ones << 8 (uint bits)
+shared vec4 sNormal[kGatherBatch];    // xyz normal, w = packLineCounts (uint bits)
 shared vec4 sTangent[kGatherBatch];
 shared vec4 sBitangent[kGatherBatch];
 shared vec4 sPower[kGatherBatch];
@@ -40,7 +40,7 @@ void stagePhoton(uint slot, uint id) {
     vec3 b;
     buildSplatBasis(n, t, b);
     sCentre[slot] = vec4(photons[id].positionDistance.xyz, shape.radius);
-    sNormal[slot] = vec4(n, uintBitsToFloat(shape.lines | (shape.wholeLines << 8u)));
+    sNormal[slot] = vec4(n, uintBitsToFloat(packLineCounts(shape)));
     sTangent[slot] = vec4(t, 0.0);
     sBitangent[slot] = vec4(b, 0.0);
     sPower[slot] = vec4(photons[id].power.rgb, 0.0);
@@ -87,10 +87,9 @@ void main() {
                 poles[2u * i + 1u] = sPoles[j][i].zw;
             }
             for (uint i = 0u; i < kClipRays; ++i) wedges[i] = sWedges[j][i / 4u][i % 4u];
-            uint lines = floatBitsToUint(sNormal[j].w);
             float weight = computeSplatWeight(sCentre[j], sNormal[j].xyz, sTangent[j].xyz,
-                                              sBitangent[j].xyz, lines >> 8u, lines & 0xffu, poles,
-                                              wedges, params.shape.x, position.xyz, n);
+                                              sBitangent[j].xyz, floatBitsToUint(sNormal[j].w),
+                                              poles, wedges, params.shape.x, position.xyz, n);
             if (weight < 0.0) continue;
             vec3 f = evaluateSplatBrdf(diffuse, specular, n, -sIncoming[j].xyz, wo,
                                            frame.specularTrace.x);

@@ -38,9 +38,8 @@ void main() {
     if (position.w < 0.5) discard;
     vec3 n = texelFetch(uNormal, pixel, 0).xyz;
 #if SPLAT_CLIP_LINES
-    float weight = computeSplatWeight(vCentre, vNormal, vTangent, vBitangent, vLines >> 8u,
-                                      vLines & 0xffu, vPoles, vWedges, params.shape.x,
-                                      position.xyz, n);
+    float weight = computeSplatWeight(vCentre, vNormal, vTangent, vBitangent, vLines, vPoles,
+                                      vWedges, params.shape.x, position.xyz, n);
 #else
     vec2 x;
     float weight =

@@ -28,7 +28,7 @@ flat out vec3 vBitangent;
 flat out vec3 vPower;    // W
 flat out vec3 vIncoming; // the direction the photon arrived along
 #if SPLAT_CLIP_LINES // splat_clip (SplatPass)
-flat out uint vLines;    // clip lines in vPoles (the nonzero poles first), whole ones << 8
+flat out uint vLines;    // clip lines in vPoles (packLineCounts)
 flat out vec2 vPoles[kClipRays];
 flat out uint vWedges[kClipRays];
 #endif
@@ -61,7 +61,7 @@ void main() {
     float radius = shape.radius;
     vec4 extent = shape.extent; // along +t, -t, +b, -b
 #if SPLAT_CLIP_LINES
-    vLines = shape.lines | (shape.wholeLines << 8u);
+    vLines = packLineCounts(shape);
     vPoles = shape.poles;
     vWedges = shape.wedges;
 #endif

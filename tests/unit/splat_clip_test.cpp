@@ -123,7 +123,7 @@ ClipRays castClipRays(std::initializer_list<glm::vec4> rects) { // rect: x0, y0,
     return out;
 }
 
-// Lines and wedges as photon_density.comp leaves them: wedges found, repeated lines zeroed.
+// Lines and wedges as photon_density.comp leaves them: repeated lines zeroed, then wedges found.
 struct ClipLines {
     gpu::vec2 poles[gpu::kClipRays] = {};
     uint32_t wedges[gpu::kClipRays] = {};
@@ -131,8 +131,8 @@ struct ClipLines {
 
 ClipLines findLines(ClipRays rays) {
     ClipLines out;
-    gpu::findLineWedges(rays.poles, rays.hitsM, 1.0f, out.wedges);
     gpu::removeRepeatedLines(rays.poles, 1.0f);
+    gpu::findLineWedges(rays.poles, rays.hitsM, 1.0f, out.wedges);
     std::copy(std::begin(rays.poles), std::end(rays.poles), std::begin(out.poles));
     return out;
 }
