@@ -167,7 +167,8 @@ const std::vector<SettingDesc>& table() {
          0,
          1048576,
          "",
-         "viewer pixels that build the importance maps (each also casts one bounce ray): all of "
+         "viewer pixels that build the importance maps (each also casts one bounce ray, and one "
+         "more from a point that no light reaches): all of "
          "them on a view's first frame, importance_samples / importance_frames on each later one",
          {}},
         {"importance_frames",

@@ -1,7 +1,8 @@
 // Importance gather: where do this frame's photons matter? Samples of the viewer's G-buffer (one
 // jittered pixel per cell of a coarse grid over the image) add importance to the light-view texels
-// that light them: the visible point itself where a light sees it, and the point one cosine-sampled
-// bounce away (a short ray through the BVH) where a light sees that one. Each hit is splatted
+// that light them: the visible point itself where a light sees it, the point one cosine-sampled
+// bounce away (a short ray through the BVH) where a light sees that one, and from a visible point
+// that no light sees, the point a second bounce away (importance_pass.cpp). Each hit is splatted
 // bilinearly into the light view's coarse map (shared/importance_data.h). A light sees a point as
 // the direct pass finds it: by shadow map, or with SHADOW_RAYS 1 by ray.
 #ifndef SHADOW_RAYS
@@ -40,8 +41,9 @@ void addImportance(uint view, vec2 uv, float weight) {
 }
 
 // For every light that sees the surface point (p, n) directly, adds `weight` where its camera
-// sees it. n may face either way: it is turned towards the light first.
-void addLitPoint(vec3 p, vec3 n, float weight) {
+// sees it; whether any does. n may face either way: it is turned towards the light first.
+bool addLitPoint(vec3 p, vec3 n, float weight) {
+    bool lit = false;
     for (uint i = 0u; i < frame.counts.x; ++i) {
         GpuLight light = lights[i];
         LightSample s = sampleLight(light, p);
@@ -63,7 +65,22 @@ void addLitPoint(vec3 p, vec3 n, float weight) {
 #endif
         if (computeVisibility(light, p, facing) < 0.5) continue;
         addImportance(view, ndc * 0.5 + 0.5, weight);
+        lit = true;
     }
+    return lit;
+}
+
+// A cosine-sampled bounce from the surface point (p, n), n facing the side the ray leaves to: the
+// point it hits, with its normal turned to face the ray's origin.
+bool traceBounce(vec3 p, vec3 n, inout uint rng, out vec3 q, out vec3 nq) {
+    vec3 dir = sampleCosine(n, nextRandom(rng, kRngPcg), nextRandom(rng, kRngPcg));
+    vec3 origin = p + n * computeRayOffset(p, params.weights.w);
+    RayHit hit;
+    if (!traceRay(origin, dir, kNoHitDistance, hit)) return false;
+    q = origin + dir * hit.t;
+    nq = computeHitNormal(hit);
+    nq = dot(nq, dir) < 0.0 ? nq : -nq;
+    return true;
 }
 
 void main() {
@@ -78,14 +95,13 @@ void main() {
     vec4 position = texelFetch(uPosition, pixel, 0);
     if (position.w < 0.5) return;
     vec3 n = normalize(texelFetch(uNormal, pixel, 0).xyz);
-    addLitPoint(position.xyz, n, params.weights.y);
+    bool lit = addLitPoint(position.xyz, n, params.weights.y);
 
-    // One bounce towards the surfaces that light this one.
-    vec3 dir = sampleCosine(n, nextRandom(rng, kRngPcg), nextRandom(rng, kRngPcg));
-    vec3 origin = position.xyz + n * computeRayOffset(position.xyz, params.weights.w);
-    RayHit hit;
-    if (!traceRay(origin, dir, kNoHitDistance, hit)) return;
-    vec3 q = origin + dir * hit.t;
-    vec3 nq = computeHitNormal(hit);
-    addLitPoint(q, dot(nq, dir) < 0.0 ? nq : -nq, params.weights.z);
+    // One bounce towards the surfaces that light this one; from an unlit point, a second.
+    vec3 q;
+    vec3 nq;
+    if (!traceBounce(position.xyz, n, rng, q, nq)) return;
+    addLitPoint(q, nq, params.weights.z);
+    if (lit || !traceBounce(q, nq, rng, q, nq)) return;
+    addLitPoint(q, nq, params.unlit.x);
 }

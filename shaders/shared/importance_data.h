@@ -61,8 +61,10 @@ struct ImportanceParams {
     vec4 history; // x = weight of this frame's samples in the maps (1: built anew; else
                   // 1 / importance_frames), y = scale from a texel's hits to importance per
                   // gather sample, zw unused
+    vec4 unlit;   // x = weight of a point two bounces away from a visible point that no light
+                  // reaches, yzw unused
 };
-ISPM_STATIC_ASSERT_SIZE(ImportanceParams, 48);
+ISPM_STATIC_ASSERT_SIZE(ImportanceParams, 64);
 ISPM_CONST int kBindingImportanceParams = 1; // uniform buffer
 
 ISPM_NAMESPACE_END
