@@ -6,6 +6,7 @@
 // calls none of the code under test: the random stream (PCG hash, Jarzynski and Olano 2020), the
 // grid's shift, the basis (Duff et al. 2017) and the scatter rules are written again below, in
 // double, from their statements.
+#include "support/analytic_scenes.h"
 #include "support/gl_fixture.h"
 
 #include "core/strings.h"
@@ -939,6 +940,76 @@ TEST_F(PhotonEmitTest, ImportanceMapsAverageOverFrames) {
     // A history ignored leaves the quarter's distance, one never blended in the first frame's.
     EXPECT_LT(averaged, 0.95 * single);
     EXPECT_LT(averaged, 0.8 * quarter);
+}
+
+// A table in the sun, wider than the floor beneath it, and a sunlit ground beside: the camera,
+// under the table, sees the floor, which no light reaches; one bounce from it meets the table's
+// underside (no light there either) or nothing; only a second bounce, down from the underside,
+// meets a surface the sun lights: the ground beside.
+Scene makeShadedFloorScene() {
+    Scene scene;
+    scene.sourcePath = "photon emit test shaded floor";
+    scene.materials.push_back(makeMaterial("grey", glm::vec3(0.5f)));
+    Mesh mesh;
+    mesh.name = "floor, table and ground";
+    addBox(mesh, {-2.0f, -0.2f, -2.0f}, {2.0f, 0.0f, 2.0f}); // the floor
+    addBox(mesh, {-2.2f, 2.0f, -2.2f}, {2.2f, 3.0f, 2.2f});  // the table top, 1 m thick
+    addBox(mesh, {2.5f, -0.2f, -2.0f}, {6.5f, 0.0f, 2.0f});  // the ground beside
+    scene.meshes.push_back(std::move(mesh));
+    scene.instances.push_back({0, glm::mat4(1.0f)});
+    Light sun;
+    sun.type = LightType::Sun;
+    sun.direction = {0.0f, -1.0f, 0.0f};
+    sun.irradiance = glm::vec3(100.0f);
+    scene.lights.push_back(sun);
+    scene.camera.position = {0.0f, 1.0f, 0.5f};
+    scene.camera.target = {0.0f, 0.0f, -1.5f};
+    scene.camera.fovYDeg = 40.0f;
+    return scene;
+}
+
+TEST_F(PhotonEmitTest, UnlitViewAimsPhotonsTwoBouncesBack) {
+    // What lights a point no light reaches arrives after two bounces or more, and the gather
+    // follows a second bounce from such a point: the sun's map (the aimed share alone) gathers
+    // importance on the ground beside the table. From the floor's first bounce alone it would
+    // gather none and stay uniform (the floor's share takes everything).
+    const Scene scene = makeShadedFloorScene();
+    Settings settings = makeSettings(4000);
+    settings.set("width", 64, "test");
+    settings.set("height", 64, "test");
+    settings.set("importance", 1.0, "test");
+    // The sun's visibility by ray, exact: a shadow map's bias would light the table's underside.
+    settings.setEnum("shadows", "ray", "test");
+    FrameRunner runner(scene, settings, gl::TimingMethod::CpuFinish);
+    runner.renderFrame();
+    const std::vector<double> p = readTexelProbabilities(runner);
+    // View 0 is the sun's scene-wide view, the one that emits, looking straight down: a texel's
+    // centre taken back through it gives the x of the ground it aims at.
+    const glm::mat4 worldFromClip =
+        glm::inverse(runner.getGpuScene().getLightCameras()[0].getClipFromWorld());
+    size_t nonzero = 0;
+    double largest = 0.0;
+    double beside = 0.0; // the mass on texels beyond the table's edge (x 2.2), where the ground is
+    for (uint32_t row = 0; row < gpu::kImportanceSize; ++row) {
+        for (uint32_t c = 0; c < gpu::kImportanceSize; ++c) {
+            const double pTexel = p[row * gpu::kImportanceSize + c];
+            const glm::vec2 ndc =
+                (glm::vec2(c, row) + 0.5f) / float(gpu::kImportanceSize) * 2.0f - 1.0f;
+            const glm::vec4 world = worldFromClip * glm::vec4(ndc, 0.0f, 1.0f);
+            nonzero += pTexel > 0.0 ? 1 : 0;
+            largest = std::max(largest, pTexel);
+            beside += world.x / world.w > 2.2f ? pTexel : 0.0;
+        }
+    }
+    std::printf("[ emit     ] shaded floor: %zu of %u texels aimed at, the largest %.1fx uniform, "
+                "%.3f of the mass beside the table\n",
+                nonzero, gpu::kImportanceTexels, largest * gpu::kImportanceTexels, beside);
+    // A uniform map has every texel at 1x and 0.49 of its mass beside the table (the view spans
+    // x -2.2 to 6.5). Measured: the maps' tents spread the ground's hits over 3,658 texels, the
+    // largest 56x uniform, 0.996 of the mass beside the table (the rest the tents' spill).
+    EXPECT_LT(nonzero, gpu::kImportanceTexels / 2);
+    EXPECT_GT(largest * gpu::kImportanceTexels, 4.0);
+    EXPECT_GT(beside, 0.9);
 }
 
 TEST_F(PhotonEmitTest, ImportanceHistoryStartsAnewWhenASettingChanges) {

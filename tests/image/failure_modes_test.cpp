@@ -1,6 +1,7 @@
 // Where image-space photon mapping fails, measured: light leaking through a thin wall, energy lost
 // at edges and corners, frame-to-frame flicker between seeds, and pixels no photon reaches. Each
 // test prints its numbers and bounds today's behaviour, so a change that moves them shows up here.
+#include "support/analytic_scenes.h"
 #include "support/gl_fixture.h"
 #include "support/render_support.h"
 
@@ -82,22 +83,6 @@ Scene loadCornell() {
 constexpr float kRoomHalfM = 1.0f; // each room is a 2 m cube
 constexpr float kWallGapM = 0.02f; // the shared wall: two faces 2 cm apart at x = -+1 cm
 constexpr float kFloorY = -kRoomHalfM;
-
-// Adds the 12 triangles of the box [lo, hi] (two-sided walls) to `mesh`, material 0.
-void addBox(Mesh& mesh, const glm::vec3& lo, const glm::vec3& hi) {
-    const uint32_t first = uint32_t(mesh.positions.size());
-    for (int i = 0; i < kAabbCornerCount; ++i) {
-        mesh.positions.emplace_back((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y,
-                                    (i & 4) ? hi.z : lo.z);
-    }
-    const glm::uvec4 faces[6] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
-                                 {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
-    for (const glm::uvec4& f : faces) {
-        mesh.triangles.emplace_back(first + f.x, first + f.y, first + f.z);
-        mesh.triangles.emplace_back(first + f.x, first + f.z, first + f.w);
-        mesh.triangleMaterials.insert(mesh.triangleMaterials.end(), {0u, 0u});
-    }
-}
 
 // Room A (x < 0) holds a point light; room B (x > 0) is sealed from it by a wall 2 cm thick.
 // `inRoomA` puts the camera in A, else in B; the two cameras mirror each other across x = 0 and

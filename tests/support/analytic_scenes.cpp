@@ -49,6 +49,21 @@ Scene makeGreySquares(std::span<const glm::mat4> worldFromSquare) {
     return scene;
 }
 
+void addBox(Mesh& mesh, const glm::vec3& lo, const glm::vec3& hi) {
+    const uint32_t first = uint32_t(mesh.positions.size());
+    for (int i = 0; i < kAabbCornerCount; ++i) {
+        mesh.positions.emplace_back((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y,
+                                    (i & 4) ? hi.z : lo.z);
+    }
+    const glm::uvec4 faces[6] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                                 {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    for (const glm::uvec4& f : faces) {
+        mesh.triangles.emplace_back(first + f.x, first + f.y, first + f.z);
+        mesh.triangles.emplace_back(first + f.x, first + f.z, first + f.w);
+        mesh.triangleMaterials.insert(mesh.triangleMaterials.end(), {0u, 0u});
+    }
+}
+
 glm::dvec3 projectToGround(const Scene& scene, int width, int height, double px, double py) {
     // The same camera math the renderer uses.
     float nearM = 0.0f;

@@ -17,6 +17,10 @@ Scene makeLitPlane(float rho, float intensity, float heightM, float halfSizeM);
 // transform. No lights; camera left at its defaults.
 Scene makeGreySquares(std::span<const glm::mat4> worldFromSquare);
 
+// Adds the 12 triangles of the box [lo, hi] to `mesh` (its faces two-sided, as every surface),
+// material 0.
+void addBox(Mesh& mesh, const glm::vec3& lo, const glm::vec3& hi);
+
 // Where the camera ray through image position (px, py) meets y = 0; (px, py) in pixels with
 // (0, 0) at the image's top-left corner, so pixel centres are at +0.5.
 glm::dvec3 projectToGround(const Scene& scene, int width, int height, double px, double py);
