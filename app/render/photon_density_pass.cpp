@@ -98,7 +98,8 @@ void PhotonDensityPass::useStage(uint32_t stage, const FrameSettings& settings) 
     mPrograms
         .get({"DENSITY_STAGE " + std::to_string(stage) + "u",
               settings.splatClip ? "CLIP_DISCS 1" : "CLIP_DISCS 0",
-              settings.widenStrong ? "WIDEN_STRONG 1" : "WIDEN_STRONG 0"})
+              settings.widenStrong ? "WIDEN_STRONG 1" : "WIDEN_STRONG 0",
+              settings.splatMerge > 0.0f ? "MERGE_DISCS 1" : "MERGE_DISCS 0"})
         .use();
 }
 
@@ -143,7 +144,8 @@ void PhotonDensityPass::sortPhotons(const FrameInputs& inputs, size_t countsAt, 
 }
 
 uint32_t PhotonDensityPass::getStageCount(const FrameSettings& settings) {
-    if (settings.radiusMode == gpu::kRadiusDensity) return 2u;
+    // Count, radius, and with splat_merge the merge.
+    if (settings.radiusMode == gpu::kRadiusDensity) return settings.splatMerge > 0.0f ? 3u : 2u;
     return settings.widenStrong ? 2u : 1u;
 }
 
@@ -205,10 +207,12 @@ void PhotonDensityPass::executeSlice(const FrameInputs& inputs, uint32_t stage, 
 
     gpu::DensityParams params{};
     params.grid = glm::vec4(cell, float(neighbours), radiusMin, radiusMax);
-    params.scales =
-        glm::vec4(scale, inputs.scene.getRayEpsilon(), inputs.progressive.travelRadiusFactor, 0.0f);
-    params.control = glm::uvec4(stage == 0 ? gpu::kDensityStageCount : gpu::kDensityStageRadius,
-                                slots - 1, inputs.progressive.spreadStrongPhotons ? 1u : 0u, 0u);
+    params.scales = glm::vec4(scale, inputs.scene.getRayEpsilon(),
+                              inputs.progressive.travelRadiusFactor, inputs.settings.splatMerge);
+    constexpr uint32_t kStages[3] = {gpu::kDensityStageCount, gpu::kDensityStageRadius,
+                                     gpu::kDensityStageMerge};
+    params.control =
+        glm::uvec4(kStages[stage], slots - 1, inputs.progressive.spreadStrongPhotons ? 1u : 0u, 0u);
     params.slice = sliceParams;
     params.slice.z = uint32_t(mOrderOffset / sizeof(uint32_t));
     params.slice.w = uint32_t(mCausticOffset / sizeof(uint32_t));

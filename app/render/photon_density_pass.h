@@ -78,7 +78,7 @@ class PhotonDensityPass final : public Pass {
     // its counts at uint countsAt of mCells, the indices at orderAt.
     void sortPhotons(const FrameInputs& inputs, size_t countsAt, size_t orderAt);
 
-    ProgramVariants mPrograms;      // by stage (DENSITY_STAGE), CLIP_DISCS and WIDEN_STRONG
+    ProgramVariants mPrograms; // by stage (DENSITY_STAGE), CLIP_DISCS, WIDEN_STRONG, MERGE_DISCS
     ProgramVariants mOrderPrograms; // by stage (ORDER_STAGE)
     ZeroFill mZeroFill;             // clears the table each frame
     gl::Buffer mParams;             // gpu::DensityParams

@@ -165,6 +165,7 @@ FrameSettings resolveFrameSettings(const Settings& settings) {
     f.rngMode = getChoice(settings, "rng");
     f.radiusMode = getChoice(settings, "radius_mode");
     f.splatNeighbours = computeSplatNeighbours(settings);
+    f.splatMerge = settings.getFloat("splat_merge");
     f.radiusMinM = getIfSet(settings, "radius_min");
     f.radiusMaxM = getIfSet(settings, "radius_max");
     f.distMinM = getIfSet(settings, "dist_min");

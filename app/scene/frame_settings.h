@@ -63,6 +63,7 @@ struct FrameSettings {
     // Splats.
     uint32_t radiusMode = 0; // gpu::kRadius*
     int splatNeighbours = 0; // derived: 0.45 sqrt(photons), 16 to 256
+    float splatMerge = 0.0f; // merge cell side / radius (radius_mode density); 0: off
     // As set (metres, before radius_scale); the passes derive the rest from the scene.
     std::optional<float> radiusMinM;
     std::optional<float> radiusMaxM;

@@ -216,6 +216,18 @@ const std::vector<SettingDesc>& table() {
          "sqrt(photons), 16 to 256 (accumulated frames hold fewer, see accumulate)",
          {},
          true},
+        {"splat_merge",
+         SettingType::Float,
+         0,
+         0,
+         1,
+         "",
+         "radius_mode density: photons whose discs would lie almost on top of each other are "
+         "drawn as one disc, of their summed power at their power-weighted centre, its radius "
+         "their radii's power-weighted RMS: those in one cell of side at most splat_merge x the "
+         "radius (the density grid's, on the same side of a surface; caustic photons apart), so "
+         "the splat draws fewer discs; 0 = every photon its own disc",
+         {}},
         {"radius_min",
          SettingType::Float,
          0,

@@ -19,7 +19,8 @@
 // whole disc of that power is a blotch. A weaker photon keeps its radius.
 //
 // Stage 1 also culls photons whose disc lies outside the view frustum (radius 0: the splat skips
-// them). With CLIP_DISCS 1 (splat_clip) stage 1 or 2 finds the lines where surfaces cut each
+// them). With MERGE_DISCS 1 (splat_merge) it adds each photon to its merge cell, and stage 4
+// draws each cell's photons as one disc (mergePhoton). With CLIP_DISCS 1 (splat_clip) stage 1 or 2 finds the lines where surfaces cut each
 // disc in view (shared/splat_clip.h): the in-plane rays of the clip, met against the triangles
 // of one BVH box query around the disc.
 #include "lib/constants.glsl"
@@ -54,6 +55,7 @@ layout(std140, binding = kBindingPassParams) uniform DensityParamsBlock { Densit
 const uint kStage = DENSITY_STAGE;
 const bool kClipDiscs = CLIP_DISCS != 0;
 const bool kWidenStrong = WIDEN_STRONG != 0;
+const bool kMergeDiscs = MERGE_DISCS != 0; // splat_merge above 0
 
 // The clip rays run this far above the surface, as a fraction of the radius: steps lower than
 // that do not clip a disc, walls do.
@@ -136,6 +138,53 @@ void insertCell(vec3 p, uint level, uint facing, float power) {
         }
         slot = (slot + 1u) & params.control.y;
     }
+}
+
+// splat_merge: a disc of radius r is merged with the others in its merge cell, the cell of the
+// density grid's coarsest level whose side is at most scales.w r (none when even the finest is
+// larger: -1), so that merged discs differ in radius by less than 2x.
+int computeMergeLevel(float radius) {
+    float cells = params.scales.w * radius / params.grid.x;
+    return cells >= 1.0 ? min(int(floor(log2(cells))), int(kDensityMergeLevelOffset) - 1) : -1;
+}
+
+// A merge cell's two slots in the density table (keyed apart from the counting cells): its sums
+// (part 0) and its radii (part 1). Part 0 at S: key, the cell's disc (its highest photon index
+// + 1, by atomicMax) at S + 1, the summed power (RGB, float bits) at S + 2 .. S + 4, the
+// positions weighted by power at S + 5 .. S + 7. Part 1: the squared radii weighted by power at
+// S + 1. The slot's first uint, or kNoMergeSlot where the table has no room (find: where the
+// cell is not in it).
+const uint kNoMergeSlot = 0xffffffffu;
+uint findMergeSlot(vec3 p, int level, uint facing, uint part, bool insert) {
+    ivec3 c = ivec3(floor(p / getCellSize(uint(level))));
+    uint h = hashCell(c, uint(level) + (part + 1u) * kDensityMergeLevelOffset, facing);
+    uint key = h | 1u;
+    uint slot = hashPcg(h) & params.control.y;
+    for (uint i = 0u; i < kDensityProbes; ++i) {
+        uint at = kDensitySlotUints * slot;
+        uint previous = insert ? atomicCompSwap(cells[at], 0u, key) : cells[at];
+        if (previous == key || (insert && previous == 0u)) return at;
+        if (previous == 0u) return kNoMergeSlot;
+        slot = (slot + 1u) & params.control.y;
+    }
+    return kNoMergeSlot;
+}
+
+// Adds the photon to its merge cell; false where the table has no room (it stays a disc of its
+// own).
+bool addToMerge(uint index, vec3 p, float radius, int level, uint facing) {
+    uint sums = findMergeSlot(p, level, facing, 0u, true);
+    uint radii = sums == kNoMergeSlot ? kNoMergeSlot : findMergeSlot(p, level, facing, 1u, true);
+    if (radii == kNoMergeSlot) return false;
+    atomicMax(cells[sums + 1u], index + 1u);
+    vec3 power = photons[index].power.rgb;
+    float weight = computeMean(power);
+    for (uint i = 0u; i < 3u; ++i) {
+        addFloat(sums + 2u + i, power[i]);
+        addFloat(sums + 5u + i, p[i] * weight);
+    }
+    addFloat(radii + 1u, radius * radius * weight);
+    return true;
 }
 
 // A block of cells: photon count, power, and where its photons lie along the plane's axes
@@ -403,18 +452,54 @@ void setTravelRadius(uint index) {
     if (kClipDiscs) clipDisc(index, photons[index].positionDistance.xyz, photons[index].normalDensity.xyz, radius);
 }
 
+// Merge stage: the photon with its merge cell's highest index becomes the cell's disc: the
+// cell's power at its power-weighted centre, of the power-weighted RMS of their radii (the
+// spread of their discs), its own normal and incoming direction; the others draw nothing. As in
+// the radius stage, a photon without a merge cell keeps its disc.
+void mergePhoton(uint index) {
+    float radius = photons[index].power.w;
+    if (!(radius > 0.0) || isCausticPhoton(photons[index].normalDensity.w)) return;
+    int level = computeMergeLevel(radius);
+    if (level < 0) return;
+    vec3 p = photons[index].positionDistance.xyz;
+    vec3 n = photons[index].normalDensity.xyz;
+    uint facing = getFacing(n, photons[index].normalDensity.w);
+    uint sums = findMergeSlot(p, level, facing, 0u, false);
+    uint radii = sums == kNoMergeSlot ? kNoMergeSlot : findMergeSlot(p, level, facing, 1u, false);
+    if (radii != kNoMergeSlot) {
+        if (cells[sums + 1u] != index + 1u) {
+            photons[index].power = vec4(0.0); // its power is the cell's disc's now
+            return;
+        }
+        vec3 power = uintBitsToFloat(uvec3(cells[sums + 2u], cells[sums + 3u], cells[sums + 4u]));
+        vec3 weighted = uintBitsToFloat(uvec3(cells[sums + 5u], cells[sums + 6u], cells[sums + 7u]));
+        float weight = max(computeMean(power), 1e-30);
+        p = weighted / weight;
+        radius = sqrt(uintBitsToFloat(cells[radii + 1u]) / weight);
+        photons[index].power = vec4(power, radius);
+        photons[index].positionDistance.xyz = p;
+    }
+    if (kClipDiscs) clipDisc(index, p, n, radius);
+}
+
 void main() {
     uvec2 range = computeSliceRange(counters.splatDraw.y, params.slice.x, params.slice.y);
     uint at = range.x + gl_GlobalInvocationID.x;
     if (at >= range.y) return;
     // The radius stage takes the photons in spatial order where photon_order.comp made one.
-    uint index = kStage == kDensityStageRadius && params.slice.z != 0u ? cells[params.slice.z + at] : at;
+    uint index = (kStage == kDensityStageRadius || kStage == kDensityStageMerge) && params.slice.z != 0u
+                     ? cells[params.slice.z + at]
+                     : at;
     if (kStage == kDensityStageTravelPower) {
         addLightPower(index);
         return;
     }
     if (kStage == kDensityStageTravelCull) {
         setTravelRadius(index);
+        return;
+    }
+    if (kStage == kDensityStageMerge) {
+        mergePhoton(index);
         return;
     }
     vec3 p = photons[index].positionDistance.xyz;
@@ -469,6 +554,12 @@ void main() {
     }
     countPhoton(unpackLight(photons[index].incoming.w), 2);
     photons[index].power.w = radius;
-    if (isCausticPhoton(photons[index].normalDensity.w)) appendCausticPhoton(index);
+    if (isCausticPhoton(photons[index].normalDensity.w)) {
+        appendCausticPhoton(index);
+    } else if (kMergeDiscs) {
+        // A merged photon's disc is clipped by the merge stage, if it is its cell's.
+        int level = computeMergeLevel(radius);
+        if (level >= 0 && addToMerge(index, p, radius, level, facing)) return;
+    }
     if (kClipDiscs) clipDisc(index, p, photons[index].normalDensity.xyz, radius);
 }

@@ -199,6 +199,13 @@ ISPM_CONST uint kDensityStageCount = 0u;
 ISPM_CONST uint kDensityStageRadius = 1u;
 ISPM_CONST uint kDensityStageTravelCull = 2u;
 ISPM_CONST uint kDensityStageTravelPower = 3u;
+// splat_merge: photons whose discs would lie almost on top of each other are drawn as one
+// (photon_density.comp): the radius stage sums them per merge cell, this stage makes one of them
+// the cell's disc and collapses the others.
+ISPM_CONST uint kDensityStageMerge = 4u;
+// Merge cells share the density table with the counting cells, keyed at levels past this (their
+// sums), and past twice this (their radii).
+ISPM_CONST uint kDensityMergeLevelOffset = 32u;
 // widen_strong: a travel-mode disc at most this many times wider than its travel radius.
 ISPM_CONST float kMaxWidening = 2.0f;
 
@@ -245,7 +252,7 @@ ISPM_INLINE uint computeOrderCell(vec3 position, OrderParams params) {
 struct DensityParams {
     vec4 grid;     // x = finest cell (m), y = neighbours k, z = radius min (m), w = radius max (m)
     vec4 scales;   // x = radius scale, y = ray offset off a surface (m), z = radius at most this
-                   // times the travel (0: off), w unused
+                   // times the travel (0: off), w = merge cell / radius (splat_merge, 0: off)
     uvec4 control; // x = stage (kDensityStage*, as the program's DENSITY_STAGE), y = table
                    // slots - 1 (a power of two), z = 1: measure a photon against its
                    // neighbours only, w = radius mode

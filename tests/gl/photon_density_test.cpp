@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -58,9 +59,10 @@ struct DensityRun {
 // Runs the density pass alone on `photons`, with the frame of `scene` (camera, BVH); `travelM`
 // set: in radius_mode travel with that radius for every photon.
 DensityRun runDensity(const Scene& scene, std::vector<gpu::ResultPhoton> photons,
-                      ProgressiveStep progressive = {},
-                      std::optional<float> travelM = std::nullopt) {
+                      ProgressiveStep progressive = {}, std::optional<float> travelM = std::nullopt,
+                      float merge = 0.0f) {
     Settings settings;
+    settings.set("splat_merge", merge, "test");
     settings.set("width", 32, "test");
     settings.set("height", 32, "test");
     settings.set("photons", 1000, "test");
@@ -148,6 +150,57 @@ TEST_F(PhotonDensityTest, RadiusHoldsKPhotonsOnAPlaneOfKnownDensity) {
     // off by sqrt(2) (a wrong k or block area).
     EXPECT_NEAR(double(sparse) / expectedSparse, 1.0, 0.2);
     EXPECT_NEAR(double(dense) / expectedDense, 1.0, 0.2);
+}
+
+TEST_F(PhotonDensityTest, MergedDiscsKeepThePowerItsCentreAndTheSpread) {
+    // splat_merge: photons in one merge cell become one disc of their power. Over the square the
+    // discs keep the photons' power and its centre; there are far fewer of them; each merged disc
+    // has a radius within the range of the photons' own (the cell's photons differ by less than
+    // 2x), and every photon not drawn gave its power away.
+    std::vector<gpu::ResultPhoton> photons;
+    addSquare(photons, -0.5f, -0.5f, 1.0f, 60, 3u);
+    const DensityRun whole = runDensity(makeFloorScene(), photons);
+    const DensityRun merged = runDensity(makeFloorScene(), photons, {}, std::nullopt, 1.0f);
+    const auto summarise = [](const DensityRun& run, glm::dvec3& centre, double& power,
+                              size_t& discs, float& lo, float& hi) {
+        centre = glm::dvec3(0.0);
+        power = 0.0;
+        discs = 0;
+        lo = std::numeric_limits<float>::max();
+        hi = 0.0f;
+        for (const gpu::ResultPhoton& p : run.photons) {
+            const double w = p.power.x;
+            power += w;
+            centre += w * glm::dvec3(p.positionDistance);
+            if (p.power.w > 0.0f) {
+                ++discs;
+                lo = std::min(lo, p.power.w);
+                hi = std::max(hi, p.power.w);
+            } else {
+                EXPECT_EQ(p.power.x, 0.0f) << "a photon not drawn keeps no power";
+            }
+        }
+        centre /= power;
+    };
+    glm::dvec3 centreWhole, centreMerged;
+    double powerWhole = 0.0, powerMerged = 0.0;
+    size_t discsWhole = 0, discsMerged = 0;
+    float loWhole = 0.0f, hiWhole = 0.0f, loMerged = 0.0f, hiMerged = 0.0f;
+    summarise(whole, centreWhole, powerWhole, discsWhole, loWhole, hiWhole);
+    summarise(merged, centreMerged, powerMerged, discsMerged, loMerged, hiMerged);
+    std::printf("merge: %zu discs of %zu photons (%zu unmerged), power %.6f of %.6f, radii "
+                "%.4f-%.4f m (unmerged %.4f-%.4f)\n",
+                discsMerged, photons.size(), discsWhole, powerMerged, powerWhole, double(loMerged),
+                double(hiMerged), double(loWhole), double(hiWhole));
+    // Float sums of 3,600 photons: 1e-4 of the power, 1 mm of the centre.
+    EXPECT_NEAR(powerMerged / powerWhole, 1.0, 1e-4);
+    EXPECT_LT(glm::length(centreMerged - centreWhole), 1e-3);
+    // Cells of side r / 2 to r at 32 neighbours a disc hold about 2.5 to 10 photons: fewer
+    // than half the discs is a merge that happened; none lost (each photon is drawn or merged).
+    EXPECT_EQ(discsWhole, photons.size());
+    EXPECT_LT(discsMerged, photons.size() / 2);
+    EXPECT_GE(loMerged, loWhole);
+    EXPECT_LE(hiMerged, hiWhole);
 }
 
 TEST_F(PhotonDensityTest, RadiusStageTakesEveryPhotonOnceInSpatialOrder) {
