@@ -115,29 +115,39 @@ ivec2 getPlaneAxes(uint facing) {
     return ivec2((axis + 1) % 3, (axis + 2) % 3);
 }
 
-void insertCell(vec3 p, uint level, uint facing, float power) {
-    float size = getCellSize(level);
-    ivec3 c = ivec3(floor(p / size));
+// The table slot of cell c (at `level`, facing `facing`): its first uint. Open addressing from
+// the cell's hash, the key the hash | 1 (0: empty); with `insert` an empty slot is claimed for
+// it. kNoSlot where the table does not hold the cell (find) or has no room for it within
+// kDensityProbes slots.
+const uint kNoSlot = 0xffffffffu;
+uint findSlot(ivec3 c, uint level, uint facing, bool insert) {
     uint h = hashCell(c, level, facing);
     uint key = h | 1u;
     uint slot = hashPcg(h) & params.control.y;
     for (uint i = 0u; i < kDensityProbes; ++i) {
         uint at = kDensitySlotUints * slot;
-        uint previous = atomicCompSwap(cells[at], 0u, key);
-        if (previous == 0u || previous == key) {
-            atomicAdd(cells[at + 1u], 1u);
-            addFloat(at + 2u, power);
-            ivec2 axes = getPlaneAxes(facing);
-            vec3 within = clamp(p / size - vec3(c), 0.0, 1.0) * kExtentOne;
-            uvec2 q = uvec2(within[axes.x], within[axes.y]);
-            atomicMax(cells[at + 4u], uint(kExtentOne) - q.x);
-            atomicMax(cells[at + 5u], q.x);
-            atomicMax(cells[at + 6u], uint(kExtentOne) - q.y);
-            atomicMax(cells[at + 7u], q.y);
-            return;
-        }
+        uint previous = insert ? atomicCompSwap(cells[at], 0u, key) : cells[at];
+        if (previous == key || (insert && previous == 0u)) return at;
+        if (previous == 0u) return kNoSlot;
         slot = (slot + 1u) & params.control.y;
     }
+    return kNoSlot;
+}
+
+void insertCell(vec3 p, uint level, uint facing, float power) {
+    float size = getCellSize(level);
+    ivec3 c = ivec3(floor(p / size));
+    uint at = findSlot(c, level, facing, true);
+    if (at == kNoSlot) return;
+    atomicAdd(cells[at + 1u], 1u);
+    addFloat(at + 2u, power);
+    ivec2 axes = getPlaneAxes(facing);
+    vec3 within = clamp(p / size - vec3(c), 0.0, 1.0) * kExtentOne;
+    uvec2 q = uvec2(within[axes.x], within[axes.y]);
+    atomicMax(cells[at + 4u], uint(kExtentOne) - q.x);
+    atomicMax(cells[at + 5u], q.x);
+    atomicMax(cells[at + 6u], uint(kExtentOne) - q.y);
+    atomicMax(cells[at + 7u], q.y);
 }
 
 // splat_merge: a disc of radius r is merged with the others in its merge cell, the cell of the
@@ -152,30 +162,18 @@ int computeMergeLevel(float radius) {
 // (part 0) and its radii (part 1). Part 0 at S: key, the cell's disc (its highest photon index
 // + 1, by atomicMax) at S + 1, the summed power (RGB, float bits) at S + 2 .. S + 4, the
 // positions weighted by power at S + 5 .. S + 7. Part 1: the squared radii weighted by power at
-// S + 1. The slot's first uint, or kNoMergeSlot where the table has no room (find: where the
-// cell is not in it).
-const uint kNoMergeSlot = 0xffffffffu;
+// S + 1. As findSlot, at the merge levels.
 uint findMergeSlot(vec3 p, int level, uint facing, uint part, bool insert) {
-    ivec3 c = ivec3(floor(p / getCellSize(uint(level))));
-    uint h = hashCell(c, uint(level) + (part + 1u) * kDensityMergeLevelOffset, facing);
-    uint key = h | 1u;
-    uint slot = hashPcg(h) & params.control.y;
-    for (uint i = 0u; i < kDensityProbes; ++i) {
-        uint at = kDensitySlotUints * slot;
-        uint previous = insert ? atomicCompSwap(cells[at], 0u, key) : cells[at];
-        if (previous == key || (insert && previous == 0u)) return at;
-        if (previous == 0u) return kNoMergeSlot;
-        slot = (slot + 1u) & params.control.y;
-    }
-    return kNoMergeSlot;
+    return findSlot(ivec3(floor(p / getCellSize(uint(level)))),
+                    uint(level) + (part + 1u) * kDensityMergeLevelOffset, facing, insert);
 }
 
 // Adds the photon to its merge cell; false where the table has no room (it stays a disc of its
 // own).
 bool addToMerge(uint index, vec3 p, float radius, int level, uint facing) {
     uint sums = findMergeSlot(p, level, facing, 0u, true);
-    uint radii = sums == kNoMergeSlot ? kNoMergeSlot : findMergeSlot(p, level, facing, 1u, true);
-    if (radii == kNoMergeSlot) return false;
+    uint radii = sums == kNoSlot ? kNoSlot : findMergeSlot(p, level, facing, 1u, true);
+    if (radii == kNoSlot) return false;
     atomicMax(cells[sums + 1u], index + 1u);
     vec3 power = photons[index].power.rgb;
     float weight = computeMean(power);
@@ -198,28 +196,18 @@ struct Block {
 
 // Adds cell c's photons to `block`.
 void addCell(inout Block block, ivec3 c, uint level, uint facing) {
-    uint h = hashCell(c, level, facing);
-    uint key = h | 1u;
-    uint slot = hashPcg(h) & params.control.y;
-    for (uint i = 0u; i < kDensityProbes; ++i) {
-        uint at = kDensitySlotUints * slot;
-        uint k = cells[at];
-        if (k == 0u) return;
-        if (k == key) {
-            block.count += float(cells[at + 1u]);
-            block.power += uintBitsToFloat(cells[at + 2u]);
-            float size = getCellSize(level);
-            ivec2 axes = getPlaneAxes(facing);
-            vec2 origin = vec2(float(c[axes.x]), float(c[axes.y])) * size;
-            float scale = size / kExtentOne;
-            vec2 lo = origin + (kExtentOne - vec2(cells[at + 4u], cells[at + 6u])) * scale;
-            vec2 hi = origin + vec2(cells[at + 5u], cells[at + 7u]) * scale;
-            block.lo = min(block.lo, lo);
-            block.hi = max(block.hi, hi);
-            return;
-        }
-        slot = (slot + 1u) & params.control.y;
-    }
+    uint at = findSlot(c, level, facing, false);
+    if (at == kNoSlot) return;
+    block.count += float(cells[at + 1u]);
+    block.power += uintBitsToFloat(cells[at + 2u]);
+    float size = getCellSize(level);
+    ivec2 axes = getPlaneAxes(facing);
+    vec2 origin = vec2(float(c[axes.x]), float(c[axes.y])) * size;
+    float scale = size / kExtentOne;
+    vec2 lo = origin + (kExtentOne - vec2(cells[at + 4u], cells[at + 6u])) * scale;
+    vec2 hi = origin + vec2(cells[at + 5u], cells[at + 7u]) * scale;
+    block.lo = min(block.lo, lo);
+    block.hi = max(block.hi, hi);
 }
 
 // The 2x2x2 cells nearest to p (a cube of side 2h around it).
@@ -465,8 +453,8 @@ void mergePhoton(uint index) {
     vec3 n = photons[index].normalDensity.xyz;
     uint facing = getFacing(n, photons[index].normalDensity.w);
     uint sums = findMergeSlot(p, level, facing, 0u, false);
-    uint radii = sums == kNoMergeSlot ? kNoMergeSlot : findMergeSlot(p, level, facing, 1u, false);
-    if (radii != kNoMergeSlot) {
+    uint radii = sums == kNoSlot ? kNoSlot : findMergeSlot(p, level, facing, 1u, false);
+    if (radii != kNoSlot) {
         if (cells[sums + 1u] != index + 1u) {
             photons[index].power = vec4(0.0); // its power is the cell's disc's now
             return;
