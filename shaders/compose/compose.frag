@@ -1,7 +1,10 @@
 // Total radiance = direct + indirect + emission, and the background where no surface is. The
-// direct light's alpha is the share of the pixel a surface covers (1 or 0 in one frame; averaged
-// over accumulated frames, whose sub-pixel offsets move silhouettes), so silhouettes against the
-// background come out anti-aliased too.
+// direct light's alpha is the share of the pixel a surface covers (in one frame 1 or 0, or with
+// edge_samples the share of the pixel's rays that hit one; averaged over accumulated frames,
+// whose sub-pixel offsets move silhouettes), so silhouettes against the background come out
+// anti-aliased too. The direct light is the mean over the pixel already (0 where a ray saw the
+// background); the indirect light is the surface's (at the pixel's centre, or averaged over the
+// frames whose centre hit it: accumulate.frag) and covers that share of the pixel.
 #include "lib/frame_constants.glsl"
 
 #include "lib/viewer_gbuffer.glsl"
@@ -15,7 +18,7 @@ void main() {
     vec4 direct = texelFetch(uDirect, pixel, 0);
     float coverage = clamp(direct.a, 0.0, 1.0);
     vec3 radiance = frame.background.rgb * (1.0 - coverage);
-    if (coverage > 0.0) radiance += direct.rgb + texelFetch(uIndirect, pixel, 0).rgb;
+    if (coverage > 0.0) radiance += direct.rgb + texelFetch(uIndirect, pixel, 0).rgb * coverage;
 #if COMPOSE_EMISSION // a scene with an emitter (ComposePass)
     // This frame's emission where this frame sees a surface (GBufferPass clears it to 0 where
     // none is).

@@ -9,6 +9,9 @@
 //   in the last frame: the point moved back with its instance's motion, projected by the last
 //   frame's camera, the four history pixels around it kept where they show the same surface (the
 //   same plane, a normal alike) and weighed bilinearly; none kept: the history starts anew.
+//   A frame whose pixel centre sees no surface adds nothing to it (the background's 0 is no
+//   light of the surface): the history stays the surface's, and compose.frag weighs it by the
+//   share of frames that saw it (the direct light's alpha).
 #include "lib/frame_constants.glsl"
 #include "lib/scene_buffers.glsl"
 
@@ -96,6 +99,11 @@ void main() {
     }
     float length = min(history.length, params.weights.y);
     vec4 current = texelFetch(uIndirect, pixel, 0);
+    if (texelFetch(uPosition, pixel, 0).w < 0.5) {
+        outIndirect = vec4(history.indirect, current.a);
+        outLength = vec4(length, 0.0, 0.0, 0.0);
+        return;
+    }
     vec3 indirect = length > 0.0 ? mix(history.indirect, current.rgb, 1.0 / (length + 1.0))
                                  : current.rgb;
     outIndirect = vec4(indirect, current.a);

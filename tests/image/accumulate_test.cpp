@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 namespace ispm::test {
 namespace {
@@ -52,24 +53,39 @@ TEST_F(AccumulateTest, StillFramesAverageTheirSeedsAndOffsets) {
     constexpr int kFrames = 4;
     const Scene scene = loadCornell();
     FrameRunner accumulating(scene, makeSettings(scene, kFrames, 7), gl::TimingMethod::CpuFinish);
-    // Each frame's own light, before accumulation, averaged here.
+    // Each frame's own light, before accumulation, averaged here: the direct light over every
+    // frame (0 where its centre saw the background), the indirect light, the surface's, over the
+    // frames whose centre saw a surface (the direct light's alpha: its coverage).
     Image mean(kSize, kSize);
     Image meanDirect(kSize, kSize);
+    std::vector<float> surfaceFrames(mean.pixels.size(), 0.0f);
     Image first;
     Image firstDirect;
     for (int f = 0; f < kFrames; ++f) {
         accumulating.renderFrame();
         const Image frame = readTextureImage(accumulating.getFrameLight(Aov::Indirect));
         const Image direct = readTextureImage(accumulating.getFrameLight(Aov::Direct));
+        const std::vector<glm::vec4> coverage =
+            readTextureTopDown(accumulating.getFrameLight(Aov::Direct));
         if (f == 0) {
             first = frame;
             firstDirect = direct;
         }
         for (size_t i = 0; i < mean.pixels.size(); ++i) {
-            mean.pixels[i] += frame.pixels[i] / float(kFrames);
+            if (coverage[i].w > 0.5f) {
+                mean.pixels[i] += frame.pixels[i];
+                surfaceFrames[i] += 1.0f;
+            }
             meanDirect.pixels[i] += direct.pixels[i] / float(kFrames);
         }
     }
+    int partlySeen = 0; // pixels whose centre saw a surface in some frames only
+    for (size_t i = 0; i < mean.pixels.size(); ++i) {
+        if (surfaceFrames[i] > 0.0f) mean.pixels[i] /= surfaceFrames[i];
+        if (surfaceFrames[i] > 0.0f && surfaceFrames[i] < float(kFrames)) ++partlySeen;
+    }
+    // The box's outline at 48 px crosses about 100 pixels, some of which the offsets move across.
+    EXPECT_GT(partlySeen, 5);
     const Image accumulated = readTextureImage(accumulating.getAov(Aov::Indirect));
     const Image accumulatedDirect = readTextureImage(accumulating.getAov(Aov::Direct));
     EXPECT_EQ(accumulating.getAccumulatedFrames(), uint32_t(kFrames));
@@ -242,21 +258,31 @@ TEST_F(AccumulateTest, LightSwitchLeavesNoStaleLight) {
     for (const glm::vec3& p : direct.pixels)
         largest = std::max(largest, double(std::max({p.x, p.y, p.z})));
     EXPECT_EQ(largest, 0.0) << "direct light of the frames before the switch";
-    // A moved light: the history starts anew as well (every pixel's length 1).
+    // A moved light: the history starts anew as well (every pixel's length 1 where this frame
+    // sees a surface, 0 where it sees the background).
     renderIndirect(runner, 3);
     scene.lights[0].intensity = glm::vec3(1.0f);
     scene.lights[0].position.x += 0.05f;
     runner.updateScene();
     renderIndirect(runner, 1);
-    for (const glm::vec4& t : readTextureTopDown(runner.getHistoryLength()))
-        ASSERT_EQ(t.x, 1.0f);
+    const std::vector<glm::vec4> lengths = readTextureTopDown(runner.getHistoryLength());
+    const std::vector<glm::vec4> coverage = readTextureTopDown(runner.getFrameLight(Aov::Direct));
+    int surfaces = 0;
+    for (size_t i = 0; i < lengths.size(); ++i) {
+        const bool surface = coverage[i].w > 0.5f;
+        surfaces += surface ? 1 : 0;
+        ASSERT_EQ(lengths[i].x, surface ? 1.0f : 0.0f);
+    }
+    EXPECT_GT(surfaces, int(lengths.size()) / 2); // the box fills most of the view
 }
 
 TEST_F(AccumulateTest, SilhouettesAgainstTheBackgroundAreAntiAliased) {
     // The Cornell box's open side and outer edges against a coloured background: over frames
     // with sub-pixel offsets a silhouette pixel is partly surface, partly background, and the
     // total mixes the two by the surface's coverage (the direct light's alpha), instead of
-    // taking the last frame's G-buffer's word for it.
+    // taking the last frame's G-buffer's word for it. The direct light is the pixel's mean (0
+    // from the frames that saw the background), the indirect light the surface's own (the
+    // frames that saw the background add nothing to it), weighed by the coverage.
     Scene scene = loadCornell();
     scene.background = glm::vec3(0.2f, 0.3f, 0.4f);
     FrameRunner runner(scene, makeSettings(scene, 8, 1), gl::TimingMethod::CpuFinish);
@@ -270,7 +296,7 @@ TEST_F(AccumulateTest, SilhouettesAgainstTheBackgroundAreAntiAliased) {
     for (size_t i = 0; i < total.pixels.size(); ++i) {
         const float c = direct[i].w; // coverage
         if (c > 0.01f && c < 0.99f) ++partial;
-        const glm::vec3 surface = glm::vec3(direct[i]) + indirect.pixels[i];
+        const glm::vec3 surface = glm::vec3(direct[i]) + c * indirect.pixels[i];
         const glm::vec3 expected =
             scene.background * (1.0f - c) + (c > 0.0f ? surface : glm::vec3(0.0f));
         largest = std::max(largest, double(glm::length(total.pixels[i] - expected)));
@@ -278,6 +304,45 @@ TEST_F(AccumulateTest, SilhouettesAgainstTheBackgroundAreAntiAliased) {
     std::printf("%d pixels partly covered, largest difference %.2e\n", partial, largest);
     // 48 x 48 px: the box's outline crosses about 100 pixels; one frame has none partly covered.
     EXPECT_GT(partial, 20);
+    EXPECT_LT(largest, 1e-5); // float rounding of the sums (the Cornell box emits nothing)
+}
+
+TEST_F(AccumulateTest, OneFrameWeighsTheSurfacesIndirectLightByItsCoverage) {
+    // One frame with edge_samples: a silhouette pixel's direct light is the mean over its rays
+    // (0 from those that saw the background) and its alpha their share that hit a surface; the
+    // indirect light, the surface's at the pixel's centre, covers that share alone. Adding it
+    // whole brightens every silhouette against the background by (1 - coverage) of it.
+    Scene scene = loadCornell();
+    scene.background = glm::vec3(0.2f, 0.3f, 0.4f);
+    Settings settings = makeSettings(scene, 0, 1);
+    settings.set("edge_samples", 16, "test");
+    FrameRunner runner(scene, settings, gl::TimingMethod::CpuFinish);
+    runner.renderFrame();
+    const Image total = readTextureImage(runner.getAov(Aov::Total));
+    const std::vector<glm::vec4> direct = readTextureTopDown(runner.getAov(Aov::Direct));
+    const Image indirect = readTextureImage(runner.getAov(Aov::Indirect));
+    int partial = 0;
+    double partialIndirect = 0.0;
+    double largest = 0.0;
+    for (size_t i = 0; i < total.pixels.size(); ++i) {
+        const float c = direct[i].w;
+        if (c > 0.01f && c < 0.99f) {
+            ++partial;
+            partialIndirect +=
+                double((1.0f - c) *
+                       (indirect.pixels[i].x + indirect.pixels[i].y + indirect.pixels[i].z) / 3.0f);
+        }
+        const glm::vec3 expected =
+            scene.background * (1.0f - c) +
+            (c > 0.0f ? glm::vec3(direct[i]) + c * indirect.pixels[i] : glm::vec3(0.0f));
+        largest = std::max(largest, double(glm::length(total.pixels[i] - expected)));
+    }
+    std::printf("%d pixels partly covered, indirect light they leave out %.3f, largest "
+                "difference %.2e\n",
+                partial, partialIndirect, largest);
+    // 48 x 48 px: the box's outline crosses about 100 pixels, and its front edges hold light.
+    EXPECT_GT(partial, 20);
+    EXPECT_GT(partialIndirect, 1e-3);
     EXPECT_LT(largest, 1e-5); // float rounding of the sums (the Cornell box emits nothing)
 }
 
