@@ -73,8 +73,9 @@ void PhotonEmitPass::execute(const FrameInputs& inputs) {
     for (size_t i = 0; i < mGrids.size(); ++i) {
         const EmissionGrid& g = mGrids[i];
         params[i].grid = glm::uvec4(g.viewIndex, g.firstPhoton, g.width, g.height);
-        params[i].random = glm::uvec4(inputs.seed, inputs.settings.rngGenerator,
-                                      uint32_t(scene.getLightResolution()), 0u);
+        params[i].random =
+            glm::uvec4(inputs.seed, inputs.settings.rngGenerator,
+                       uint32_t(scene.getLightResolution()), inputs.settings.firstBounce);
     }
     mParams.upload(params);
     mFeedback.attachBuffer(0, mBuffers.getBounce(), 0, mBuffers.getBounce().getSize());

@@ -19,6 +19,8 @@ namespace {
 static_assert(kToneMapChoices[gpu::kTonemapThesis] == "thesis");
 static_assert(kToneMapChoices[gpu::kTonemapFilmic] == "filmic");
 static_assert(kToneMapChoices[gpu::kTonemapLinear] == "linear");
+static_assert(kFirstBounceChoices[gpu::kFirstBounceRoulette] == "roulette" &&
+              kFirstBounceChoices[gpu::kFirstBounceWeighted] == "weighted");
 static_assert(kRngGeneratorChoices[gpu::kRngPcg] == "pcg" &&
               kRngGeneratorChoices[gpu::kRngLcg] == "lcg" &&
               kRngGeneratorChoices[gpu::kRngSobol] == "sobol");
@@ -162,6 +164,7 @@ FrameSettings resolveFrameSettings(const Settings& settings) {
     f.importanceFrames = settings.getInt("importance_frames");
     f.importance = f.importanceSamples > 0 ? settings.getFloat("importance") : 0.0f;
     f.rngGenerator = getChoice(settings, "rng_generator");
+    f.firstBounce = getChoice(settings, "first_bounce");
     f.rngMode = getChoice(settings, "rng");
     f.radiusMode = getChoice(settings, "radius_mode");
     f.splatNeighbours = computeSplatNeighbours(settings);

@@ -31,6 +31,7 @@ inline constexpr std::array<std::string_view, 4> kSplatResolutionChoices = {"aut
                                                                             "1/4"};
 inline constexpr std::array<std::string_view, 3> kSplatClipChoices = {"auto", "on", "off"};
 inline constexpr std::array<std::string_view, 2> kWidenStrongChoices = {"off", "on"};
+inline constexpr std::array<std::string_view, 2> kFirstBounceChoices = {"roulette", "weighted"};
 
 struct FrameSettings {
     int width = 0;  // px
@@ -51,6 +52,7 @@ struct FrameSettings {
     int photons = 0;
     float frameMsTarget = 0.0f; // 0: the budget as set
     int bounces = 0;
+    uint32_t firstBounce = 0; // gpu::kFirstBounceRoulette, kFirstBounceWeighted
     // Levels of mirror and refraction rays traced from viewer pixels (SpecularPass); 0: off.
     int specularDepth = 0;
     bool bouncesSet = false;      // the reference path tracer has its own default

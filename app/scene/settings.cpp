@@ -133,6 +133,13 @@ const std::vector<SettingDesc>& table() {
          "",
          "indirect light that reflected 1..bounces times is kept (0: direct light only)",
          {}},
+        {"first_bounce", SettingType::Enum, 0, 0, 1, "",
+         "the first bounce's Russian roulette (the light views' photons): roulette (the "
+         "thesis's: on the surface's albedo, absorbed photons end) or weighted (among the lobes "
+         "alone, by their share of the albedo, the power times it: every photon that meets a "
+         "reflecting surface bounces, so the same budget sends 1 / albedo times as many on, each "
+         "at the trace's cost)",
+         toChoices(kFirstBounceChoices)},
         {"specular_depth",
          SettingType::Int,
          3,

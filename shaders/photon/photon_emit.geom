@@ -1,8 +1,9 @@
 // Photon emission, geometry stage: warps the grid point through the light view's importance map
 // (lib/importance.glsl), reads the light camera's G-buffer there, gives the photon the power of
 // the part of the view it stands for (intensity x falloff x solid angle, or irradiance x area for
-// the sun, divided by the map's pdf), makes the first bounce by Russian roulette and writes the
-// surviving photon to the bounce buffer through transform feedback. Nothing is rasterised.
+// the sun, divided by the map's pdf), makes the first bounce by Russian roulette (on the albedo,
+// or with first_bounce weighted among the lobes alone) and writes the surviving photon to the
+// bounce buffer through transform feedback. Nothing is rasterised.
 #include "lib/scene_buffers.glsl"
 #include "lib/frame_constants.glsl"
 #include "lib/light_gbuffer.glsl"
@@ -86,8 +87,13 @@ void main() {
         numbers.y = nextRandom(rng, params.random.y);
         numbers.z = nextRandom(rng, params.random.y);
     }
+    // first_bounce weighted: the lobes' probabilities scaled to sum to 1 (scatterSurfaceWith's
+    // selectScale), so the photon bounces wherever the surface reflects.
+    float albedo = computeMean(diffuse) + computeMean(specular.rgb) + computeMean(transmissive.rgb);
+    if (!(albedo > 0.0)) return;
+    float selectScale = params.random.w == kFirstBounceWeighted ? 1.0 / albedo : 1.0;
     uint event = scatterSurfaceWith(dir, power, normal.xyz, diffuse, specular, transmissive,
-                                    normal.w > 0.0, numbers, 1.0);
+                                    normal.w > 0.0, numbers, selectScale);
     if (event == kScatterAbsorbed) return;
 
     outPositionDistance = vec4(position.xyz, travelled);
