@@ -276,74 +276,76 @@ TEST_F(AccumulateTest, LightSwitchLeavesNoStaleLight) {
     EXPECT_GT(surfaces, int(lengths.size()) / 2); // the box fills most of the view
 }
 
-TEST_F(AccumulateTest, SilhouettesAgainstTheBackgroundAreAntiAliased) {
-    // The Cornell box's open side and outer edges against a coloured background: over frames
-    // with sub-pixel offsets a silhouette pixel is partly surface, partly background, and the
-    // total mixes the two by the surface's coverage (the direct light's alpha), instead of
-    // taking the last frame's G-buffer's word for it. The direct light is the pixel's mean (0
-    // from the frames that saw the background), the indirect light the surface's own (the
-    // frames that saw the background add nothing to it), weighed by the coverage.
+// The Cornell box against a coloured background, where compose.frag mixes a silhouette pixel's
+// surface and the background by the surface's coverage (the direct light's alpha): the direct
+// light is the pixel's mean already (0 where it saw the background), the indirect light the
+// surface's own, weighed by the coverage.
+Scene loadCornellOnBackground() {
     Scene scene = loadCornell();
     scene.background = glm::vec3(0.2f, 0.3f, 0.4f);
-    FrameRunner runner(scene, makeSettings(scene, 8, 1), gl::TimingMethod::CpuFinish);
-    for (int f = 0; f < 8; ++f)
-        runner.renderFrame();
-    const Image total = readTextureImage(runner.getAov(Aov::Total));
-    const std::vector<glm::vec4> direct = readTextureTopDown(runner.getAov(Aov::Direct));
-    const Image indirect = readTextureImage(runner.getAov(Aov::Indirect));
-    int partial = 0;
-    double largest = 0.0;
-    for (size_t i = 0; i < total.pixels.size(); ++i) {
-        const float c = direct[i].w; // coverage
-        if (c > 0.01f && c < 0.99f) ++partial;
-        const glm::vec3 surface = glm::vec3(direct[i]) + c * indirect.pixels[i];
-        const glm::vec3 expected =
-            scene.background * (1.0f - c) + (c > 0.0f ? surface : glm::vec3(0.0f));
-        largest = std::max(largest, double(glm::length(total.pixels[i] - expected)));
-    }
-    std::printf("%d pixels partly covered, largest difference %.2e\n", partial, largest);
-    // 48 x 48 px: the box's outline crosses about 100 pixels; one frame has none partly covered.
-    EXPECT_GT(partial, 20);
-    EXPECT_LT(largest, 1e-5); // float rounding of the sums (the Cornell box emits nothing)
+    return scene;
 }
 
-TEST_F(AccumulateTest, OneFrameWeighsTheSurfacesIndirectLightByItsCoverage) {
-    // One frame with edge_samples: a silhouette pixel's direct light is the mean over its rays
-    // (0 from those that saw the background) and its alpha their share that hit a surface; the
-    // indirect light, the surface's at the pixel's centre, covers that share alone. Adding it
-    // whole brightens every silhouette against the background by (1 - coverage) of it.
-    Scene scene = loadCornell();
-    scene.background = glm::vec3(0.2f, 0.3f, 0.4f);
-    Settings settings = makeSettings(scene, 0, 1);
-    settings.set("edge_samples", 16, "test");
-    FrameRunner runner(scene, settings, gl::TimingMethod::CpuFinish);
-    runner.renderFrame();
+struct CoverageCheck {
+    int partial = 0;                // pixels partly covered
+    double leftOutIndirect = 0.0;   // (1 - coverage) x their indirect light (mean over RGB), summed
+    double largestDifference = 0.0; // of the total from the mix above
+};
+
+CoverageCheck checkCoverageMix(const FrameRunner& runner, const Scene& scene) {
     const Image total = readTextureImage(runner.getAov(Aov::Total));
     const std::vector<glm::vec4> direct = readTextureTopDown(runner.getAov(Aov::Direct));
     const Image indirect = readTextureImage(runner.getAov(Aov::Indirect));
-    int partial = 0;
-    double partialIndirect = 0.0;
-    double largest = 0.0;
+    CoverageCheck check;
     for (size_t i = 0; i < total.pixels.size(); ++i) {
         const float c = direct[i].w;
         if (c > 0.01f && c < 0.99f) {
-            ++partial;
-            partialIndirect +=
-                double((1.0f - c) *
-                       (indirect.pixels[i].x + indirect.pixels[i].y + indirect.pixels[i].z) / 3.0f);
+            ++check.partial;
+            const glm::vec3 left = (1.0f - c) * indirect.pixels[i];
+            check.leftOutIndirect += double(left.x + left.y + left.z) / 3.0;
         }
         const glm::vec3 expected =
             scene.background * (1.0f - c) +
             (c > 0.0f ? glm::vec3(direct[i]) + c * indirect.pixels[i] : glm::vec3(0.0f));
-        largest = std::max(largest, double(glm::length(total.pixels[i] - expected)));
+        check.largestDifference =
+            std::max(check.largestDifference, double(glm::length(total.pixels[i] - expected)));
     }
     std::printf("%d pixels partly covered, indirect light they leave out %.3f, largest "
                 "difference %.2e\n",
-                partial, partialIndirect, largest);
+                check.partial, check.leftOutIndirect, check.largestDifference);
+    return check;
+}
+
+TEST_F(AccumulateTest, SilhouettesAgainstTheBackgroundAreAntiAliased) {
+    // Over frames with sub-pixel offsets a silhouette pixel is partly surface, partly
+    // background, and the total mixes the two by the surface's coverage instead of taking the
+    // last frame's G-buffer's word for it (the frames that saw the background add nothing to
+    // the surface's indirect light).
+    const Scene scene = loadCornellOnBackground();
+    FrameRunner runner(scene, makeSettings(scene, 8, 1), gl::TimingMethod::CpuFinish);
+    for (int f = 0; f < 8; ++f)
+        runner.renderFrame();
+    const CoverageCheck check = checkCoverageMix(runner, scene);
+    // 48 x 48 px: the box's outline crosses about 100 pixels; one frame has none partly covered.
+    EXPECT_GT(check.partial, 20);
+    EXPECT_LT(check.largestDifference, 1e-5); // float rounding (the Cornell box emits nothing)
+}
+
+TEST_F(AccumulateTest, OneFrameWeighsTheSurfacesIndirectLightByItsCoverage) {
+    // One frame with edge_samples: a silhouette pixel's direct light is the mean over its rays
+    // and its alpha their share that hit a surface; the indirect light, the surface's at the
+    // pixel's centre, covers that share alone. Adding it whole brightens every silhouette
+    // against the background by (1 - coverage) of it.
+    const Scene scene = loadCornellOnBackground();
+    Settings settings = makeSettings(scene, 0, 1);
+    settings.set("edge_samples", 16, "test");
+    FrameRunner runner(scene, settings, gl::TimingMethod::CpuFinish);
+    runner.renderFrame();
+    const CoverageCheck check = checkCoverageMix(runner, scene);
     // 48 x 48 px: the box's outline crosses about 100 pixels, and its front edges hold light.
-    EXPECT_GT(partial, 20);
-    EXPECT_GT(partialIndirect, 1e-3);
-    EXPECT_LT(largest, 1e-5); // float rounding of the sums (the Cornell box emits nothing)
+    EXPECT_GT(check.partial, 20);
+    EXPECT_GT(check.leftOutIndirect, 1e-3);
+    EXPECT_LT(check.largestDifference, 1e-5); // float rounding (the Cornell box emits nothing)
 }
 
 TEST_F(AccumulateTest, LightCamerasMoveInsideATexelSoShadowEdgesConverge) {
