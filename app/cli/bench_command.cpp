@@ -254,6 +254,10 @@ void checkOptions(const BenchOptions& options) {
     if (options.flickerFrames && isSweepRequested(options)) {
         throw InputError("--flicker: expected without --sweep/--reference/--csv");
     }
+    if (options.rounds != 1 && !isSweepRequested(options)) {
+        throw InputError("--rounds: expected only with --sweep (a sweep's passes over its "
+                         "configurations)");
+    }
     if (options.animate && isSweepRequested(options)) {
         throw InputError("--animate: expected without --sweep/--reference/--csv (a sweep compares "
                          "still frames with a reference)");
@@ -324,7 +328,10 @@ void addBenchCommand(CLI::App& app, BenchOptions& options) {
         "cartesian product (values checked by the settings table; the render size must be the "
         "reference's) and runs the path tracer with the same bounces to --reference-spp-max "
         "samples, a share of its samples after each configuration, so that both are timed over "
-        "the same stretch of the run. Timed frame i of a configuration draws with seed + i (its "
+        "the same stretch of the run; with --rounds N it passes over the configurations N times "
+        "(the tracer's samples spread over all of them) and takes each one's medians over its "
+        "frames of every round, so that the machine's slow spells weigh on all alike. Timed frame "
+        "i of a configuration draws with seed + i (its "
         "importance maps built anew, as in a moving view) and its errors are the mean over the "
         "timed frames: the expected error of one frame. The path tracer draws with seed + 2^30, "
         "not the samples of a reference rendered with the same seed. The CSV has one row per "
@@ -343,6 +350,9 @@ void addBenchCommand(CLI::App& app, BenchOptions& options) {
     cmd->add_option("--csv", options.csvPath, "sweep: output CSV");
     cmd->add_option("--reference-spp-max", options.referenceSppMax,
                     "sweep: last sample count of the path tracer's curve (default 64)");
+    cmd->add_option("--rounds", options.rounds,
+                    "sweep: passes over every configuration, each timing its --frames again (the "
+                    "medians over all rounds; the errors from the first; default 1)");
 }
 
 int runBench(const BenchOptions& options) {

@@ -39,6 +39,10 @@ struct BenchOptions {
     std::string csvPath;
     // The path tracer's curve ends here; 64 spp at 256^2 takes seconds on llvmpipe.
     int referenceSppMax = 64;
+    // Passes over every configuration: each configuration's frames are timed once per round
+    // (their medians over all rounds), so that a slow spell of a shared machine lands on every
+    // configuration's frames alike instead of on the few measured during it.
+    int rounds = 1;
 };
 
 void addBenchCommand(CLI::App& app, BenchOptions& options);

@@ -220,10 +220,13 @@ class SweepProgress {
     std::chrono::steady_clock::time_point mStart;
 };
 
-IspmResult measureConfiguration(FrameRunner& runner, const Configuration& config, int warmup,
-                                int frames, const Image& reference,
-                                const std::optional<Image>& referenceIndirect,
-                                SweepProgress& progress, const std::string& step) {
+// One round of a configuration: its warm-up frames, then its timed frames, whose pass times go
+// to `times` (all rounds' frames, for the medians). With `result` the errors of the timed frames
+// and the photon counts go there (the first round: later ones draw the same frames again).
+void measureConfiguration(FrameRunner& runner, const Configuration& config, int warmup, int frames,
+                          const Image& reference, const std::optional<Image>& referenceIndirect,
+                          SweepProgress& progress, const std::string& step, FrameTimes& times,
+                          IspmResult* result) {
     // Timed frame i draws with seed + i, the warm-up frames with seeds after those. The errors are
     // the mean over the timed frames, the expected error of one frame rather than one draw of it
     // (at 10,000 photons one frame's indirect relMSE in the courtyard ranged 0.0066-0.0147 over
@@ -233,13 +236,16 @@ IspmResult measureConfiguration(FrameRunner& runner, const Configuration& config
         runner.renderFrame();
         progress.advance(step);
     }
-    FrameTimes times;
-    IspmResult r;
     for (int i = 0; i < frames; ++i) {
         runner.setSettings(offsetSeed(config.settings, i));
         runner.renderFrame();
         runner.waitForTimings(); // this frame's, not an earlier one's
         addFrameTimes(runner, times);
+        if (!result) {
+            progress.advance(step);
+            continue;
+        }
+        IspmResult& r = *result;
         // Read back after the timing: not part of the frame.
         const Image total = readTextureImage(runner.getAov(Aov::Total));
         const Image indirect = readTextureImage(runner.getAov(Aov::Indirect));
@@ -256,11 +262,7 @@ IspmResult measureConfiguration(FrameRunner& runner, const Configuration& config
         r.ssim += computeSsim(total, reference) / frames;
         progress.advance(step);
     }
-    for (const auto& [name, samples] : times.samplesMs)
-        r.passMs[name] = computeMedian(samples);
-    r.totalMs = computeMedian(times.totalsMs);
-    r.photons = runner.readPhotonCounts();
-    return r;
+    if (result) result->photons = runner.readPhotonCounts();
 }
 
 // The path tracer with the sweep's light (bounces) and size: rows at 1, 2, 4, ... spp and at the
@@ -343,6 +345,9 @@ SweepPlan planSweep(const BenchOptions& options, const Settings& settings) {
     }
     if (options.referencePath.empty()) throw InputError("--sweep: expected --reference REF.pfm");
     if (options.csvPath.empty()) throw InputError("--sweep: expected --csv OUT.csv");
+    if (options.rounds < 1) {
+        throw InputError(strCat("--rounds: expected an integer >= 1, got ", options.rounds));
+    }
     if (options.referenceSppMax < kMinReferenceSpp) {
         throw InputError(strCat("--reference-spp-max: expected an integer >= ", kMinReferenceSpp,
                                 ", got ", options.referenceSppMax));
@@ -526,11 +531,12 @@ int runBenchSweep(const BenchOptions& options, const std::string& scenePath, con
     const gl::TimingMethod timing =
         info.isSoftware ? gl::TimingMethod::CpuFinish : gl::TimingMethod::TimerQuery;
     const int configCount = static_cast<int>(plan.configs.size());
-    std::printf("bench sweep %s: %dx%d, %d configurations x (%d warm-up + %d timed frames); path "
-                "tracer to %d spp, bounces=%d\n",
+    std::printf("bench sweep %s: %dx%d, %d configurations x (%d warm-up + %d timed frames)%s; "
+                "path tracer to %d spp, bounces=%d\n",
                 scenePath.c_str(), plan.reference.width, plan.reference.height, configCount,
-                options.warmup, options.frames, options.referenceSppMax,
-                resolveFrameSettings(plan.tracerSettings).bounces);
+                options.warmup, options.frames,
+                options.rounds > 1 ? strCat(" x ", options.rounds, " rounds").c_str() : "",
+                options.referenceSppMax, resolveFrameSettings(plan.tracerSettings).bounces);
     std::printf("renderer: %s (%s); pass times by %s\n", info.renderer.c_str(),
                 gl::getContextPathName(info.path), gl::getTimingMethodName(timing));
     std::printf(
@@ -540,28 +546,42 @@ int runBenchSweep(const BenchOptions& options, const std::string& scenePath, con
             : strCat(options.referencePath, " - ispm's direct AOV of each configuration").c_str());
     std::fflush(stdout); // before the progress bar starts drawing on stderr
 
-    SweepProgress progress(configCount * (options.warmup + options.frames) + options.warmup +
-                           options.referenceSppMax);
+    SweepProgress progress(options.rounds * configCount * (options.warmup + options.frames) +
+                           options.warmup + options.referenceSppMax);
     std::optional<Image> referenceIndirect;
     if (plan.referenceDirect)
         referenceIndirect = subtractImages(plan.reference, *plan.referenceDirect);
     FrameRunner runner(scene, plan.configs.front().settings, timing);
     ReferenceCurve tracer(scene, plan.tracerSettings, options.warmup, options.referenceSppMax,
                           plan.reference, plan.referenceDirect, progress);
-    std::vector<IspmResult> results;
+    std::vector<IspmResult> results(static_cast<size_t>(configCount));
+    std::vector<FrameTimes> times(static_cast<size_t>(configCount));
     std::vector<std::string> passOrder; // union over the configurations, first appearance first
-    for (int i = 0; i < configCount; ++i) {
-        const Configuration& config = plan.configs[size_t(i)];
-        const std::string step = strCat("ispm ", i + 1, "/", configCount, " ", config.label);
-        results.push_back(measureConfiguration(runner, config, options.warmup, options.frames,
-                                               plan.reference, referenceIndirect, progress, step));
-        for (const PassTiming& t : runner.getLastTimings()) {
-            if (std::find(passOrder.begin(), passOrder.end(), t.name) == passOrder.end()) {
-                passOrder.push_back(t.name);
+    const int64_t steps = int64_t(options.rounds) * configCount;
+    for (int round = 0; round < options.rounds; ++round) {
+        for (int i = 0; i < configCount; ++i) {
+            const Configuration& config = plan.configs[size_t(i)];
+            const std::string step = strCat(
+                "ispm ", i + 1, "/", configCount,
+                options.rounds > 1 ? strCat(" (round ", round + 1, ")") : "", " ", config.label);
+            measureConfiguration(runner, config, options.warmup, options.frames, plan.reference,
+                                 referenceIndirect, progress, step, times[size_t(i)],
+                                 round == 0 ? &results[size_t(i)] : nullptr);
+            for (const PassTiming& t : runner.getLastTimings()) {
+                if (std::find(passOrder.begin(), passOrder.end(), t.name) == passOrder.end()) {
+                    passOrder.push_back(t.name);
+                }
             }
+            // The tracer's share of samples after each configuration: spread evenly over the
+            // run.
+            const int64_t done = int64_t(round) * configCount + i + 1;
+            tracer.addSamplesUpTo(int(done * options.referenceSppMax / steps));
         }
-        // The tracer's share of samples after each configuration: spread evenly over the run.
-        tracer.addSamplesUpTo(int((int64_t(i) + 1) * options.referenceSppMax / configCount));
+    }
+    for (int i = 0; i < configCount; ++i) {
+        for (const auto& [name, samples] : times[size_t(i)].samplesMs)
+            results[size_t(i)].passMs[name] = computeMedian(samples);
+        results[size_t(i)].totalMs = computeMedian(times[size_t(i)].totalsMs);
     }
     tracer.addSamplesUpTo(options.referenceSppMax);
     const std::vector<ReferenceRow>& curve = tracer.getRows();

@@ -298,6 +298,43 @@ TEST_F(BenchSweepTest, ConvergeScriptWritesRowsAndChart) {
     EXPECT_NE(badCsv.output.find("expected columns"), std::string::npos) << badCsv.output;
 }
 
+TEST_F(BenchSweepTest, RoundsTimeTheSameFramesAgain) {
+    // --rounds 3 passes over the configurations three times: it says so, and measures the same
+    // frames (the same seeds: the same errors, to float round-off of the photons' order) and the
+    // same tracer curve as one round.
+    const std::string reference = (mDir / "reference.pfm").string();
+    ASSERT_EQ(renderReference(reference, "").exitCode, 0);
+    auto sweep = [&](int rounds) {
+        const std::string csvPath = (mDir / ("rounds" + std::to_string(rounds) + ".csv")).string();
+        const RunResult r =
+            runIspm("bench " + mScene + kSize + kSmallLights + " --reference " + reference +
+                        " --sweep photons=2000,4000 --frames 1 --warmup 0 "
+                        "--reference-spp-max 4 --rounds " +
+                        std::to_string(rounds) + " --csv " + csvPath,
+                    false);
+        EXPECT_EQ(r.exitCode, 0) << r.output;
+        EXPECT_EQ(r.output.find(" x 3 rounds") != std::string::npos, rounds == 3) << r.output;
+        std::vector<std::string> header;
+        std::map<std::string, double> errors; // kind + photons or spp -> relmse_total
+        for (const CsvRow& row : readCsv(csvPath, header)) {
+            const bool ispm = row.at("kind") == "ispm";
+            errors[row.at("kind") + (ispm ? row.at("photons") : row.at("spp"))] =
+                toNumber(row, "relmse_total");
+        }
+        return errors;
+    };
+    const std::map<std::string, double> one = sweep(1);
+    const std::map<std::string, double> three = sweep(3);
+    ASSERT_EQ(one.size(), 5u); // 2 configurations, the tracer at 1, 2 and 4 spp
+    ASSERT_EQ(three.size(), one.size());
+    for (const auto& [row, error] : one) {
+        ASSERT_TRUE(three.contains(row)) << row;
+        EXPECT_TRUE(isPositive(error)) << row;
+        // Float sums of photons appended in another order: 1e-4 of the error at most.
+        EXPECT_NEAR(three.at(row), error, 1e-4 * error) << row;
+    }
+}
+
 TEST_F(BenchSweepTest, BadInputsExitTwoWithOneLine) {
     // Written directly: these runs must stop at the checks, so the image content does not matter.
     const std::string reference = (mDir / "reference.pfm").string();
@@ -319,6 +356,10 @@ TEST_F(BenchSweepTest, BadInputsExitTwoWithOneLine) {
     expectBadInput(mScene + kSize + " --reference " + reference + " --sweep photons=1000" + csv +
                        " --reference-spp-max 0",
                    "--reference-spp-max");
+    expectBadInput(mScene + kSize + " --reference " + reference + " --sweep photons=1000" + csv +
+                       " --rounds 0",
+                   "--rounds");
+    expectBadInput(mScene + kSize + " --rounds 2", "--rounds");
     EXPECT_FALSE(std::filesystem::exists(mDir / "out.csv")) << "bad input must not write a CSV";
 }
 
