@@ -9,6 +9,7 @@
 namespace ispm {
 
 void PhotonBuffers::reserve(uint32_t bounceCapacity, uint32_t resultCapacity) {
+    mFrameResults = resultCapacity;
     if (bounceCapacity > mBounceCapacity || !mBounce.getId()) {
         mBounceCapacity = bounceCapacity;
         mBounce = gl::Buffer("bounce photons", size_t(bounceCapacity) * sizeof(gpu::BouncePhoton));

@@ -31,7 +31,8 @@ struct PhotonCounts {
 
 class PhotonBuffers {
   public:
-    // Grows (never shrinks) to hold `bounceCapacity` bounce photons and `resultCapacity` results.
+    // Grows (never shrinks) to hold `bounceCapacity` bounce photons and `resultCapacity` results,
+    // the most this frame can store (getFrameResults).
     void reserve(uint32_t bounceCapacity, uint32_t resultCapacity);
     // The frame's emission grids ({first photon, view} in photon order, for the GPU to find a
     // photon's light) and `lightCount` per-light counters set to zero.
@@ -49,6 +50,9 @@ class PhotonBuffers {
     const gl::Buffer& getSplatDraws() const { return mSplatDraws; }
     uint32_t getBounceCapacity() const { return mBounceCapacity; }
     uint32_t getResultCapacity() const { return mResultCapacity; }
+    // The result photons this frame can store at most (its photons x bounces): what the
+    // per-photon tables of later passes hold, however large an earlier frame left the buffers.
+    uint32_t getFrameResults() const { return mFrameResults; }
     // Dispatches the photon pass bound now (groups of kTraceGroupSize, `photonsPerLane` photons
     // a lane: computeTraceGroups) over slice `slice` of `slices` of the photons counted at
     // `countOffset` in the counters (computeSliceRange): the count is read back first, a wait the
@@ -75,6 +79,7 @@ class PhotonBuffers {
     size_t mLightCount = 0;
     uint32_t mBounceCapacity = 0;
     uint32_t mResultCapacity = 0;
+    uint32_t mFrameResults = 0;
 };
 
 } // namespace ispm

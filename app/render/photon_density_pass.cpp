@@ -105,8 +105,8 @@ void PhotonDensityPass::useStage(uint32_t stage, const FrameSettings& settings) 
 
 void PhotonDensityPass::reserveClip() {
     const size_t bytes =
-        size_t(std::max(mBuffers.getResultCapacity(), 1u)) * gpu::kClipVec4s * sizeof(glm::vec4);
-    if (mClip.getSize() != bytes) mClip = gl::Buffer("splat clip distances", bytes);
+        size_t(std::max(mBuffers.getFrameResults(), 1u)) * gpu::kClipVec4s * sizeof(glm::vec4);
+    if (mClip.getSize() < bytes) mClip = gl::Buffer("splat clip distances", bytes);
 }
 
 void PhotonDensityPass::dispatch(glm::uvec4 slice) const {
@@ -167,19 +167,21 @@ void PhotonDensityPass::executeSlice(const FrameInputs& inputs, uint32_t stage, 
         return;
     }
     const uint32_t slots =
-        std::bit_ceil(std::max(mBuffers.getResultCapacity(), 1u) * kSlotsPerPhoton);
+        std::bit_ceil(std::max(mBuffers.getFrameResults(), 1u) * kSlotsPerPhoton);
     // The table (a slot is 32 bytes), with splat_clip the radius stage's order's counts (one
     // per grid cell, zeroed with the table), the caustic photons' draw command and list (at an
     // offset that suits any storage-buffer alignment up to 32 x slots), then with splat_clip the
     // order's photon indices.
     const bool ordered = inputs.settings.splatClip;
-    const size_t capacity = std::max(mBuffers.getResultCapacity(), 1u);
+    const size_t capacity = std::max(mBuffers.getFrameResults(), 1u);
     const size_t countsOffset = size_t(slots) * gpu::kDensitySlotUints * sizeof(uint32_t);
     mCausticOffset = countsOffset + (ordered ? gpu::kOrderCells * sizeof(uint32_t) : 0);
     const size_t orderOffset =
         mCausticOffset + gpu::kSplatDrawUvec4s * sizeof(glm::uvec4) + capacity * sizeof(uint32_t);
     const size_t cellBytes = orderOffset + (ordered ? capacity * sizeof(uint32_t) : 0);
-    if (cellBytes != mCells.getSize()) mCells = gl::Buffer("photon density cells", cellBytes);
+    // Grows only (a budget that adapts to the frame time moves the layout every few frames); the
+    // layout above follows this frame's photons, so a smaller frame clears a smaller table.
+    if (cellBytes > mCells.getSize()) mCells = gl::Buffer("photon density cells", cellBytes);
     mOrderOffset = ordered ? orderOffset : 0;
     if (inputs.settings.splatClip) reserveClip();
     if (stage == 0 && slice == 0) {

@@ -54,13 +54,15 @@ struct DensityRun {
     std::vector<glm::vec4> clip;            // kClipVec4s per photon (shared/splat_clip.h)
     std::vector<uint32_t> order;            // the radius stage's photon order (with clip lines)
     Aabb bounds;                            // the scene's, which the order's grid spans
+    size_t tableBytes = 0;                  // the hashed grid the pass cleared and used
 };
 
 // Runs the density pass alone on `photons`, with the frame of `scene` (camera, BVH); `travelM`
 // set: in radius_mode travel with that radius for every photon.
+// `earlierResults`: the buffers first held that many results (an earlier, larger frame's).
 DensityRun runDensity(const Scene& scene, std::vector<gpu::ResultPhoton> photons,
                       ProgressiveStep progressive = {}, std::optional<float> travelM = std::nullopt,
-                      float merge = 0.0f) {
+                      float merge = 0.0f, uint32_t earlierResults = 0) {
     Settings settings;
     settings.set("splat_merge", merge, "test");
     settings.set("width", 32, "test");
@@ -77,6 +79,7 @@ DensityRun runDensity(const Scene& scene, std::vector<gpu::ResultPhoton> photons
     runner.renderFrame();
     const auto count = uint32_t(photons.size());
     PhotonBuffers buffers;
+    if (earlierResults > 0) buffers.reserve(1, earlierResults);
     buffers.reserve(1, count);
     // Every binding the pass's shaders declare holds a buffer, as in a frame (the light counters
     // a photon in view is counted into; an unbound one is undefined behaviour).
@@ -101,7 +104,7 @@ DensityRun runDensity(const Scene& scene, std::vector<gpu::ResultPhoton> photons
                                           order.data());
     }
     return {buffers.getResult().read<gpu::ResultPhoton>(count), clip, order,
-            runner.getGpuScene().getBounds()};
+            runner.getGpuScene().getBounds(), density.getCausticOffset()};
 }
 
 // The median radius of the photons inside [lo, hi] on x and z.
@@ -150,6 +153,26 @@ TEST_F(PhotonDensityTest, RadiusHoldsKPhotonsOnAPlaneOfKnownDensity) {
     // off by sqrt(2) (a wrong k or block area).
     EXPECT_NEAR(double(sparse) / expectedSparse, 1.0, 0.2);
     EXPECT_NEAR(double(dense) / expectedDense, 1.0, 0.2);
+}
+
+TEST_F(PhotonDensityTest, TableFollowsTheFrameNotTheLargestFrameBefore) {
+    // The result buffer only grows, but the hashed grid each frame clears and walks is sized by
+    // this frame's photons: after a frame 64x larger (a sweep's or an adaptive budget's), the
+    // same radii from the same small table as in buffers made for this frame alone.
+    std::vector<gpu::ResultPhoton> photons;
+    addSquare(photons, -0.5f, -0.5f, 1.0f, 40, 1u);
+    const auto count = uint32_t(photons.size());
+    const DensityRun fresh = runDensity(makeFloorScene(), photons);
+    const DensityRun after =
+        runDensity(makeFloorScene(), photons, {}, std::nullopt, 0.0f, 64 * count);
+    std::printf("table: %zu bytes for %u photons, %zu after buffers for %u\n", fresh.tableBytes,
+                count, after.tableBytes, 64 * count);
+    EXPECT_EQ(after.tableBytes, fresh.tableBytes);
+    // 8 slots of 32 bytes a photon, to a power of two: far below the 64x larger frame's.
+    EXPECT_LT(fresh.tableBytes, size_t(16 * 32) * count);
+    ASSERT_EQ(after.photons.size(), fresh.photons.size());
+    for (size_t i = 0; i < fresh.photons.size(); ++i)
+        ASSERT_EQ(after.photons[i].power.w, fresh.photons[i].power.w) << "photon " << i;
 }
 
 TEST_F(PhotonDensityTest, MergedDiscsKeepThePowerItsCentreAndTheSpread) {
