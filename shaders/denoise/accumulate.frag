@@ -89,23 +89,21 @@ void main() {
     outDirect = params.weights.x >= 1.0 ? direct
                                      : mix(texelFetch(uHistoryDirect, pixel, 0), direct, params.weights.x);
     // A cap of 0 (a reset) reads no history at all: the textures may hold anything then.
+    vec4 position = texelFetch(uPosition, pixel, 0);
+    bool surface = position.w >= 0.5;
     History history = History(vec3(0.0), 0.0);
     if (params.weights.y > 0.0 && params.control.x == 0u) {
         history = History(texelFetch(uHistoryIndirect, pixel, 0).rgb,
                           texelFetch(uHistoryLength, pixel, 0).r);
-    } else if (params.weights.y > 0.0) {
-        vec4 position = texelFetch(uPosition, pixel, 0);
-        if (position.w >= 0.5) history = fetchReprojected(position, texelFetch(uNormal, pixel, 0).xyz);
+    } else if (params.weights.y > 0.0 && surface) {
+        history = fetchReprojected(position, texelFetch(uNormal, pixel, 0).xyz);
     }
     float length = min(history.length, params.weights.y);
     vec4 current = texelFetch(uIndirect, pixel, 0);
-    if (texelFetch(uPosition, pixel, 0).w < 0.5) {
-        outIndirect = vec4(history.indirect, current.a);
-        outLength = vec4(length, 0.0, 0.0, 0.0);
-        return;
-    }
-    vec3 indirect = length > 0.0 ? mix(history.indirect, current.rgb, 1.0 / (length + 1.0))
-                                 : current.rgb;
+    // Where this frame's centre sees the background the history stays as it is.
+    vec3 indirect = !surface        ? history.indirect
+                    : length > 0.0 ? mix(history.indirect, current.rgb, 1.0 / (length + 1.0))
+                                   : current.rgb;
     outIndirect = vec4(indirect, current.a);
-    outLength = vec4(length + 1.0, 0.0, 0.0, 0.0);
+    outLength = vec4(surface ? length + 1.0 : length, 0.0, 0.0, 0.0);
 }

@@ -20,9 +20,9 @@
 //
 // Stage 1 also culls photons whose disc lies outside the view frustum (radius 0: the splat skips
 // them). With MERGE_DISCS 1 (splat_merge) it adds each photon to its merge cell, and stage 4
-// draws each cell's photons as one disc (mergePhoton). With CLIP_DISCS 1 (splat_clip) stage 1 or 2 finds the lines where surfaces cut each
-// disc in view (shared/splat_clip.h): the in-plane rays of the clip, met against the triangles
-// of one BVH box query around the disc.
+// draws each cell's photons as one disc (mergePhoton). With CLIP_DISCS 1 (splat_clip) stage 1
+// or 2 finds the lines where surfaces cut each disc in view (shared/splat_clip.h): the in-plane
+// rays of the clip, met against the triangles of one BVH box query around the disc.
 #include "lib/constants.glsl"
 #define ISPM_BVH_BOX_VISITOR
 #include "lib/scene_buffers.glsl"

@@ -89,7 +89,7 @@ void main() {
     }
     // first_bounce weighted: the lobes' probabilities scaled to sum to 1 (scatterSurfaceWith's
     // selectScale), so the photon bounces wherever the surface reflects.
-    float albedo = computeMean(diffuse) + computeMean(specular.rgb) + computeMean(transmissive.rgb);
+    float albedo = computeLobeAlbedo(diffuse, specular, transmissive);
     if (!(albedo > 0.0)) return;
     float selectScale = params.random.w == kFirstBounceWeighted ? 1.0 / albedo : 1.0;
     uint event = scatterSurfaceWith(dir, power, normal.xyz, diffuse, specular, transmissive,

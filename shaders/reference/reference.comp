@@ -46,8 +46,7 @@ vec3 traceCameraPath(vec2 pixel, inout uint rng) {
                                                        params.ray.x);
         float offset = computeRayOffset(position, params.ray.x);
         if (vertex > bounces) break;
-        float total = computeMean(diffuse) + computeMean(m.specular.rgb) +
-                      computeMean(m.transmissive.rgb);
+        float total = computeLobeAlbedo(diffuse, m.specular, m.transmissive);
         if (total <= 0.0) break;
         uint event = scatterSurface(dir, throughput, n, diffuse, m.specular, m.transmissive,
                                     frontFace, rng, kRngPcg, 1.0 / total);

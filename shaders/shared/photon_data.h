@@ -171,7 +171,6 @@ struct TraceParams {
 };
 ISPM_STATIC_ASSERT_SIZE(TraceParams, 48);
 
-// Parameters of photon_emit.geom for one light view's grid (std140, at kBindingPassParams).
 // The first bounce's Russian roulette (setting first_bounce): on the surface's albedo, so that
 // absorbed photons end there (the thesis's), or among the lobes alone, by their share of the
 // albedo, the photon's power times it (none is absorbed where the surface reflects at all: at the
@@ -179,6 +178,7 @@ ISPM_STATIC_ASSERT_SIZE(TraceParams, 48);
 ISPM_CONST uint kFirstBounceRoulette = 0u;
 ISPM_CONST uint kFirstBounceWeighted = 1u;
 
+// Parameters of photon_emit.geom for one light view's grid (std140, at kBindingPassParams).
 struct EmitParams {
     uvec4 grid;   // x = light view (G-buffer layer), y = global index of its first photon,
                   // z, w = photons across and down the view

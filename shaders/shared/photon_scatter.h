@@ -175,6 +175,12 @@ ISPM_INLINE float computeMean(vec3 v) {
     return (v.x + v.y + v.z) * (1.0f / 3.0f);
 }
 
+// The material's albedo as scatterSurfaceWith's lobe choice sums it: the means of its diffuse,
+// specular and transmissive reflectance. 1 / this as selectScale always picks a lobe.
+ISPM_INLINE float computeLobeAlbedo(vec3 diffuse, vec4 specular, vec4 transmissive) {
+    return computeMean(diffuse) + computeMean(vec3(specular)) + computeMean(vec3(transmissive));
+}
+
 // Scatters a path travelling along `dir` that hit a surface with unit normal `n` facing the side
 // it came from. `entering`: it hit the front face (for the index of refraction). A lobe is chosen
 // with probability (its mean reflectance at this incidence) x selectScale, and the weight is
