@@ -56,20 +56,38 @@ vec3 safeInverse(vec3 d) {
                       abs(d.z) > kTiny ? d.z : (d.z >= 0.0 ? kTiny : -kTiny));
 }
 
-// Traversal visits the nearer child of an interior node first: both children's boxes are tested
-// when the node is visited, the missed ones dropped, and the nearer pushed last. The hits found
-// under it then cut off the farther one, whose box is tested again when popped. The stack holds
-// node indices alone (a stack per invocation: on a GPU a larger one costs occupancy). Expects
-// stack, top, invDir and hit in scope; `nodes` is the level's array.
-#define ISPM_BVH_PUSH_CHILDREN(nodes, a, b, origin)                                                \
+// Traversal goes down to the nearer child of an interior node whose box the ray enters and keeps
+// the farther one on the stack with its entry distance. A kept node is dropped when popped if the
+// hits found since lie before that distance (the box is not fetched or tested again). The stack
+// holds node indices and entry distances (a stack per invocation: on a GPU a larger one costs
+// occupancy). Expects stack, stackT, top, invDir, hit and current in scope; `nodes` is the
+// level's array. ISPM_BVH_DESCEND sets `descended` when a child is entered (current is then that
+// child); ISPM_BVH_POP sets `popped` when a kept node still counts (current is then that node).
+#define ISPM_BVH_DESCEND(nodes, a, b, origin)                                                      \
     {                                                                                              \
         GpuBvhNode childA = nodes[a];                                                              \
         GpuBvhNode childB = nodes[b];                                                              \
         float tA = intersectBox(origin, invDir, childA.lo.xyz, childA.hi.xyz, hit.t);              \
         float tB = intersectBox(origin, invDir, childB.lo.xyz, childB.hi.xyz, hit.t);              \
         bool aFirst = tA <= tB;                                                                    \
-        if (max(tA, tB) < kNoHitDistance && top < kBvhStackSize) stack[top++] = aFirst ? b : a;    \
-        if (min(tA, tB) < kNoHitDistance && top < kBvhStackSize) stack[top++] = aFirst ? a : b;    \
+        float tFar = aFirst ? tB : tA;                                                             \
+        if (tFar < kNoHitDistance && top < kBvhStackSize) {                                        \
+            stack[top] = aFirst ? b : a;                                                           \
+            stackT[top] = tFar;                                                                    \
+            ++top;                                                                                 \
+        }                                                                                          \
+        descended = min(tA, tB) < kNoHitDistance;                                                  \
+        current = aFirst ? a : b;                                                                  \
+    }
+
+#define ISPM_BVH_POP()                                                                             \
+    {                                                                                              \
+        popped = false;                                                                            \
+        while (top > 0 && !popped) {                                                               \
+            --top;                                                                                 \
+            popped = stackT[top] < hit.t;                                                          \
+            current = stack[top];                                                                  \
+        }                                                                                          \
     }
 
 // Closest hit in one instance (updates hit when closer than hit.t); with anyHit, the first hit
@@ -81,11 +99,13 @@ bool intersectInstance(uint instanceIndex, vec3 originW, vec3 dirW, inout RayHit
     vec3 invDir = safeInverse(dir);
     bool found = false;
     uint stack[kBvhStackSize];
+    float stackT[kBvhStackSize];
     int top = 0;
-    stack[top++] = inst.range.z;
-    while (top > 0) {
-        GpuBvhNode node = blasNodes[stack[--top]];
-        if (intersectBox(origin, invDir, node.lo.xyz, node.hi.xyz, hit.t) >= kNoHitDistance) continue;
+    uint current = inst.range.z;
+    GpuBvhNode root = blasNodes[current];
+    if (intersectBox(origin, invDir, root.lo.xyz, root.hi.xyz, hit.t) >= kNoHitDistance) return false;
+    while (true) {
+        GpuBvhNode node = blasNodes[current];
         uint a = floatBitsToUint(node.lo.w);
         uint b = floatBitsToUint(node.hi.w);
         if ((b & kBvhLeafFlag) != 0u) {
@@ -104,8 +124,13 @@ bool intersectInstance(uint instanceIndex, vec3 originW, vec3 dirW, inout RayHit
                 }
             }
         } else {
-            ISPM_BVH_PUSH_CHILDREN(blasNodes, a, b, origin)
+            bool descended;
+            ISPM_BVH_DESCEND(blasNodes, a, b, origin)
+            if (descended) continue;
         }
+        bool popped;
+        ISPM_BVH_POP()
+        if (!popped) break;
     }
     return found;
 }
@@ -120,11 +145,13 @@ bool traceRayWith(vec3 origin, vec3 dir, float tMax, bool anyHit, out RayHit hit
     vec3 invDir = safeInverse(dir);
     bool found = false;
     uint stack[kBvhStackSize];
+    float stackT[kBvhStackSize];
     int top = 0;
-    stack[top++] = 0u;
-    while (top > 0) {
-        GpuBvhNode node = tlasNodes[stack[--top]];
-        if (intersectBox(origin, invDir, node.lo.xyz, node.hi.xyz, hit.t) >= kNoHitDistance) continue;
+    uint current = 0u;
+    GpuBvhNode root = tlasNodes[0];
+    if (intersectBox(origin, invDir, root.lo.xyz, root.hi.xyz, hit.t) >= kNoHitDistance) return false;
+    while (true) {
+        GpuBvhNode node = tlasNodes[current];
         uint a = floatBitsToUint(node.lo.w);
         uint b = floatBitsToUint(node.hi.w);
         if ((b & kBvhLeafFlag) != 0u) {
@@ -134,8 +161,13 @@ bool traceRayWith(vec3 origin, vec3 dir, float tMax, bool anyHit, out RayHit hit
                 if (anyHit && found) return true;
             }
         } else {
-            ISPM_BVH_PUSH_CHILDREN(tlasNodes, a, b, origin)
+            bool descended;
+            ISPM_BVH_DESCEND(tlasNodes, a, b, origin)
+            if (descended) continue;
         }
+        bool popped;
+        ISPM_BVH_POP()
+        if (!popped) break;
     }
     return found;
 }
