@@ -58,7 +58,7 @@ FrameRunner::FrameRunner(const Scene& scene, const Settings& settings, gl::Timin
     mEmit = std::make_unique<PhotonEmitPass>(mLightViews->getGBuffer(), mImportance->getCdf(),
                                              mPhotonBuffers);
     mTrace = std::make_unique<PhotonTracePass>(mPhotonBuffers);
-    mDensity = std::make_unique<PhotonDensityPass>(mPhotonBuffers);
+    mDensity = std::make_unique<PhotonDensityPass>(mPhotonBuffers, mGBuffer->getGBuffer());
     mSplat = std::make_unique<SplatPass>(mGBuffer->getGBuffer(), mPhotonBuffers, *mDensity);
     mDenoise = std::make_unique<DenoisePass>(mGBuffer->getGBuffer(), mSplat->getOutput());
     mDirect = std::make_unique<DirectPass>(mGBuffer->getGBuffer(), mLightViews->getGBuffer());

@@ -3,6 +3,7 @@
 
 #include "gl/gl.h"
 #include "gl/state.h"
+#include "render/gbuffer.h"
 #include "render/gpu_scene.h"
 #include "render/splat_pass.h"
 
@@ -42,10 +43,11 @@ float computeDensityRadiusMax(double surfaceAreaM2, int photons, int neighbours)
     return kMaxRadiusFactor * computeEvenRadius(surfaceAreaM2, photons, neighbours);
 }
 
-PhotonDensityPass::PhotonDensityPass(PhotonBuffers& buffers)
-    : mBuffers(buffers),
+PhotonDensityPass::PhotonDensityPass(PhotonBuffers& buffers, const GBuffer& viewer)
+    : mBuffers(buffers), mViewer(viewer),
       mPrograms({.label = "photon density",
-                 .stages = {{gl::ShaderStage::Compute, "photon/photon_density.comp"}}}),
+                 .stages = {{gl::ShaderStage::Compute, "photon/photon_density.comp"}},
+                 .defines = getGBufferDefines()}),
       mOrderPrograms({.label = "photon order",
                       .stages = {{gl::ShaderStage::Compute, "photon/photon_order.comp"}}}),
       mParams("photon density parameters", sizeof(gpu::DensityParams)),
@@ -60,6 +62,7 @@ void PhotonDensityPass::setTravelRadii(const FrameInputs& inputs, glm::uvec4 sli
     params.travel = glm::vec4(r.radiusMinM, r.radiusMaxM, r.distMinM, r.distMaxM);
     params.scales = glm::vec4(1.0f, inputs.scene.getRayEpsilon(), 0.0f, 0.0f); // the clip's rays
     params.slice = slice;
+    params.view = glm::vec4(inputs.settings.squash, 0.0f, 0.0f, 0.0f);
     runTravelStage(inputs, params);
 }
 
@@ -86,6 +89,8 @@ void PhotonDensityPass::runTravelStage(const FrameInputs& inputs,
         inputs.scene.bind();
         mClip.bindBase(gl::BufferTarget::Storage, gpu::kBindingSplatClip);
     }
+    if (measuresSurfaceEnds(params.control.x, inputs.settings))
+        mViewer.bindTextures(gpu::kUnitGBufferFirst);
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
     mParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
     useStage(params.control.x, inputs.settings);
@@ -94,12 +99,18 @@ void PhotonDensityPass::runTravelStage(const FrameInputs& inputs,
     gl::memoryBarrier(gl::Barrier::Storage);
 }
 
+bool PhotonDensityPass::measuresSurfaceEnds(uint32_t stage, const FrameSettings& settings) {
+    return settings.surfaceEnds &&
+           (stage == gpu::kDensityStageRadius || stage == gpu::kDensityStageTravelCull);
+}
+
 void PhotonDensityPass::useStage(uint32_t stage, const FrameSettings& settings) {
     mPrograms
         .get({"DENSITY_STAGE " + std::to_string(stage) + "u",
               settings.splatClip ? "CLIP_DISCS 1" : "CLIP_DISCS 0",
               settings.widenStrong ? "WIDEN_STRONG 1" : "WIDEN_STRONG 0",
-              settings.splatMerge > 0.0f ? "MERGE_DISCS 1" : "MERGE_DISCS 0"})
+              settings.splatMerge > 0.0f ? "MERGE_DISCS 1" : "MERGE_DISCS 0",
+              measuresSurfaceEnds(stage, settings) ? "SURFACE_ENDS 1" : "SURFACE_ENDS 0"})
         .use();
 }
 
@@ -218,6 +229,7 @@ void PhotonDensityPass::executeSlice(const FrameInputs& inputs, uint32_t stage, 
     params.slice = sliceParams;
     params.slice.z = uint32_t(mOrderOffset / sizeof(uint32_t));
     params.slice.w = uint32_t(mCausticOffset / sizeof(uint32_t));
+    params.view = glm::vec4(inputs.settings.squash, 0.0f, 0.0f, 0.0f);
     mParams.upload(0, sizeof(params), &params);
 
     mBuffers.bind();
@@ -227,6 +239,8 @@ void PhotonDensityPass::executeSlice(const FrameInputs& inputs, uint32_t stage, 
     mCells.bindBase(gl::BufferTarget::Storage, gpu::kBindingDensityCells);
     if (inputs.settings.splatClip)
         mClip.bindBase(gl::BufferTarget::Storage, gpu::kBindingSplatClip);
+    if (measuresSurfaceEnds(params.control.x, inputs.settings))
+        mViewer.bindTextures(gpu::kUnitGBufferFirst);
     useStage(params.control.x, inputs.settings);
     // The block is written anew for every dispatch (the GL orders the update after the
     // dispatch before it that read the last one).

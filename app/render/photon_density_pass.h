@@ -5,6 +5,7 @@
 // modes it sets the travel radius instead, so the splat reads every mode's radius from one place.
 #pragma once
 
+#include "render/gbuffer.h"
 #include "render/pass.h"
 #include "render/photon_buffers.h"
 #include "render/zero_fill.h"
@@ -29,7 +30,8 @@ gpu::OrderParams makeOrderParams(const Aabb& bounds, size_t countsAt, size_t ord
 
 class PhotonDensityPass final : public Pass {
   public:
-    explicit PhotonDensityPass(PhotonBuffers& buffers);
+    // `viewer`: the viewer G-buffer (surface_ends looks up where the discs lie).
+    PhotonDensityPass(PhotonBuffers& buffers, const GBuffer& viewer);
     const char* getName() const override { return "density"; }
     void execute(const FrameInputs& inputs) override;
     // Stages that each run over every photon before the next: 2 in radius_mode density (count
@@ -68,17 +70,22 @@ class PhotonDensityPass final : public Pass {
     void dispatch(glm::uvec4 slice) const;
 
     PhotonBuffers& mBuffers;
+    const GBuffer& mViewer;
     // widen_strong: each light's stored photons and power, for setTravelRadii.
     void sumLightPower(const FrameInputs& inputs, glm::uvec4 slice);
     // Uploads `params` and runs its travel stage (params.control.x) over params.slice.
     void runTravelStage(const FrameInputs& inputs, const gpu::DensityParams& params);
     void useStage(uint32_t stage, const FrameSettings& settings);
+    // surface_ends: whether `stage` divides each photon's power by its disc's share on a
+    // surface (the radius stage, the travel modes' cull; not with splat_clip).
+    static bool measuresSurfaceEnds(uint32_t stage, const FrameSettings& settings);
     void reserveClip(); // mClip, one entry per result photon
     // splat_clip: the stored photons' spatial order for the radius stage (photon_order.comp),
     // its counts at uint countsAt of mCells, the indices at orderAt.
     void sortPhotons(const FrameInputs& inputs, size_t countsAt, size_t orderAt);
 
-    ProgramVariants mPrograms; // by stage (DENSITY_STAGE), CLIP_DISCS, WIDEN_STRONG, MERGE_DISCS
+    // By stage (DENSITY_STAGE), CLIP_DISCS, WIDEN_STRONG, MERGE_DISCS, SURFACE_ENDS.
+    ProgramVariants mPrograms;
     ProgramVariants mOrderPrograms; // by stage (ORDER_STAGE)
     ZeroFill mZeroFill;             // clears the table each frame
     gl::Buffer mParams;             // gpu::DensityParams

@@ -125,6 +125,14 @@ bool computeSplatClip(const Settings& settings) {
     return choice == 1;
 }
 
+bool computeSurfaceEnds(const Settings& settings) {
+    if (computeSplatClip(settings)) return false;
+    // Choices "auto", "on", "off": auto for the density radii's discs, not the travel modes'.
+    const uint32_t choice = getChoice(settings, "surface_ends");
+    if (choice == 0) return getChoice(settings, "radius_mode") == gpu::kRadiusDensity;
+    return choice == 1;
+}
+
 int computeShadowMapSize(const Settings& settings) {
     if (settings.isSet("shadow_map_size")) return settings.getInt("shadow_map_size");
     if (getChoice(settings, "shadows") != gpu::kShadowsRay) return kShadowMapTexels;
@@ -179,6 +187,7 @@ FrameSettings resolveFrameSettings(const Settings& settings) {
     f.splatShape = getChoice(settings, "splat_shape");
     f.splatMode = getChoice(settings, "splat_mode");
     f.splatClip = computeSplatClip(settings);
+    f.surfaceEnds = computeSurfaceEnds(settings);
     // The density radii spread strong photons by their neighbours already.
     f.widenStrong = getChoice(settings, "widen_strong") == 1 && f.radiusMode != gpu::kRadiusDensity;
     f.splatDivisor = computeSplatDivisor(settings, f.width, f.height);

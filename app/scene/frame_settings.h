@@ -30,6 +30,7 @@ inline constexpr std::array<std::string_view, 2> kShadowChoices = {"map", "ray"}
 inline constexpr std::array<std::string_view, 4> kSplatResolutionChoices = {"auto", "1", "1/2",
                                                                             "1/4"};
 inline constexpr std::array<std::string_view, 3> kSplatClipChoices = {"auto", "on", "off"};
+inline constexpr std::array<std::string_view, 3> kSurfaceEndsChoices = {"auto", "on", "off"};
 inline constexpr std::array<std::string_view, 2> kWidenStrongChoices = {"off", "on"};
 inline constexpr std::array<std::string_view, 2> kFirstBounceChoices = {"roulette", "weighted"};
 
@@ -77,6 +78,7 @@ struct FrameSettings {
     uint32_t splatShape = 0;   // gpu::kSplatShape*
     uint32_t splatMode = 0;    // gpu::kSplatMode*
     bool splatClip = false;    // discs cut at the surfaces their plane meets (clip lines)
+    bool surfaceEnds = false;  // without clip lines: power over the disc's share on a surface
     bool widenStrong = false;  // travel modes (never density): strong photons widened
     int splatDivisor = 1;      // image pixels per splat-buffer pixel along an axis (1, 2, 4)
     glm::ivec2 splatSize{0};   // the splat buffer: the image divided, rounded up
@@ -107,5 +109,7 @@ glm::ivec2 computeSplatSize(const Settings& settings, int width, int height);
 int computeDenoiseIterations(const Settings& settings, int width, int height);
 int computeShadowMapSize(const Settings& settings);
 bool computeSplatClip(const Settings& settings);
+// surface_ends as it applies: never with clip lines (they renormalise per pixel instead).
+bool computeSurfaceEnds(const Settings& settings);
 
 } // namespace ispm

@@ -19,7 +19,8 @@
 // whole disc of that power is a blotch. A weaker photon keeps its radius.
 //
 // Stage 1 also culls photons whose disc lies outside the view frustum (radius 0: the splat skips
-// them). With MERGE_DISCS 1 (splat_merge) it adds each photon to its merge cell, and stage 4
+// them). With SURFACE_ENDS 1 (surface_ends, without clip lines) stage 1 or 2 divides each
+// photon's power by the share of its disc that the viewer G-buffer shows a surface for. With MERGE_DISCS 1 (splat_merge) it adds each photon to its merge cell, and stage 4
 // draws each cell's photons as one disc (mergePhoton). With CLIP_DISCS 1 (splat_clip) stage 1
 // or 2 finds the lines where surfaces cut each disc in view (shared/splat_clip.h): the in-plane
 // rays of the clip, met against the triangles of one BVH box query around the disc.
@@ -32,6 +33,9 @@
 #include "shared/photon_scatter.h"
 #include "shared/splat_clip.h"
 #include "lib/photon_lights.glsl"
+#if SURFACE_ENDS
+#include "lib/viewer_gbuffer.glsl"
+#endif
 
 layout(local_size_x = kTraceGroupSize) in;
 
@@ -401,6 +405,62 @@ void clipDisc(uint index, vec3 p, vec3 n, float radius) {
     writeClip(index, poles, wedges, radius);
 }
 
+// A hash of a photon's position: photons are stored in another order each run, and a choice
+// made per photon must follow the photon, not its index.
+uint hashPosition(vec3 p) {
+    uvec3 bits = floatBitsToUint(p);
+    return hashPcg(bits.x ^ hashPcg(bits.y ^ hashPcg(bits.z)));
+}
+
+#if SURFACE_ENDS
+// surface_ends: whether the viewer sees past the point q of the disc round photon (p, n): the
+// pixel that shows q shows the background or a surface farther from the eye than q, so no
+// surface holds q and the splat has nowhere to put light there (a wall's top against the sky,
+// its side against the yard, the opening of its door). Where the pixel shows the photon's own
+// surface (facing its way, within the splat's squash x radius of its plane: what the splat
+// accepts), a nearer surface (which may hide q's surface: unknown) or q lies outside the image,
+// the surface is taken to go on.
+bool isSeenPast(vec3 q, vec3 p, vec3 n, float radius) {
+    vec4 clip = frame.clipFromWorld * vec4(q, 1.0);
+    if (clip.w <= 0.0) return false;
+    vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
+    if (any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0)))) return false;
+    ivec2 pixel = ivec2(uv * frame.imageSize.xy);
+    vec4 shown = texelFetch(uPosition, pixel, 0);
+    if (shown.w < 0.5) return true;
+    bool onPlane = dot(texelFetch(uNormal, pixel, 0).xyz, n) > 0.0 &&
+                   abs(dot(shown.xyz - p, n)) <= params.view.x * radius;
+    if (onPlane) return false;
+    vec3 eye = frame.cameraPosition.xyz;
+    return distance(eye, shown.xyz) > distance(eye, q);
+}
+
+// The share of the disc's kernel that lies where a surface may hold it (isSeenPast), from its
+// points on two rings of kSurfaceRingPoints: at 0.366 r and 0.707 r, the middles (by kernel
+// mass) of the inner and outer halves of the kernel (2 s^2 - s^4 of it lies within s r: 1/4 and
+// 3/4 there), the second ring turned half a step against the first, both by a hash of the
+// photon's position. At least kMinKeptMass, as splat_clip's kept mass. Dividing the photon's power by it keeps
+// that power on the surfaces the viewer sees: a disc reaching past a wall's edge into the air
+// lost it there, and the wall's rim came out dark.
+const uint kSurfaceRingPoints = 4u;
+float computeSurfaceShare(vec3 p, vec3 n, float radius) {
+    vec3 t;
+    vec3 b;
+    buildSplatBasis(n, t, b);
+    float turn = float(hashPosition(p)) * (2.0 * kPi / 4294967296.0);
+    const float kRings[2] = float[2](0.366, 0.707);
+    float onSurface = 0.0;
+    for (uint ring = 0u; ring < 2u; ++ring) {
+        for (uint i = 0u; i < kSurfaceRingPoints; ++i) {
+            float angle = turn + (float(i) + 0.5 * float(ring)) * (2.0 * kPi / float(kSurfaceRingPoints));
+            vec3 q = p + kRings[ring] * radius * (cos(angle) * t + sin(angle) * b);
+            onSurface += isSeenPast(q, p, n, radius) ? 0.0 : 1.0;
+        }
+    }
+    return max(onSurface / float(2u * kSurfaceRingPoints), kMinKeptMass);
+}
+#endif
+
 // widen_strong: light l's stored photons at cells[2 l], their power (float bits) at cells[2 l + 1],
 // of one photon in kPowerSampleStride: the mean of thousands to a few per cent, without every
 // photon of a light waiting on one word (the float add is a compare-and-swap loop: 40,000 photons
@@ -409,8 +469,7 @@ void clipDisc(uint index, vec3 p, vec3 n, float radius) {
 // photons must set the same mean.
 const uint kPowerSampleStride = 8u;
 void addLightPower(uint index) {
-    uvec3 bits = floatBitsToUint(photons[index].positionDistance.xyz);
-    if (hashPcg(bits.x ^ hashPcg(bits.y ^ hashPcg(bits.z))) % kPowerSampleStride != 0u) return;
+    if (hashPosition(photons[index].positionDistance.xyz) % kPowerSampleStride != 0u) return;
     uint light = unpackLight(photons[index].incoming.w);
     atomicAdd(cells[2u * light], 1u);
     addFloat(2u * light + 1u, getPhotonPower(index));
@@ -437,6 +496,10 @@ void setTravelRadius(uint index) {
     }
     countPhoton(unpackLight(photons[index].incoming.w), 2);
     photons[index].power.w = radius;
+#if SURFACE_ENDS
+    photons[index].power.rgb /=
+        computeSurfaceShare(photons[index].positionDistance.xyz, photons[index].normalDensity.xyz, radius);
+#endif
     if (kClipDiscs) clipDisc(index, photons[index].positionDistance.xyz, photons[index].normalDensity.xyz, radius);
 }
 
@@ -542,6 +605,9 @@ void main() {
     }
     countPhoton(unpackLight(photons[index].incoming.w), 2);
     photons[index].power.w = radius;
+#if SURFACE_ENDS
+    photons[index].power.rgb /= computeSurfaceShare(p, photons[index].normalDensity.xyz, radius);
+#endif
     if (isCausticPhoton(photons[index].normalDensity.w)) {
         appendCausticPhoton(index);
     } else if (kMergeDiscs) {

@@ -268,8 +268,9 @@ struct DensityParams {
     uvec4 slice;   // x = this slice, y = slices (computeSliceRange); z = the radius stage's
                    // photon order's first uint in the cells (photon_order.comp), 0: index order;
                    // w = the caustic list's first uint in the cells (its draw command)
+    vec4 view;     // surface_ends: x = the splat's squash; yzw unused
 };
-ISPM_STATIC_ASSERT_SIZE(DensityParams, 80);
+ISPM_STATIC_ASSERT_SIZE(DensityParams, 96);
 
 ISPM_NAMESPACE_END
 

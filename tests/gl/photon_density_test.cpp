@@ -92,7 +92,7 @@ DensityRun runDensity(const Scene& scene, std::vector<gpu::ResultPhoton> photons
     counters.densityDispatch =
         glm::uvec4((count + gpu::kTraceGroupSize - 1) / gpu::kTraceGroupSize, 1, 1, 0);
     buffers.getCounters().upload(0, sizeof(counters), &counters);
-    PhotonDensityPass density(buffers);
+    PhotonDensityPass density(buffers, runner.getViewerGBuffer());
     FrameInputs inputs = runner.getFrameInputs();
     inputs.progressive = progressive;
     density.execute(inputs);

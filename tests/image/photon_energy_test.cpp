@@ -161,7 +161,8 @@ TEST_P(SplatShapeEnergyTest, OneSplatOnAPlaneIntegratesToBrdfTimesPower) {
     const glm::uvec4 draw[gpu::kSplatDrawUvec4s] = {{indices, 1, 0, 0}, {0, 0, 0, 0}};
     buffers.getSplatDraws().upload(0, sizeof(draw), draw);
 
-    const PhotonDensityPass density(buffers); // travel radii: the splat reads none of its buffers
+    const PhotonDensityPass density(
+        buffers, runner.getViewerGBuffer()); // travel radii: the splat reads none of its buffers
     SplatPass splat(runner.getViewerGBuffer(), buffers, density);
     splat.resize(kSize, kSize);
     splat.execute(runner.getFrameInputs());

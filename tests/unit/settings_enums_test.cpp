@@ -62,6 +62,29 @@ TEST(SettingsEnums, SplatClipFollowsTheRadiusModeUnlessSet) {
     }
 }
 
+// surface_ends auto measures the density radii's discs and leaves the travel modes' whole; clip
+// lines renormalise per pixel instead, so with splat_clip on it never applies.
+TEST(SettingsEnums, SurfaceEndsAppliesOnlyWithoutClipLines) {
+    const auto resolve = [](std::string_view mode, std::string_view clip, std::string_view ends) {
+        Settings s;
+        s.setEnum("radius_mode", mode, "test");
+        s.setEnum("splat_clip", clip, "test");
+        s.setEnum("surface_ends", ends, "test");
+        return resolveFrameSettings(s).surfaceEnds;
+    };
+    EXPECT_TRUE(resolve("density", "off", "auto"));
+    EXPECT_FALSE(resolve("travel", "off", "auto"));
+    EXPECT_FALSE(resolve("path_density", "off", "auto"));
+    for (std::string_view mode : {"travel", "path_density", "density"}) {
+        EXPECT_TRUE(resolve(mode, "off", "on")) << mode;
+        EXPECT_FALSE(resolve(mode, "off", "off")) << mode;
+        for (std::string_view ends : {"auto", "on", "off"})
+            EXPECT_FALSE(resolve(mode, "on", ends)) << mode << " " << ends;
+    }
+    // The default: density radii with clip lines.
+    EXPECT_FALSE(resolveFrameSettings(Settings()).surfaceEnds);
+}
+
 // widen_strong widens travel and path-density discs; the density radii (the default) spread
 // strong photons by their neighbours already, so it resolves off there.
 TEST(SettingsEnums, WidenStrongIsOffUnlessSetForTravelRadii) {
