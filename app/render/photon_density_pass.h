@@ -54,6 +54,14 @@ class PhotonDensityPass final : public Pass {
     // sets, then their indices (bound at kBindingCausticList for splat.vert).
     const gl::Buffer& getCausticList() const { return mCells; }
     size_t getCausticOffset() const { return mCausticOffset; }
+    // radius_mode density: the discs the splat draws (photons in view that keep a disc of their
+    // own, not caustic), in the same buffer: at getDiscOffset() bytes the draw commands of the
+    // splat's draws (kSplatDrawUvec4s uvec4s each), at getDiscCountOffset() their count (x of a
+    // uvec4) and then their photons' indices (kBindingDiscList binds from there).
+    size_t getDiscOffset() const { return mDiscOffset; }
+    size_t getDiscCountOffset() const {
+        return mDiscOffset + gpu::kDiscListHeaderUints * sizeof(uint32_t);
+    }
     // splat_clip (radius_mode density): the stored photons' indices in the order the radius
     // stage took them (photon_order.comp), at this many bytes into getCausticList()'s buffer;
     // 0 without splat_clip.
@@ -94,6 +102,7 @@ class PhotonDensityPass final : public Pass {
     gl::Buffer mLightPower;         // widen_strong: per light its stored photons and power
     gl::Buffer mClip;
     size_t mCausticOffset = 0;
+    size_t mDiscOffset = 0;
     size_t mOrderOffset = 0;
 };
 

@@ -230,7 +230,7 @@ void SplatPass::uploadParams(const FrameInputs& inputs) {
         params[p].photons = glm::uvec4(!apart    ? gpu::kSplatAllPhotons
                                        : caustic ? gpu::kSplatCausticPhotons
                                                  : gpu::kSplatDiffusePhotons,
-                                       0u, 0u, 0u);
+                                       drawsDiscList(inputs) && !caustic ? 1u : 0u, 0u, 0u);
     }
     mParams.upload(params);
 }
@@ -251,14 +251,27 @@ void SplatPass::bindRaster(const FrameInputs& inputs) {
     if (offset < list.getSize())
         list.bindRange(gl::BufferTarget::Storage, gpu::kBindingCausticList, offset,
                        list.getSize() - offset);
+    const size_t discs = mDensity.getDiscCountOffset();
+    if (drawsDiscList(inputs) && discs < list.getSize())
+        list.bindRange(gl::BufferTarget::Storage, gpu::kBindingDiscList, discs,
+                       list.getSize() - discs);
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
     mViewer.bindTextures(gpu::kUnitGBufferFirst);
 }
 
-void SplatPass::drawSplats(uint32_t p) {
+bool SplatPass::drawsDiscList(const FrameInputs& inputs) {
+    return inputs.settings.radiusMode == gpu::kRadiusDensity;
+}
+
+void SplatPass::drawSplats(const FrameInputs& inputs, uint32_t p) {
     mParams.bind(p);
-    gl::drawElementsIndirect(gl::Primitive::Triangles, mBuffers.getSplatDraws(),
-                             p * gpu::kSplatDrawUvec4s * sizeof(glm::uvec4));
+    const size_t command = p * gpu::kSplatDrawUvec4s * sizeof(glm::uvec4);
+    if (drawsDiscList(inputs)) {
+        gl::drawElementsIndirect(gl::Primitive::Triangles, mDensity.getCausticList(),
+                                 mDensity.getDiscOffset() + command);
+    } else {
+        gl::drawElementsIndirect(gl::Primitive::Triangles, mBuffers.getSplatDraws(), command);
+    }
 }
 
 void SplatPass::drawCaustics(const FrameInputs& inputs) {
@@ -288,7 +301,7 @@ void SplatPass::executeDraws(const FrameInputs& inputs, uint32_t firstDraw, uint
         mFramebuffer.bind();
     }
     for (uint32_t p = firstDraw; p < firstDraw + drawCount; ++p)
-        drawSplats(p);
+        drawSplats(inputs, p);
     if (atOffset && firstDraw + drawCount == inputs.splatDraws)
         mIndirect.copyFrom(mTarget, offset.x, offset.y);
     // The caustic photons (few, small discs) in one draw, with the first slice.

@@ -105,6 +105,30 @@ void addFloat(uint index, float value) {
 
 const float kExtentOne = 16777216.0; // 2^24: a whole cell in the extent words
 
+// radius_mode density: photon `index` keeps a disc of its own (not collapsed into its merge cell's,
+// not a caustic photon: those have their list): the splat draws it.
+void appendDisc(uint index) {
+    uint list = params.discs.x + kDiscListHeaderUints;
+    uint at = atomicAdd(cells[list], 1u);
+    cells[list + 4u + at] = index;
+}
+
+// kDensityStageDiscDraws: the disc count split into the splat draws' commands (count,
+// instanceCount, firstIndex, baseVertex, baseInstance); splat.vert finds a draw's first disc
+// from the count.
+void writeDiscDraws() {
+    uint discs = cells[params.discs.x + kDiscListHeaderUints];
+    uint draws = params.discs.y;
+    for (uint p = 0u; p < draws; ++p) {
+        uint at = params.discs.x + p * kSplatDrawUvec4s * 4u;
+        cells[at] = params.discs.z;
+        cells[at + 1u] = discs * (p + 1u) / draws - discs * p / draws;
+        cells[at + 2u] = 0u;
+        cells[at + 3u] = 0u;
+        cells[at + 4u] = 0u;
+    }
+}
+
 void appendCausticPhoton(uint index) {
     uint list = params.slice.w;
     uint at = atomicAdd(cells[list + 1u], 1u);
@@ -529,11 +553,16 @@ void mergePhoton(uint index) {
         radius = sqrt(uintBitsToFloat(cells[radii + 1u]) / weight);
         photons[index].power = vec4(power, radius);
         photons[index].positionDistance.xyz = p;
+        appendDisc(index); // the cell's disc (a photon without a cell was listed by the radius stage)
     }
     if (kClipDiscs) clipDisc(index, p, n, radius);
 }
 
 void main() {
+    if (kStage == kDensityStageDiscDraws) {
+        if (gl_GlobalInvocationID.x == 0u) writeDiscDraws();
+        return;
+    }
     uvec2 range = computeSliceRange(counters.splatDraw.y, params.slice.x, params.slice.y);
     uint at = range.x + gl_GlobalInvocationID.x;
     if (at >= range.y) return;
@@ -610,10 +639,11 @@ void main() {
 #endif
     if (isCausticPhoton(photons[index].normalDensity.w)) {
         appendCausticPhoton(index);
-    } else if (kMergeDiscs) {
-        // A merged photon's disc is clipped by the merge stage, if it is its cell's.
-        int level = computeMergeLevel(radius);
+    } else {
+        // A merged photon's disc is listed and clipped by the merge stage, if it is its cell's.
+        int level = kMergeDiscs ? computeMergeLevel(radius) : -1;
         if (level >= 0 && addToMerge(index, p, radius, level, facing)) return;
+        appendDisc(index);
     }
     if (kClipDiscs) clipDisc(index, p, photons[index].normalDensity.xyz, radius);
 }

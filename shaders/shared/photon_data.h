@@ -94,6 +94,9 @@ ISPM_CONST int kBindingCausticList = 28;   // splat.vert: the caustic photons' d
                                            // photon_density.comp's table buffer)
 ISPM_CONST int kBindingDensityCells = 17;  // photon_density.comp's hashed grid (kDensitySlotUints
                                            // a slot)
+ISPM_CONST int kBindingDiscList = 33;      // splat.vert, radius_mode density: the count of the
+                                           // discs drawn (x of a uvec4), then their photons'
+                                           // indices (photon_density.comp's table buffer)
 
 // Splat shapes (setting splat_shape, checked against the table in frame_settings.cpp), and the
 // indices a photon's instance draws: the box's 12 triangles, the disc's 2 (over the box's
@@ -195,7 +198,8 @@ struct SplatParams {
     vec4 shape;    // x = squash (thickness along the normal / radius), y = image pixels per
                    // splat-buffer pixel along an axis, zw = where the buffer's pixel (0, 0) lies
                    // in the target drawn (SplatPass::computeTargetOffset)
-    uvec4 photons; // x = which photons the draw takes (kSplat*Photons), yzw unused
+    uvec4 photons; // x = which photons the draw takes (kSplat*Photons), y = 1: its instances are
+                   // the density pass's list of discs (kBindingDiscList), zw unused
 };
 ISPM_STATIC_ASSERT_SIZE(SplatParams, 48);
 
@@ -210,6 +214,11 @@ ISPM_CONST uint kDensityStageTravelPower = 3u;
 // (photon_density.comp): the radius stage sums them per merge cell, this stage makes one of them
 // the cell's disc and collapses the others.
 ISPM_CONST uint kDensityStageMerge = 4u;
+// radius_mode density: once the last stage has listed the discs to draw (the photons in view
+// that keep a disc of their own, caustic ones apart), this one-invocation stage splits their
+// count into the splat draws' commands, so the splat draws those alone: a merged cell's
+// collapsed photons and the photons outside the view draw no instance.
+ISPM_CONST uint kDensityStageDiscDraws = 5u;
 // Merge cells share the density table with the counting cells, keyed at levels past this (their
 // sums), and past twice this (their radii).
 ISPM_CONST uint kDensityMergeLevelOffset = 32u;
@@ -269,8 +278,13 @@ struct DensityParams {
                    // photon order's first uint in the cells (photon_order.comp), 0: index order;
                    // w = the caustic list's first uint in the cells (its draw command)
     vec4 view;     // surface_ends: x = the splat's squash; yzw unused
+    uvec4 discs;   // radius_mode density: x = the disc list's first uint in the cells (its draw
+                   // commands, kMaxSplatDraws x kSplatDrawUvec4s uvec4s, then its count and
+                   // indices: kDiscListHeaderUints), y = splat draws, z = indices a splat draws
 };
-ISPM_STATIC_ASSERT_SIZE(DensityParams, 96);
+ISPM_STATIC_ASSERT_SIZE(DensityParams, 112);
+// The disc list's commands before its count (uints).
+ISPM_CONST uint kDiscListHeaderUints = kMaxSplatDraws * kSplatDrawUvec4s * 4u;
 
 ISPM_NAMESPACE_END
 

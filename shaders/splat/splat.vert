@@ -16,6 +16,10 @@ layout(std430, binding = kBindingCausticList) readonly buffer CausticList {
     uvec4 causticDraw[kSplatDrawUvec4s];
     uint causticPhotons[];
 };
+layout(std430, binding = kBindingDiscList) readonly buffer DiscList {
+    uvec4 discCount; // x
+    uint discPhotons[];
+};
 
 #include "lib/splat_kernel.glsl"
 
@@ -38,11 +42,13 @@ flat out uint vWedges[kClipRays];
 // The disc uses corners 0-3 and lies in the surface plane; the box all 8.
 
 void main() {
-    uint stored = counters.splatDraw.y;
-    // The caustic draw's instances are the density pass's list of caustic photons in view.
-    uint id = params.photons.x == kSplatCausticPhotons
-                  ? causticPhotons[gl_InstanceID]
-                  : stored * params.control.z / params.control.w + uint(gl_InstanceID);
+    // The caustic draw's instances are the density pass's list of caustic photons in view; in
+    // radius_mode density the other draws' are its list of discs, each draw a slice of it.
+    uint listed = params.photons.y != 0u ? discCount.x : counters.splatDraw.y;
+    uint first = listed * params.control.z / params.control.w + uint(gl_InstanceID);
+    uint id = params.photons.x == kSplatCausticPhotons ? causticPhotons[gl_InstanceID]
+              : params.photons.y != 0u                 ? discPhotons[first]
+                                                       : first;
     ResultPhoton photon = photons[id];
     vec3 n = photon.normalDensity.xyz;
     vec3 t;

@@ -55,6 +55,8 @@ struct DensityRun {
     std::vector<uint32_t> order;            // the radius stage's photon order (with clip lines)
     Aabb bounds;                            // the scene's, which the order's grid spans
     size_t tableBytes = 0;                  // the hashed grid the pass cleared and used
+    std::vector<uint32_t> discs;            // density radii: the photons the splat draws
+    glm::uvec4 discDraw{0u};                // and the first draw's command
 };
 
 // Runs the density pass alone on `photons`, with the frame of `scene` (camera, BVH); `travelM`
@@ -103,8 +105,25 @@ DensityRun runDensity(const Scene& scene, std::vector<gpu::ResultPhoton> photons
         density.getCausticList().download(density.getOrderOffset(), count * sizeof(uint32_t),
                                           order.data());
     }
-    return {buffers.getResult().read<gpu::ResultPhoton>(count), clip, order,
-            runner.getGpuScene().getBounds(), density.getCausticOffset()};
+    std::vector<uint32_t> discs;
+    glm::uvec4 discDraw(0u);
+    if (!travelM) {
+        glm::uvec4 listed(0u);
+        density.getCausticList().download(density.getDiscCountOffset(), sizeof(listed), &listed);
+        discs.resize(std::min(listed.x, count));
+        if (!discs.empty()) {
+            density.getCausticList().download(density.getDiscCountOffset() + sizeof(listed),
+                                              discs.size() * sizeof(uint32_t), discs.data());
+        }
+        density.getCausticList().download(density.getDiscOffset(), sizeof(discDraw), &discDraw);
+    }
+    return {buffers.getResult().read<gpu::ResultPhoton>(count),
+            clip,
+            order,
+            runner.getGpuScene().getBounds(),
+            density.getCausticOffset(),
+            discs,
+            discDraw};
 }
 
 // The median radius of the photons inside [lo, hi] on x and z.
@@ -224,6 +243,41 @@ TEST_F(PhotonDensityTest, MergedDiscsKeepThePowerItsCentreAndTheSpread) {
     EXPECT_LT(discsMerged, photons.size() / 2);
     EXPECT_GE(loMerged, loWhole);
     EXPECT_LE(hiMerged, hiWhole);
+}
+
+// The splat draws the density pass's list of discs, not every stored photon: each photon that
+// keeps a disc of its own (in view, not merged into another's, not caustic) is listed once, no
+// other, and the draw's command carries their count.
+TEST_F(PhotonDensityTest, SplatDrawsTheListedDiscsAlone) {
+    std::vector<gpu::ResultPhoton> photons;
+    addSquare(photons, -0.5f, -0.5f, 1.0f, 60, 3u);
+    // Photons outside the view (the camera looks down at the origin from 6 m, 90 degrees): no disc.
+    addSquare(photons, 20.0f, 20.0f, 1.0f, 10, 3u);
+    for (float merge : {0.0f, 1.0f}) {
+        const DensityRun run = runDensity(makeFloorScene(), photons, {}, std::nullopt, merge);
+        std::vector<int> listed(photons.size(), 0);
+        for (uint32_t i : run.discs) {
+            ASSERT_LT(i, photons.size());
+            ++listed[i];
+        }
+        size_t drawn = 0;
+        for (size_t i = 0; i < photons.size(); ++i) {
+            const gpu::ResultPhoton& p = run.photons[i];
+            const bool keepsDisc = p.power.w > 0.0f && p.power.x > 0.0f;
+            drawn += keepsDisc ? 1 : 0;
+            EXPECT_EQ(listed[i], keepsDisc ? 1 : 0) << "photon " << i << ", splat_merge " << merge;
+        }
+        std::printf("splat_merge %.0f: %zu discs listed of %zu photons\n", double(merge),
+                    run.discs.size(), photons.size());
+        EXPECT_EQ(run.discs.size(), drawn);
+        EXPECT_EQ(run.discDraw.x, gpu::getSplatIndexCount(gpu::kSplatShapeDisc));
+        EXPECT_EQ(run.discDraw.y, uint32_t(drawn)); // one draw: every listed disc
+        // The far square is culled; merged, far fewer discs than photons remain.
+        EXPECT_LE(drawn, size_t(60 * 60));
+        if (merge > 0.0f) {
+            EXPECT_LT(drawn, size_t(60 * 60 / 2));
+        }
+    }
 }
 
 TEST_F(PhotonDensityTest, RadiusStageTakesEveryPhotonOnceInSpatialOrder) {
