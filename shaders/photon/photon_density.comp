@@ -20,8 +20,11 @@
 //
 // Stage 1 also culls photons whose disc lies outside the view frustum (radius 0: the splat skips
 // them). With SURFACE_ENDS 1 (surface_ends, without clip lines) stage 1 or 2 divides each
-// photon's power by the share of its disc that the viewer G-buffer shows a surface for. With MERGE_DISCS 1 (splat_merge) it adds each photon to its merge cell, and stage 4
-// draws each cell's photons as one disc (mergePhoton). With CLIP_DISCS 1 (splat_clip) stage 1
+// photon's power by the share of its disc that the viewer G-buffer shows a surface for. With
+// MERGE_DISCS 1 (splat_merge) stage 1 adds each photon to its merge cell, and stage 4 draws each
+// cell's photons as one disc (mergePhoton). Stage 1, and with MERGE_DISCS stage 4, list the
+// photons that keep a disc of their own (appendDisc), and stage 5 writes the splat's draws of
+// that list. With CLIP_DISCS 1 (splat_clip) stage 1
 // or 2 finds the lines where surfaces cut each disc in view (shared/splat_clip.h): the in-plane
 // rays of the clip, met against the triangles of one BVH box query around the disc.
 #include "lib/constants.glsl"
@@ -463,9 +466,9 @@ bool isSeenPast(vec3 q, vec3 p, vec3 n, float radius) {
 // points on two rings of kSurfaceRingPoints: at 0.366 r and 0.707 r, the middles (by kernel
 // mass) of the inner and outer halves of the kernel (2 s^2 - s^4 of it lies within s r: 1/4 and
 // 3/4 there), the second ring turned half a step against the first, both by a hash of the
-// photon's position. At least kMinKeptMass, as splat_clip's kept mass. Dividing the photon's power by it keeps
-// that power on the surfaces the viewer sees: a disc reaching past a wall's edge into the air
-// lost it there, and the wall's rim came out dark.
+// photon's position. At least kMinKeptMass, as splat_clip's kept mass. Dividing the photon's
+// power by it keeps that power on the surfaces the viewer sees: a disc reaching past a wall's
+// edge into the air lost it there, and the wall's rim came out dark.
 const uint kSurfaceRingPoints = 4u;
 float computeSurfaceShare(vec3 p, vec3 n, float radius) {
     vec3 t;
@@ -553,7 +556,8 @@ void mergePhoton(uint index) {
         radius = sqrt(uintBitsToFloat(cells[radii + 1u]) / weight);
         photons[index].power = vec4(power, radius);
         photons[index].positionDistance.xyz = p;
-        appendDisc(index); // the cell's disc (a photon without a cell was listed by the radius stage)
+        // The cell's disc (a photon without a cell was listed by the radius stage).
+        appendDisc(index);
     }
     if (kClipDiscs) clipDisc(index, p, n, radius);
 }
