@@ -30,9 +30,6 @@ constexpr float kMaxRadiusFactor = 4.0f;
 // alignment the GL allows (GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT), so splat.vert can bind
 // the disc list by range.
 constexpr size_t kListAlignment = 256;
-// The disc list's draw commands, then its count (a uvec4).
-constexpr size_t kDiscHeaderBytes =
-    gpu::kDiscListHeaderUints * sizeof(uint32_t) + sizeof(glm::uvec4);
 // Hashed slots per stored photon: each photon lands in one cell per level, distinct at the
 // finest few levels; 8 slots keep the table under 70% full at capacity.
 constexpr uint32_t kSlotsPerPhoton = 8;
@@ -57,6 +54,10 @@ PhotonDensityPass::PhotonDensityPass(PhotonBuffers& buffers, const GBuffer& view
                  .defines = getGBufferDefines()}),
       mOrderPrograms({.label = "photon order",
                       .stages = {{gl::ShaderStage::Compute, "photon/photon_order.comp"}}}),
+      mDiscDraws({.label = "photon prepare (discs)",
+                  .stages = {{gl::ShaderStage::Compute, "photon/photon_prepare.comp"}},
+                  .defines = {"DISC_DRAWS 1"}}),
+      mPrepareParams("photon prepare parameters (discs)", sizeof(gpu::PrepareParams)),
       mParams("photon density parameters", sizeof(gpu::DensityParams)),
       mOrderParams("photon order parameters", sizeof(gpu::OrderParams)) {}
 
@@ -188,8 +189,8 @@ void PhotonDensityPass::executeSlice(const FrameInputs& inputs, uint32_t stage, 
         std::bit_ceil(std::max(mBuffers.getFrameResults(), 1u) * kSlotsPerPhoton);
     // The table (a slot is 32 bytes), with splat_clip the radius stage's order's counts (one
     // per grid cell, zeroed with the table), the caustic photons' draw command and list (at an
-    // offset that suits any storage-buffer alignment up to 32 x slots), the discs' draw commands,
-    // count and list (at a multiple of kListAlignment), then with splat_clip the order's photon
+    // offset that suits any storage-buffer alignment up to 32 x slots), the discs' count (a
+    // uvec4) and list (at a multiple of kListAlignment), then with splat_clip the order's photon
     // indices.
     const bool ordered = inputs.settings.splatClip;
     const size_t capacity = std::max(mBuffers.getFrameResults(), 1u);
@@ -198,7 +199,7 @@ void PhotonDensityPass::executeSlice(const FrameInputs& inputs, uint32_t stage, 
     const size_t causticEnd =
         mCausticOffset + gpu::kSplatDrawUvec4s * sizeof(glm::uvec4) + capacity * sizeof(uint32_t);
     mDiscOffset = (causticEnd + kListAlignment - 1) / kListAlignment * kListAlignment;
-    const size_t orderOffset = mDiscOffset + kDiscHeaderBytes + capacity * sizeof(uint32_t);
+    const size_t orderOffset = mDiscOffset + sizeof(glm::uvec4) + capacity * sizeof(uint32_t);
     const size_t cellBytes = orderOffset + (ordered ? capacity * sizeof(uint32_t) : 0);
     // Grows only (a budget that adapts to the frame time moves the layout every few frames); the
     // layout above follows this frame's photons, so a smaller frame clears a smaller table.
@@ -212,9 +213,9 @@ void PhotonDensityPass::executeSlice(const FrameInputs& inputs, uint32_t stage, 
         const glm::uvec4 draw[gpu::kSplatDrawUvec4s] = {
             {gpu::getSplatIndexCount(inputs.settings.splatShape), 0, 0, 0}, {0, 0, 0, 0}};
         mCells.upload(mCausticOffset, sizeof(draw), draw);
-        // The discs' count (their commands are written from it).
+        // The discs' count (the splat's commands are written from it).
         const glm::uvec4 none(0u);
-        mCells.upload(getDiscCountOffset(), sizeof(none), &none);
+        mCells.upload(mDiscOffset, sizeof(none), &none);
         if (ordered)
             sortPhotons(inputs, countsOffset / sizeof(uint32_t), orderOffset / sizeof(uint32_t));
     }
@@ -243,8 +244,7 @@ void PhotonDensityPass::executeSlice(const FrameInputs& inputs, uint32_t stage, 
     params.slice.z = uint32_t(mOrderOffset / sizeof(uint32_t));
     params.slice.w = uint32_t(mCausticOffset / sizeof(uint32_t));
     params.view = glm::vec4(inputs.settings.squash, 0.0f, 0.0f, 0.0f);
-    params.discs = glm::uvec4(uint32_t(mDiscOffset / sizeof(uint32_t)), inputs.splatDraws,
-                              gpu::getSplatIndexCount(inputs.settings.splatShape), 0u);
+    params.discs = glm::uvec4(uint32_t(mDiscOffset / sizeof(uint32_t)), 0u, 0u, 0u);
     mParams.upload(0, sizeof(params), &params);
 
     mBuffers.bind();
@@ -264,8 +264,14 @@ void PhotonDensityPass::executeSlice(const FrameInputs& inputs, uint32_t stage, 
     // the caustic list, its draw the caustic photons' count.
     gl::memoryBarrier(gl::Barrier::Storage | gl::Barrier::Command);
     if (stage + 1 == getStageCount(inputs.settings) && slice + 1 == slices) {
-        // The discs are listed: their draws' commands from their count.
-        useStage(gpu::kDensityStageDiscDraws, inputs.settings);
+        // The discs are listed: the splat's draws take them alone.
+        gpu::PrepareParams prepare{};
+        prepare.control = glm::uvec4(0u, 0u, gpu::kPrepareStageDiscDraws, inputs.splatDraws);
+        mPrepareParams.upload(0, sizeof(prepare), &prepare);
+        mPrepareParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
+        mCells.bindRange(gl::BufferTarget::Storage, gpu::kBindingDiscList, mDiscOffset,
+                         mCells.getSize() - mDiscOffset);
+        mDiscDraws.use();
         gl::dispatchCompute(1);
         gl::memoryBarrier(gl::Barrier::Storage | gl::Barrier::Command);
     }

@@ -44,6 +44,7 @@ class PhotonDensityPass final : public Pass {
     void reloadPrograms(ShaderReloadReport& report) override {
         mPrograms.reloadIfChanged(report);
         mOrderPrograms.reloadIfChanged(report);
+        mDiscDraws.reloadIfChanged(report);
         mZeroFill.reloadIfChanged(report);
     }
     // Per result photon: its disc's clip lines and box extents (shared/splat_clip.h), written
@@ -55,13 +56,10 @@ class PhotonDensityPass final : public Pass {
     const gl::Buffer& getCausticList() const { return mCells; }
     size_t getCausticOffset() const { return mCausticOffset; }
     // radius_mode density: the discs the splat draws (photons in view that keep a disc of their
-    // own, not caustic), in the same buffer: at getDiscOffset() bytes the draw commands of the
-    // splat's draws (kSplatDrawUvec4s uvec4s each), at getDiscCountOffset() their count (x of a
-    // uvec4) and then their photons' indices (kBindingDiscList binds from there).
+    // own, not caustic), in the same buffer at this many bytes: their count (x of a uvec4), then
+    // their photons' indices (bound at kBindingDiscList for splat.vert). The last stage rewrites
+    // the splat's draw commands (PhotonBuffers::getSplatDraws) over them.
     size_t getDiscOffset() const { return mDiscOffset; }
-    size_t getDiscCountOffset() const {
-        return mDiscOffset + gpu::kDiscListHeaderUints * sizeof(uint32_t);
-    }
     // splat_clip (radius_mode density): the stored photons' indices in the order the radius
     // stage took them (photon_order.comp), at this many bytes into getCausticList()'s buffer;
     // 0 without splat_clip.
@@ -95,6 +93,8 @@ class PhotonDensityPass final : public Pass {
     // By stage (DENSITY_STAGE), CLIP_DISCS, WIDEN_STRONG, MERGE_DISCS, SURFACE_ENDS.
     ProgramVariants mPrograms;
     ProgramVariants mOrderPrograms; // by stage (ORDER_STAGE)
+    ReloadableProgram mDiscDraws;   // photon_prepare.comp's stage kPrepareStageDiscDraws
+    gl::Buffer mPrepareParams;      // gpu::PrepareParams of that stage
     ZeroFill mZeroFill;             // clears the table each frame
     gl::Buffer mParams;             // gpu::DensityParams
     gl::Buffer mOrderParams;        // gpu::OrderParams

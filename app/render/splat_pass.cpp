@@ -251,7 +251,7 @@ void SplatPass::bindRaster(const FrameInputs& inputs) {
     if (offset < list.getSize())
         list.bindRange(gl::BufferTarget::Storage, gpu::kBindingCausticList, offset,
                        list.getSize() - offset);
-    const size_t discs = mDensity.getDiscCountOffset();
+    const size_t discs = mDensity.getDiscOffset();
     if (drawsDiscList(inputs) && discs < list.getSize())
         list.bindRange(gl::BufferTarget::Storage, gpu::kBindingDiscList, discs,
                        list.getSize() - discs);
@@ -263,15 +263,10 @@ bool SplatPass::drawsDiscList(const FrameInputs& inputs) {
     return inputs.settings.radiusMode == gpu::kRadiusDensity;
 }
 
-void SplatPass::drawSplats(const FrameInputs& inputs, uint32_t p) {
+void SplatPass::drawSplats(uint32_t p) {
     mParams.bind(p);
-    const size_t command = p * gpu::kSplatDrawUvec4s * sizeof(glm::uvec4);
-    if (drawsDiscList(inputs)) {
-        gl::drawElementsIndirect(gl::Primitive::Triangles, mDensity.getCausticList(),
-                                 mDensity.getDiscOffset() + command);
-    } else {
-        gl::drawElementsIndirect(gl::Primitive::Triangles, mBuffers.getSplatDraws(), command);
-    }
+    gl::drawElementsIndirect(gl::Primitive::Triangles, mBuffers.getSplatDraws(),
+                             p * gpu::kSplatDrawUvec4s * sizeof(glm::uvec4));
 }
 
 void SplatPass::drawCaustics(const FrameInputs& inputs) {
@@ -301,7 +296,7 @@ void SplatPass::executeDraws(const FrameInputs& inputs, uint32_t firstDraw, uint
         mFramebuffer.bind();
     }
     for (uint32_t p = firstDraw; p < firstDraw + drawCount; ++p)
-        drawSplats(inputs, p);
+        drawSplats(p);
     if (atOffset && firstDraw + drawCount == inputs.splatDraws)
         mIndirect.copyFrom(mTarget, offset.x, offset.y);
     // The caustic photons (few, small discs) in one draw, with the first slice.

@@ -86,9 +86,9 @@ class SplatPass final : public Pass {
     // Binds what every raster draw reads and sets the blend and cull state.
     void bindRaster(const FrameInputs& inputs);
     // Draw p of inputs.splatDraws with parameter block p.
-    void drawSplats(const FrameInputs& inputs, uint32_t p);
+    void drawSplats(uint32_t p);
     // radius_mode density: the raster's draws take the density pass's disc list (getDiscOffset)
-    // instead of every stored photon.
+    // instead of every stored photon (the density pass wrote their commands).
     static bool drawsDiscList(const FrameInputs& inputs);
     // The caustic photons' draw, into the caustic buffer (its block follows the draws').
     void drawCaustics(const FrameInputs& inputs);

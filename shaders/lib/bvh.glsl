@@ -60,9 +60,10 @@ vec3 safeInverse(vec3 d) {
 // the farther one on the stack with its entry distance. A kept node is dropped when popped if the
 // hits found since lie before that distance (the box is not fetched or tested again). The stack
 // holds node indices and entry distances (a stack per invocation: on a GPU a larger one costs
-// occupancy). Expects stack, stackT, top, invDir, hit and current in scope; `nodes` is the
-// level's array. ISPM_BVH_DESCEND sets `descended` when a child is entered (current is then that
-// child); ISPM_BVH_POP sets `popped` when a kept node still counts (current is then that node).
+// occupancy). Expects stack, stackT, top, invDir, hit and current in scope, inside the level's
+// loop over `current`; `nodes` is the level's array. ISPM_BVH_DESCEND goes on (continue) into the
+// nearer child of interior node (a, b) the ray enters, if any; ISPM_BVH_POP goes on with the last
+// kept node that still counts, or ends the loop (break).
 #define ISPM_BVH_DESCEND(nodes, a, b, origin)                                                      \
     {                                                                                              \
         GpuBvhNode childA = nodes[a];                                                              \
@@ -76,18 +77,19 @@ vec3 safeInverse(vec3 d) {
             stackT[top] = tFar;                                                                    \
             ++top;                                                                                 \
         }                                                                                          \
-        descended = min(tA, tB) < kNoHitDistance;                                                  \
         current = aFirst ? a : b;                                                                  \
+        if (min(tA, tB) < kNoHitDistance) continue;                                                \
     }
 
 #define ISPM_BVH_POP()                                                                             \
     {                                                                                              \
-        popped = false;                                                                            \
+        bool popped = false;                                                                       \
         while (top > 0 && !popped) {                                                               \
             --top;                                                                                 \
             popped = stackT[top] < hit.t;                                                          \
             current = stack[top];                                                                  \
         }                                                                                          \
+        if (!popped) break;                                                                        \
     }
 
 // Closest hit in one instance (updates hit when closer than hit.t); with anyHit, the first hit
@@ -124,13 +126,9 @@ bool intersectInstance(uint instanceIndex, vec3 originW, vec3 dirW, inout RayHit
                 }
             }
         } else {
-            bool descended;
             ISPM_BVH_DESCEND(blasNodes, a, b, origin)
-            if (descended) continue;
         }
-        bool popped;
         ISPM_BVH_POP()
-        if (!popped) break;
     }
     return found;
 }
@@ -161,13 +159,9 @@ bool traceRayWith(vec3 origin, vec3 dir, float tMax, bool anyHit, out RayHit hit
                 if (anyHit && found) return true;
             }
         } else {
-            bool descended;
             ISPM_BVH_DESCEND(tlasNodes, a, b, origin)
-            if (descended) continue;
         }
-        bool popped;
         ISPM_BVH_POP()
-        if (!popped) break;
     }
     return found;
 }

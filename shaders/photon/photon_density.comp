@@ -23,8 +23,8 @@
 // photon's power by the share of its disc that the viewer G-buffer shows a surface for. With
 // MERGE_DISCS 1 (splat_merge) stage 1 adds each photon to its merge cell, and stage 4 draws each
 // cell's photons as one disc (mergePhoton). Stage 1, and with MERGE_DISCS stage 4, list the
-// photons that keep a disc of their own (appendDisc), and stage 5 writes the splat's draws of
-// that list. With CLIP_DISCS 1 (splat_clip) stage 1
+// photons that keep a disc of their own (appendDisc), for photon_prepare.comp to turn into the
+// splat's draws. With CLIP_DISCS 1 (splat_clip) stage 1
 // or 2 finds the lines where surfaces cut each disc in view (shared/splat_clip.h): the in-plane
 // rays of the clip, met against the triangles of one BVH box query around the disc.
 #include "lib/constants.glsl"
@@ -111,26 +111,10 @@ const float kExtentOne = 16777216.0; // 2^24: a whole cell in the extent words
 // radius_mode density: photon `index` keeps a disc of its own (not collapsed into its merge cell's,
 // not a caustic photon: those have their list): the splat draws it.
 void appendDisc(uint index) {
-    uint list = params.discs.x + kDiscListHeaderUints;
-    uint at = atomicAdd(cells[list], 1u);
-    cells[list + 4u + at] = index;
+    uint at = atomicAdd(cells[params.discs.x], 1u);
+    cells[params.discs.x + 4u + at] = index;
 }
 
-// kDensityStageDiscDraws: the disc count split into the splat draws' commands (count,
-// instanceCount, firstIndex, baseVertex, baseInstance); splat.vert finds a draw's first disc
-// from the count.
-void writeDiscDraws() {
-    uint discs = cells[params.discs.x + kDiscListHeaderUints];
-    uint draws = params.discs.y;
-    for (uint p = 0u; p < draws; ++p) {
-        uint at = params.discs.x + p * kSplatDrawUvec4s * 4u;
-        cells[at] = params.discs.z;
-        cells[at + 1u] = discs * (p + 1u) / draws - discs * p / draws;
-        cells[at + 2u] = 0u;
-        cells[at + 3u] = 0u;
-        cells[at + 4u] = 0u;
-    }
-}
 
 void appendCausticPhoton(uint index) {
     uint list = params.slice.w;
@@ -563,10 +547,6 @@ void mergePhoton(uint index) {
 }
 
 void main() {
-    if (kStage == kDensityStageDiscDraws) {
-        if (gl_GlobalInvocationID.x == 0u) writeDiscDraws();
-        return;
-    }
     uvec2 range = computeSliceRange(counters.splatDraw.y, params.slice.x, params.slice.y);
     uint at = range.x + gl_GlobalInvocationID.x;
     if (at >= range.y) return;

@@ -1,6 +1,7 @@
 // Between passes, on the GPU: after emission, turn the bounce count into the trace dispatch and
 // reset the result counters; after tracing, split the result photons into the splat passes' draw
-// commands (glDrawElementsIndirect: count, instanceCount, firstIndex, baseVertex, baseInstance).
+// commands (glDrawElementsIndirect: count, instanceCount, firstIndex, baseVertex, baseInstance);
+// in radius_mode density, after the density pass, split its list of discs into them instead.
 #include "shared/photon_data.h"
 #include "shared/scene_data.h"
 
@@ -9,8 +10,20 @@ layout(std430, binding = kBindingPhotonCounters) buffer CounterBuffer { PhotonCo
 layout(std430, binding = kBindingSplatDraws) writeonly buffer SplatDrawBuffer { uvec4 splatDraws[]; };
 
 layout(std140, binding = kBindingPassParams) uniform PrepareParamsBlock { PrepareParams params; };
+#ifndef DISC_DRAWS
+#define DISC_DRAWS 0
+#endif
+#if DISC_DRAWS // the program of stage kPrepareStageDiscDraws: the list is bound then
+layout(std430, binding = kBindingDiscList) readonly buffer DiscList { uvec4 discCount; };
+#endif
 
 void main() {
+#if DISC_DRAWS
+    // The same indices a splat as the stage before gave the draws.
+    for (uint p = 0u; p < params.control.w; ++p)
+        splatDraws[kSplatDrawUvec4s * p] = makeSplatDraw(counters.splatDraw.x, discCount.x, p, params.control.w);
+    return;
+#endif
     if (params.control.z == kPrepareStageBeforeTrace) {
         uint bounced = min(counters.bounce.x, params.control.y);
         counters.bounce.x = bounced;
@@ -22,10 +35,7 @@ void main() {
     counters.splatDraw = uvec4(params.splat.x, stored, 0u, 0u);
     counters.densityDispatch = uvec4((stored + kTraceGroupSize - 1u) / kTraceGroupSize, 1u, 1u, 0u);
     for (uint p = 0u; p < params.control.w; ++p) {
-        uint begin = stored * p / params.control.w;
-        uint end = stored * (p + 1u) / params.control.w;
-        // baseInstance is left 0: the vertex stage adds the pass's first photon itself.
-        splatDraws[kSplatDrawUvec4s * p] = uvec4(params.splat.x, end - begin, 0u, 0u);
+        splatDraws[kSplatDrawUvec4s * p] = makeSplatDraw(params.splat.x, stored, p, params.control.w);
         splatDraws[kSplatDrawUvec4s * p + 1u] = uvec4(0u);
     }
 }

@@ -69,6 +69,13 @@ ISPM_INLINE uvec2 computeSliceRange(uint count, uint slice, uint slices) {
     uint begin = share * slice + min(slice, extra);
     return uvec2(begin, begin + share + (slice < extra ? 1u : 0u));
 }
+// Splat draw `draw` of `draws` over `count` instances, each of `indices` indices: the first uvec4
+// of its indexed draw command (count, instanceCount, firstIndex, baseVertex; the next uvec4 holds
+// baseInstance, 0: splat.vert finds the draw's first instance by computeSliceRange itself).
+ISPM_INLINE uvec4 makeSplatDraw(uint indices, uint count, uint draw, uint draws) {
+    uvec2 range = computeSliceRange(count, draw, draws);
+    return uvec4(indices, range.y - range.x, 0u, 0u);
+}
 // Slices of the trace or the density pass in one frame, at most.
 ISPM_CONST uint kMaxComputeSlices = 64u;
 ISPM_CONST uint kMaxSplatPasses = 64u; // the splat_passes setting's range
@@ -94,9 +101,10 @@ ISPM_CONST int kBindingCausticList = 28;   // splat.vert: the caustic photons' d
                                            // photon_density.comp's table buffer)
 ISPM_CONST int kBindingDensityCells = 17;  // photon_density.comp's hashed grid (kDensitySlotUints
                                            // a slot)
-ISPM_CONST int kBindingDiscList = 33;      // splat.vert, radius_mode density: the count of the
-                                           // discs drawn (x of a uvec4), then their photons'
-                                           // indices (photon_density.comp's table buffer)
+ISPM_CONST int kBindingDiscList = 33;      // splat.vert and photon_prepare.comp, radius_mode
+                                           // density: the count of the discs drawn (x of a
+                                           // uvec4), then their photons' indices (in
+                                           // photon_density.comp's table buffer)
 
 // Splat shapes (setting splat_shape, checked against the table in frame_settings.cpp), and the
 // indices a photon's instance draws: the box's 12 triangles, the disc's 2 (over the box's
@@ -153,9 +161,13 @@ ISPM_CONST uint kDensityProbes = 32u; // open addressing gives up after this man
 ISPM_CONST uint kDensitySlotUints = 8u;
 
 // photon_prepare.comp's stages: before tracing (bounce count -> trace dispatch, result counters
-// reset), before splatting (result count -> splat draws and the density dispatch).
+// reset), before splatting (result count -> splat draws and the density dispatch), and in
+// radius_mode density after the density pass (its list of discs -> splat draws: the photons in
+// view that keep a disc of their own, caustic ones apart, so that a merged cell's collapsed
+// photons and the photons outside the view draw no instance).
 ISPM_CONST uint kPrepareStageBeforeTrace = 0u;
 ISPM_CONST uint kPrepareStageBeforeSplat = 1u;
+ISPM_CONST uint kPrepareStageDiscDraws = 2u;
 
 // Parameters of photon_prepare.comp (std140, at kBindingPassParams).
 struct PrepareParams {
@@ -214,11 +226,6 @@ ISPM_CONST uint kDensityStageTravelPower = 3u;
 // (photon_density.comp): the radius stage sums them per merge cell, this stage makes one of them
 // the cell's disc and collapses the others.
 ISPM_CONST uint kDensityStageMerge = 4u;
-// radius_mode density: once the last stage has listed the discs to draw (the photons in view
-// that keep a disc of their own, caustic ones apart), this one-invocation stage splits their
-// count into the splat draws' commands, so the splat draws those alone: a merged cell's
-// collapsed photons and the photons outside the view draw no instance.
-ISPM_CONST uint kDensityStageDiscDraws = 5u;
 // Merge cells share the density table with the counting cells, keyed at levels past this (their
 // sums), and past twice this (their radii).
 ISPM_CONST uint kDensityMergeLevelOffset = 32u;
@@ -278,13 +285,10 @@ struct DensityParams {
                    // photon order's first uint in the cells (photon_order.comp), 0: index order;
                    // w = the caustic list's first uint in the cells (its draw command)
     vec4 view;     // surface_ends: x = the splat's squash; yzw unused
-    uvec4 discs;   // radius_mode density: x = the disc list's first uint in the cells (its draw
-                   // commands, kMaxSplatDraws x kSplatDrawUvec4s uvec4s, then its count and
-                   // indices: kDiscListHeaderUints), y = splat draws, z = indices a splat draws
+    uvec4 discs;   // radius_mode density: x = the disc list's first uint in the cells (its count,
+                   // then 3 unused uints, then the indices); yzw unused
 };
 ISPM_STATIC_ASSERT_SIZE(DensityParams, 112);
-// The disc list's commands before its count (uints).
-ISPM_CONST uint kDiscListHeaderUints = kMaxSplatDraws * kSplatDrawUvec4s * 4u;
 
 ISPM_NAMESPACE_END
 

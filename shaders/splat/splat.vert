@@ -45,7 +45,7 @@ void main() {
     // The caustic draw's instances are the density pass's list of caustic photons in view; in
     // radius_mode density the other draws' are its list of discs, each draw a slice of it.
     uint listed = params.photons.y != 0u ? discCount.x : counters.splatDraw.y;
-    uint first = listed * params.control.z / params.control.w + uint(gl_InstanceID);
+    uint first = computeSliceRange(listed, params.control.z, params.control.w).x + uint(gl_InstanceID);
     uint id = params.photons.x == kSplatCausticPhotons ? causticPhotons[gl_InstanceID]
               : params.photons.y != 0u                 ? discPhotons[first]
                                                        : first;

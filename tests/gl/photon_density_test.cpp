@@ -56,7 +56,7 @@ struct DensityRun {
     Aabb bounds;                            // the scene's, which the order's grid spans
     size_t tableBytes = 0;                  // the hashed grid the pass cleared and used
     std::vector<uint32_t> discs;            // density radii: the photons the splat draws
-    glm::uvec4 discDraw{0u};                // and the first draw's command
+    glm::uvec4 discDraw{0u};                // and the splat's first draw command over them
 };
 
 // Runs the density pass alone on `photons`, with the frame of `scene` (camera, BVH); `travelM`
@@ -109,13 +109,13 @@ DensityRun runDensity(const Scene& scene, std::vector<gpu::ResultPhoton> photons
     glm::uvec4 discDraw(0u);
     if (!travelM) {
         glm::uvec4 listed(0u);
-        density.getCausticList().download(density.getDiscCountOffset(), sizeof(listed), &listed);
+        density.getCausticList().download(density.getDiscOffset(), sizeof(listed), &listed);
         discs.resize(std::min(listed.x, count));
         if (!discs.empty()) {
-            density.getCausticList().download(density.getDiscCountOffset() + sizeof(listed),
+            density.getCausticList().download(density.getDiscOffset() + sizeof(listed),
                                               discs.size() * sizeof(uint32_t), discs.data());
         }
-        density.getCausticList().download(density.getDiscOffset(), sizeof(discDraw), &discDraw);
+        buffers.getSplatDraws().download(0, sizeof(discDraw), &discDraw);
     }
     return {buffers.getResult().read<gpu::ResultPhoton>(count),
             clip,
