@@ -8,7 +8,7 @@
 // than kDirectEdgeContrast of the brightest (a shadow's or a spot cone's edge; a smooth gradient
 // does not bend). Each listed pixel carries how many times edge_shade.comp halves its samples, by
 // its need (shared/scene_data.h). Counts edge_shade.comp's work groups as it lists: one for every
-// kDirectEdgeGroupSize-th pixel.
+// kDirectEdgePixelsPerGroup-th pixel.
 #include "lib/frame_constants.glsl"
 
 #include "lib/viewer_gbuffer.glsl"
@@ -88,5 +88,5 @@ void main() {
     uint halvings = computeHalvings(own, lowest, highest);
     uint index = atomicAdd(header.pixels, 1u);
     edgePixels[index] = (uint(pixel.y) * uint(size.x) + uint(pixel.x)) | (halvings << kDirectEdgeHalvingShift);
-    if (index % kDirectEdgeGroupSize == 0u) atomicAdd(header.groupsX, 1u);
+    if (index % kDirectEdgePixelsPerGroup == 0u) atomicAdd(header.groupsX, 1u);
 }

@@ -8,6 +8,14 @@
 // hit a surface (compose.frag shows the background in the rest). The reference path tracer's box
 // filter, so silhouettes, creases and shadow edges come out as it draws them. Emission stays the
 // centre's (compose.frag).
+//
+// kDirectEdgeLanes invocations share a pixel, each taking every kDirectEdgeLanes-th sample: rays
+// through one pixel take the same way through the BVH side by side. They look for their surface
+// among the instances the G-buffer shows at the pixel and its eight neighbours (a box or two
+// instead of every instance the ray's path passes near); where one of those shows the
+// background, through the whole BVH, since a sliver of an instance no pixel centre shows (the
+// far ground beyond a roof's edge) may lie between. A sliver between two shown surfaces (the
+// seam of two boxes) is the one thing missed: the surface behind it is shaded instead.
 #include "lib/scene_buffers.glsl"
 #include "lib/frame_constants.glsl"
 #include "lib/bvh.glsl"
@@ -17,6 +25,8 @@
 #include "lib/direct_light.glsl"
 #include "shared/photon_scatter.h"
 
+#include "lib/viewer_gbuffer.glsl"
+
 layout(local_size_x = kDirectEdgeGroupSize) in;
 layout(binding = kImageDirect, rgba32f) uniform writeonly image2D uDirectImage;
 layout(std430, binding = kBindingDirectEdges) readonly buffer DirectEdges {
@@ -24,6 +34,40 @@ layout(std430, binding = kBindingDirectEdges) readonly buffer DirectEdges {
     uint edgePixels[];
 };
 layout(std140, binding = kBindingPassParams) uniform DirectEdgeParamsBlock { DirectEdgeParams params; };
+
+shared vec4 laneSums[kDirectEdgeGroupSize];
+
+// The instances the pixel and its eight neighbours show (each once), and whether one of them
+// shows the background.
+const uint kMaxShown = 9u;
+uint shownInstances[kMaxShown];
+uint shownCount = 0u;
+bool showsBackground = false;
+
+void findShownInstances(ivec2 pixel) {
+    for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+            ivec2 q = clamp(pixel + ivec2(dx, dy), ivec2(0), ivec2(frame.imageSize.xy) - 1);
+            float shown = texelFetch(uPosition, q, 0).w; // instance + 1; 0: the background
+            showsBackground = showsBackground || shown < 0.5;
+            if (shown < 0.5) continue;
+            uint instance = uint(shown) - 1u;
+            bool known = false;
+            for (uint k = 0u; k < shownCount; ++k) known = known || shownInstances[k] == instance;
+            if (!known) shownInstances[shownCount++] = instance;
+        }
+    }
+}
+
+// The closest hit along the ray among the shown instances, or the whole BVH's.
+bool traceEdgeRay(vec3 origin, vec3 dir, out RayHit hit) {
+    if (showsBackground) return traceRay(origin, dir, kNoHitDistance, hit);
+    hit.t = kNoHitDistance;
+    bool found = false;
+    for (uint k = 0u; k < shownCount; ++k)
+        found = intersectInstance(shownInstances[k], origin, dir, hit, false) || found;
+    return found;
+}
 
 // Bounce slot of seedRandom for a pixel's scrambling seeds (photon = pixel index).
 const uint kEdgeSeedSlot = 0xfffffffdu;
@@ -36,7 +80,7 @@ vec3 shadeThrough(vec2 point, float rayFloorM, out bool hitSurface) {
     vec3 origin = frame.cameraPosition.xyz + toNear;
     vec3 dir = normalize(toNear);
     RayHit hit;
-    hitSurface = traceRay(origin, dir, kNoHitDistance, hit);
+    hitSurface = traceEdgeRay(origin, dir, hit);
     if (!hitSurface) return vec3(0.0);
     vec3 position = origin + dir * hit.t;
     vec3 geometric = computeHitNormal(hit);
@@ -47,26 +91,33 @@ vec3 shadeThrough(vec2 point, float rayFloorM, out bool hitSurface) {
 }
 
 void main() {
-    uint index = gl_GlobalInvocationID.x;
-    if (index >= header.pixels) return;
-    uint listed = edgePixels[index];
-    uint at = listed & ((1u << kDirectEdgeHalvingShift) - 1u);
+    uint lane = gl_LocalInvocationID.x % kDirectEdgeLanes;
+    uint index = gl_WorkGroupID.x * kDirectEdgePixelsPerGroup + gl_LocalInvocationID.x / kDirectEdgeLanes;
+    bool listed = index < header.pixels;
+    uint entry = listed ? edgePixels[index] : 0u;
+    uint at = entry & ((1u << kDirectEdgeHalvingShift) - 1u);
     uint width = uint(frame.imageSize.x);
     ivec2 pixel = ivec2(at % width, at / width);
-    uint rng = seedRandom(at, kEdgeSeedSlot, frame.counts.z);
-    uint seedX = hashPcg(rng);
-    uint seedY = hashPcg(seedX);
-    uint samples = max(params.control.x >> (listed >> kDirectEdgeHalvingShift), 1u);
-    float rayFloorM = uintBitsToFloat(params.control.y);
-    vec3 sum = vec3(0.0);
-    float covered = 0.0;
-    for (uint i = 0u; i < samples; ++i) {
-        bool hitSurface;
-        uvec2 bits = computeSobolBits(i).xy;
-        vec2 u = vec2(uvec2(scrambleOwen(bits.x, seedX), scrambleOwen(bits.y, seedY)) >> 8u) *
-                 (1.0 / 16777216.0);
-        sum += shadeThrough(vec2(pixel) + u, rayFloorM, hitSurface);
-        covered += hitSurface ? 1.0 : 0.0;
+    uint samples = listed ? max(params.control.x >> (entry >> kDirectEdgeHalvingShift), 1u) : 0u;
+    vec4 sum = vec4(0.0); // radiance, surface hits
+    if (samples > lane) {
+        findShownInstances(pixel);
+        uint rng = seedRandom(at, kEdgeSeedSlot, frame.counts.z);
+        uint seedX = hashPcg(rng);
+        uint seedY = hashPcg(seedX);
+        float rayFloorM = uintBitsToFloat(params.control.y);
+        for (uint i = lane; i < samples; i += kDirectEdgeLanes) {
+            bool hitSurface;
+            uvec2 bits = computeSobolBits(i).xy;
+            vec2 u = vec2(uvec2(scrambleOwen(bits.x, seedX), scrambleOwen(bits.y, seedY)) >> 8u) *
+                     (1.0 / 16777216.0);
+            sum.rgb += shadeThrough(vec2(pixel) + u, rayFloorM, hitSurface);
+            sum.a += hitSurface ? 1.0 : 0.0;
+        }
     }
-    imageStore(uDirectImage, pixel, vec4(sum, covered) / float(samples));
+    laneSums[gl_LocalInvocationID.x] = sum;
+    barrier();
+    if (!listed || lane != 0u) return;
+    for (uint k = 1u; k < kDirectEdgeLanes; ++k) sum += laneSums[gl_LocalInvocationID.x + k];
+    imageStore(uDirectImage, pixel, sum / float(samples));
 }

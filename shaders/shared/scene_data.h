@@ -159,6 +159,10 @@ ISPM_STATIC_ASSERT_SIZE(DirectParams, 256);
 ISPM_CONST int kBindingDirectEdges = 29; // DirectEdgeHeader, then one uint per listed pixel
 ISPM_CONST int kImageDirect = 0;         // the direct light (rgba32f), rewritten at edges
 ISPM_CONST uint kDirectEdgeGroupSize = 64u;
+// edge_shade.comp shades a listed pixel with this many invocations (its samples dealt out among
+// them, their sums added in shared memory): rays through one pixel run alike, side by side.
+ISPM_CONST uint kDirectEdgeLanes = 8u;
+ISPM_CONST uint kDirectEdgePixelsPerGroup = kDirectEdgeGroupSize / kDirectEdgeLanes;
 ISPM_CONST float kDirectEdgeContrast = 0.3f; // bend of the light, as a share of the brightest
 ISPM_CONST float kDirectEdgeCos = 0.95f;     // neighbours' normals apart by more: a crease
 // A listed pixel's need: the spread of the direct light over it and its eight neighbours over
@@ -172,7 +176,7 @@ ISPM_CONST float kDirectEdgeHalfNeed = 1.0f;
 ISPM_CONST float kDirectEdgeNeedEpsilon = 0.01f; // the rel MSE's epsilon (image/metrics.h)
 ISPM_CONST uint kDirectEdgeHalvingShift = 30u;   // a listed pixel: index | halvings << shift
 struct DirectEdgeHeader {
-    uint groupsX; // edge_shade.comp's indirect dispatch: ceil(pixels / kDirectEdgeGroupSize)
+    uint groupsX; // edge_shade.comp's indirect dispatch: ceil(pixels / kDirectEdgePixelsPerGroup)
     uint groupsY; // 1
     uint groupsZ; // 1
     uint pixels;  // pixels listed, each y * width + x | halvings << kDirectEdgeHalvingShift

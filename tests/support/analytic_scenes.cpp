@@ -64,8 +64,7 @@ void addBox(Mesh& mesh, const glm::vec3& lo, const glm::vec3& hi) {
     }
 }
 
-glm::dvec3 projectToGround(const Scene& scene, int width, int height, double px, double py) {
-    // The same camera math the renderer uses.
+ViewRay computeViewRay(const Scene& scene, int width, int height, double px, double py) {
     float nearM = 0.0f;
     float farM = 0.0f;
     computeCameraRange(scene.camera, scene.computeWorldBounds(), scene.computeInstanceBounds(),
@@ -79,7 +78,12 @@ glm::dvec3 projectToGround(const Scene& scene, int width, int height, double px,
     const glm::dvec4 b = worldFromClip * glm::dvec4(ndc, 1.0, 1.0);
     const glm::dvec3 p0 = glm::dvec3(a) / a.w;
     const glm::dvec3 p1 = glm::dvec3(b) / b.w;
-    return p0 + (p1 - p0) * (p0.y / (p0.y - p1.y));
+    return {p0, p1 - p0};
+}
+
+glm::dvec3 projectToGround(const Scene& scene, int width, int height, double px, double py) {
+    const ViewRay ray = computeViewRay(scene, width, height, px, py);
+    return ray.origin + ray.dir * (ray.origin.y / -ray.dir.y);
 }
 
 double computePlaneRadiance(float rho, float intensity, float heightM, const glm::dvec3& point) {

@@ -21,8 +21,16 @@ Scene makeGreySquares(std::span<const glm::mat4> worldFromSquare);
 // material 0.
 void addBox(Mesh& mesh, const glm::vec3& lo, const glm::vec3& hi);
 
-// Where the camera ray through image position (px, py) meets y = 0; (px, py) in pixels with
-// (0, 0) at the image's top-left corner, so pixel centres are at +0.5.
+// The camera ray through image position (px, py), in pixels with (0, 0) at the image's top-left
+// corner (pixel centres at +0.5), as the renderer's camera math casts it: from the near plane,
+// `dir` reaching the far plane at t = 1.
+struct ViewRay {
+    glm::dvec3 origin;
+    glm::dvec3 dir;
+};
+ViewRay computeViewRay(const Scene& scene, int width, int height, double px, double py);
+
+// Where the camera ray through image position (px, py) meets y = 0.
 glm::dvec3 projectToGround(const Scene& scene, int width, int height, double px, double py);
 
 // Radiance of a diffuse plane under a point light: rho / pi * I * h / d^3.
