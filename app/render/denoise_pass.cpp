@@ -20,8 +20,7 @@ DenoisePass::DenoisePass(const GBuffer& viewer, const gl::Texture& indirect)
                                         {gl::ShaderStage::Fragment, "denoise/filter_input.frag"}},
                              .defines = getGBufferDefines()})),
       mProgram(ReloadableProgram({.label = "denoise",
-                                  .stages = {{gl::ShaderStage::Vertex, "lib/fullscreen.vert"},
-                                             {gl::ShaderStage::Fragment, "denoise/atrous.frag"}},
+                                  .stages = {{gl::ShaderStage::Compute, "denoise/atrous.comp"}},
                                   .defines = getGBufferDefines()})),
       mVertexArray("denoise vao"),
       mTargets({ColorTarget("indirect (denoised)", gl::Format::RGBA32F),
@@ -75,9 +74,19 @@ void DenoisePass::execute(const FrameInputs& inputs) {
     mGuide.bindUnit(gpu::kUnitFilterGuide);
     for (int i = 0; i < iterations; ++i) {
         mTargets[targetOf(i)].getTexture().bindUnit(gpu::kUnitFilterSource);
-        mTargets[targetOf(i + 1)].bind();
+        mTargets[targetOf(i + 1)].getTexture().bindImage(gpu::kImageFilterOutput, false, true);
         mParams.bind(size_t(i) + 1);
-        drawFullscreenTriangle();
+        // A work group filters kFilterGroupSide^2 pixels `step` apart: step^2 lattices, each
+        // split into blocks (atrous.comp).
+        const unsigned step = 1u << i;
+        const auto groups = [&](int size) {
+            const unsigned span = gpu::kFilterGroupSide * step;
+            return step * ((static_cast<unsigned>(size) + span - 1) / span);
+        };
+        gl::dispatchCompute(groups(mGuide.getWidth()), groups(mGuide.getHeight()));
+        // The next iteration, the upsample and compose read the output as a texture; the next
+        // frame's first draw renders into it.
+        gl::memoryBarrier(gl::Barrier::TextureFetch | gl::Barrier::Framebuffer);
     }
 }
 

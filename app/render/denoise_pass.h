@@ -3,7 +3,8 @@
 // it through. It works at the splat buffer's resolution; UpsamplePass follows. A first draw
 // (filter_input.frag) divides the splats by the reflectance and writes the guide: the surface
 // (position, normal) each buffer pixel stands for, which the filter's and the upsample's taps
-// read in one fetch of a texture the buffer's size.
+// read in one fetch of a texture the buffer's size. Each iteration is a compute dispatch
+// (atrous.comp) that reads its taps into shared memory.
 #pragma once
 
 #include "render/fullscreen.h"

@@ -1,4 +1,4 @@
-// What the edge-aware filter (atrous.frag) and the upsample (upsample.frag) read, one pass at
+// What the edge-aware filter (atrous.comp) and the upsample (upsample.frag) read, one pass at
 // the splat buffer's size: the splats' light divided by the reflectance where they were
 // splatted (irradiance: the filters smooth it and keep texture and colour edges; the pixel's
 // own reflectance multiplies it back at the end), and the guide (lib/gbuffer_filter.glsl) of

@@ -1,7 +1,7 @@
 // Joint-bilateral upsample of the indirect light (UpsamplePass): the buffer pixel i stands for
 // the viewer G-buffer pixel i d + d / 2 (splat.frag), so an image pixel lies between four of
 // them. Each of the four is weighted bilinearly, by the normal test and the off-plane distance
-// of the filter (atrous.frag) on its guide texel (filter_input.frag), and read as irradiance;
+// of the filter (atrous.comp) on its guide texel (filter_input.frag), and read as irradiance;
 // the sum is multiplied by the pixel's reflectance. A tap counts only on the pixel's own
 // surface: a surface weight of kSharedSurface or more (the footprint measured towards the nearest
 // of the pixel's four neighbours d pixels away, computePlaneScale), and its point within

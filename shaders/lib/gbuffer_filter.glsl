@@ -1,4 +1,4 @@
-// What the edge-aware filters on the indirect light share (filter_input.frag, atrous.frag,
+// What the edge-aware filters on the indirect light share (filter_input.frag, atrous.comp,
 // upsample.frag, specular_filter.comp): the viewer G-buffer channels they read, the filter
 // guide's encoding, the weight of a tap on a turned surface or off the pixel's plane, and the
 // reflectance the light is divided by, so they smooth irradiance and keep texture and colour

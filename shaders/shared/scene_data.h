@@ -190,7 +190,11 @@ struct DirectEdgeParams {
 };
 ISPM_STATIC_ASSERT_SIZE(DirectEdgeParams, 16);
 
-// Parameters of one iteration of atrous.frag, and of upsample.frag (std140, at
+// atrous.comp: work groups of kFilterGroupSide^2 pixels, writing image unit kImageFilterOutput.
+ISPM_CONST uint kFilterGroupSide = 8u;
+ISPM_CONST int kImageFilterOutput = 0;
+
+// Parameters of one iteration of atrous.comp, and of upsample.frag (std140, at
 // kBindingPassParams; the filter's iterations are bound by range).
 struct FilterParams {
     ivec4 iteration; // x = step (px; upsample: unused, its variants add the caustics),
