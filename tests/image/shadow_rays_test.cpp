@@ -107,15 +107,21 @@ ShadowCount compareWithClosedForm(const Scene& scene, const Image& image) {
 
 class ShadowRaysTest : public GlTest {};
 
-TEST_F(ShadowRaysTest, SquareCastsItsExactShadow) {
-    const Scene scene = makeShadowScene();
+// kSize x kSize, shadows by ray, `edgeSamples` edge samples.
+Settings makeRaySettings(int edgeSamples) {
     Settings settings;
     settings.set("width", kSize, "test");
     settings.set("height", kSize, "test");
+    settings.setEnum("shadows", "ray", "test");
+    settings.set("edge_samples", edgeSamples, "test");
+    return settings;
+}
+
+TEST_F(ShadowRaysTest, SquareCastsItsExactShadow) {
+    const Scene scene = makeShadowScene();
+    Settings settings = makeRaySettings(0); // each pixel's centre, as the closed form above
     // Coarse light views: rays do not look at them, a shadow map's edge steps by their texels.
     settings.set("shadow_map_size", 64, "test");
-    settings.setEnum("shadows", "ray", "test");
-    settings.set("edge_samples", 0, "test"); // each pixel's centre, as the closed form above
     const ShadowCount ray = compareWithClosedForm(scene, renderAov(scene, settings, Aov::Direct));
     // Both sides of the edge were seen: not a black image, not a shadowless one.
     EXPECT_GT(ray.shadowed, 100);
@@ -185,11 +191,7 @@ EdgeError measureEdgeError(const Scene& scene, const Image& image) {
 
 TEST_F(ShadowRaysTest, EdgeSamplesAverageThePixel) {
     const Scene scene = makeShadowScene();
-    Settings settings;
-    settings.set("width", kSize, "test");
-    settings.set("height", kSize, "test");
-    settings.setEnum("shadows", "ray", "test");
-    settings.set("edge_samples", 0, "test");
+    Settings settings = makeRaySettings(0);
     const EdgeError centre = measureEdgeError(scene, renderAov(scene, settings, Aov::Direct));
     settings.set("edge_samples", 64, "test");
     const EdgeError averaged = measureEdgeError(scene, renderAov(scene, settings, Aov::Direct));
@@ -293,12 +295,7 @@ double computeSliverPixel(const Scene& scene, int x, int y) {
 
 TEST_F(ShadowRaysTest, EdgeSamplesSeeASliverBeyondASilhouette) {
     const Scene scene = makeSliverScene();
-    Settings settings;
-    settings.set("width", kSize, "test");
-    settings.set("height", kSize, "test");
-    settings.setEnum("shadows", "ray", "test");
-    settings.set("edge_samples", 64, "test");
-    const Image image = renderAov(scene, settings, Aov::Direct);
+    const Image image = renderAov(scene, makeRaySettings(64), Aov::Direct);
     // The rows well inside both walls (they span rows 3-61).
     double got = 0.0;
     double expected = 0.0;
