@@ -22,9 +22,7 @@ DenoisePass::DenoisePass(const GBuffer& viewer, const gl::Texture& indirect)
       mProgram(ReloadableProgram({.label = "denoise",
                                   .stages = {{gl::ShaderStage::Compute, "denoise/atrous.comp"}},
                                   .defines = getGBufferDefines()})),
-      mVertexArray("denoise vao"),
-      mTargets({ColorTarget("indirect (denoised)", gl::Format::RGBA32F),
-                ColorTarget("denoise intermediate", gl::Format::RGBA32F)}) {}
+      mVertexArray("denoise vao") {}
 
 bool DenoisePass::leavesIrradiance(const FrameInputs& inputs) {
     return inputs.settings.splatDivisor > 1;
@@ -33,10 +31,11 @@ bool DenoisePass::leavesIrradiance(const FrameInputs& inputs) {
 void DenoisePass::resize(int width, int height) {
     if (mGuide.getWidth() == width && mGuide.getHeight() == height) return;
     mGuide = gl::Texture::create2D("filter guide", gl::Format::RGBA32F, width, height);
+    constexpr std::array<const char*, 2> kLabels = {"indirect (denoised)", "denoise intermediate"};
     for (size_t i = 0; i < mTargets.size(); ++i) {
-        mTargets[i].resize(width, height);
+        mTargets[i] = gl::Texture::create2D(kLabels[i], gl::Format::RGBA32F, width, height);
         mInputTargets[i] = gl::Framebuffer("filter input target " + std::to_string(i));
-        mInputTargets[i].attachColor(0, mTargets[i].getTexture());
+        mInputTargets[i].attachColor(0, mTargets[i]);
         mInputTargets[i].attachColor(1, mGuide);
         mInputTargets[i].setDrawBufferCount(2);
         mInputTargets[i].checkComplete();
@@ -48,14 +47,14 @@ void DenoisePass::execute(const FrameInputs& inputs) {
     const int iterations = inputs.progressive.denoiseIterations;
     const int divisor = inputs.settings.splatDivisor;
     if (iterations == 0 && divisor == 1) {
-        mTargets[kOutput].getTexture().copyFrom(mIndirect); // the splats as they are
+        mTargets[kOutput].copyFrom(mIndirect); // the splats as they are
         return;
     }
     gl::applyState({});
     mVertexArray.bind();
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
     mViewer.bindTextures(gpu::kUnitGBufferFirst);
-    // Draw 0 writes the input and guide, draw i + 1 is iteration i.
+    // Block 0: the input draw's (the input and the guide); block i + 1: iteration i's dispatch.
     std::vector<gpu::FilterParams> params = {{glm::ivec4(0, 0, 0, divisor)}};
     for (int i = 0; i < iterations; ++i) {
         const bool modulate = i + 1 >= iterations && !leavesIrradiance(inputs);
@@ -73,12 +72,12 @@ void DenoisePass::execute(const FrameInputs& inputs) {
     mProgram.use();
     mGuide.bindUnit(gpu::kUnitFilterGuide);
     for (int i = 0; i < iterations; ++i) {
-        mTargets[targetOf(i)].getTexture().bindUnit(gpu::kUnitFilterSource);
-        mTargets[targetOf(i + 1)].getTexture().bindImage(gpu::kImageFilterOutput, false, true);
+        mTargets[targetOf(i)].bindUnit(gpu::kUnitFilterSource);
+        mTargets[targetOf(i + 1)].bindImage(gpu::kImageFilterOutput, false, true);
         mParams.bind(size_t(i) + 1);
         // A work group filters kFilterGroupSide^2 pixels `step` apart: step^2 lattices, each
         // split into blocks (atrous.comp).
-        const unsigned step = 1u << i;
+        const auto step = static_cast<unsigned>(params[size_t(i) + 1].iteration.x);
         const auto groups = [&](int size) {
             const unsigned span = gpu::kFilterGroupSide * step;
             return step * ((static_cast<unsigned>(size) + span - 1) / span);

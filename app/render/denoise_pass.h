@@ -27,7 +27,7 @@ class DenoisePass final : public Pass {
         mProgram.reloadIfChanged(report);
     }
     // Radiance, or irradiance (divided by the reflectance) where leavesIrradiance.
-    const gl::Texture& getOutput() const { return mTargets[kOutput].getTexture(); }
+    const gl::Texture& getOutput() const { return mTargets[kOutput]; }
     // The guide of this frame's buffer (lib/gbuffer_filter.glsl), written unless the light
     // passed through as it was (denoise 0 at the image's resolution).
     const gl::Texture& getGuide() const { return mGuide; }
@@ -36,17 +36,17 @@ class DenoisePass final : public Pass {
     static bool leavesIrradiance(const FrameInputs& inputs);
 
   private:
-    // The output and one more target: the draws alternate between them so that the last writes
-    // the output.
+    // The output and one more target: the input draw and the iterations alternate between them
+    // so that the last writes the output.
     static constexpr size_t kOutput = 0;
     void resize(int width, int height); // the targets, the guide and the first draw's targets
     const GBuffer& mViewer;
     const gl::Texture& mIndirect;
     ReloadableProgram mInputProgram;
     ReloadableProgram mProgram;
-    ParamBlocks<gpu::FilterParams> mParams{"filter parameters"}; // one per draw
+    ParamBlocks<gpu::FilterParams> mParams{"filter parameters"}; // the draw's, each iteration's
     gl::VertexArray mVertexArray;
-    std::array<ColorTarget, 2> mTargets;
+    std::array<gl::Texture, 2> mTargets; // written by the input draw and the dispatches
     gl::Texture mGuide;
     std::array<gl::Framebuffer, 2> mInputTargets; // mTargets[i]'s texture and the guide
 };

@@ -15,6 +15,18 @@ vec3 computeEyeToNear(vec2 point) {
     return offset.xyz / offset.w;
 }
 
+// The viewer's pixel that world point `positionW` projects onto; false where it lies behind the
+// eye or outside the image.
+bool findViewerPixel(vec3 positionW, out ivec2 pixel) {
+    pixel = ivec2(0);
+    vec4 clip = frame.clipFromWorld * vec4(positionW, 1.0);
+    if (clip.w <= 0.0) return false;
+    vec2 ndc = clip.xy / clip.w;
+    if (any(greaterThanEqual(abs(ndc), vec2(1.0)))) return false;
+    pixel = min(ivec2((ndc * 0.5 + 0.5) * frame.imageSize.xy), ivec2(frame.imageSize.xy) - 1);
+    return true;
+}
+
 // The viewer G-buffer pixel that pixel `p` of a buffer `divisor` times smaller than the image
 // stands for (splat_resolution): the middle of its block, inside the image. The splat shades
 // it, the filter and the upsample weigh by it.

@@ -432,11 +432,8 @@ uint hashPosition(vec3 p) {
 // accepts), a nearer surface (which may hide q's surface: unknown) or q lies outside the image,
 // the surface is taken to go on.
 bool isSeenPast(vec3 q, vec3 p, vec3 n, float radius) {
-    vec4 clip = frame.clipFromWorld * vec4(q, 1.0);
-    if (clip.w <= 0.0) return false;
-    vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
-    if (any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0)))) return false;
-    ivec2 pixel = ivec2(uv * frame.imageSize.xy);
+    ivec2 pixel;
+    if (!findViewerPixel(q, pixel)) return false;
     vec4 shown = texelFetch(uPosition, pixel, 0);
     if (shown.w < 0.5) return true;
     bool onPlane = dot(texelFetch(uNormal, pixel, 0).xyz, n) > 0.0 &&

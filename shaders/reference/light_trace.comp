@@ -107,12 +107,8 @@ void connectToCamera(vec3 position, vec3 n, vec3 wiLight, GpuMaterial m, vec3 po
     float cosSurface = dot(n, wo);
     float cosCamera = -dot(wo, params.cameraAxis.xyz);
     if (cosSurface <= 0.0 || cosCamera <= 0.0) return;
-    vec4 clip = frame.clipFromWorld * vec4(position, 1.0);
-    if (clip.w <= 0.0) return;
-    vec2 ndc = clip.xy / clip.w;
-    if (any(greaterThanEqual(abs(ndc), vec2(1.0)))) return;
-    ivec2 size = ivec2(frame.imageSize.xy);
-    ivec2 pixel = clamp(ivec2((ndc * 0.5 + 0.5) * frame.imageSize.xy), ivec2(0), size - 1);
+    ivec2 pixel;
+    if (!findViewerPixel(position, pixel)) return;
     vec3 f = evaluateBrdf(m.diffuse.rgb, m.specular, n, wiLight, wo);
     if (all(equal(f, vec3(0.0)))) return;
     float offset = computeRayOffset(position, params.ray.x);
@@ -120,7 +116,7 @@ void connectToCamera(vec3 position, vec3 n, vec3 wiLight, GpuMaterial m, vec3 po
     float importance = cosSurface /
         (d2 * params.ray.y * cosCamera * cosCamera * cosCamera * float(params.control.w));
     vec3 value = powerW * f * importance;
-    uint index = 3u * uint(pixel.y * size.x + pixel.x);
+    uint index = 3u * uint(pixel.y * int(frame.imageSize.x) + pixel.x);
     addToSplat(index, value.r);
     addToSplat(index + 1u, value.g);
     addToSplat(index + 2u, value.b);

@@ -76,11 +76,8 @@ void scatterRays(vec3 position, vec3 n, bool frontFace, vec3 dir, vec3 diffuse, 
 // the same point (its distance from the eye alike), else the ambient estimate.
 vec3 lookUpIndirect(vec3 position, vec3 diffuse) {
     vec3 ambient = diffuse * imageLoad(uAmbient, ivec2(0)).rgb;
-    vec4 clip = frame.clipFromWorld * vec4(position, 1.0);
-    if (clip.w <= 0.0) return ambient;
-    vec2 ndc = clip.xy / clip.w;
-    if (any(greaterThan(abs(ndc), vec2(1.0)))) return ambient;
-    ivec2 pixel = min(ivec2((ndc * 0.5 + 0.5) * frame.imageSize.xy), ivec2(frame.imageSize.xy) - 1);
+    ivec2 pixel;
+    if (!findViewerPixel(position, pixel)) return ambient;
     vec4 visible = texelFetch(uPosition, pixel, 0);
     if (visible.w < 0.5) return ambient;
     float hitDistance = distance(position, frame.cameraPosition.xyz);

@@ -224,6 +224,35 @@ double computeMaskedRatio(const Image& image, const Image& reference, const Pixe
     return computeMeanValue(glm::vec3(computeMeanRatio(image, reference, &mask)));
 }
 
+// The frame's indirect light against the reference's over two bands of its surface pixels, by a
+// distance each is given (metres from an edge; negative: in neither band): nearer than nearM,
+// farther than farM.
+struct BandRatios {
+    double near = 0.0;
+    double far = 0.0;
+    size_t nearCount = 0;
+    size_t farCount = 0;
+};
+BandRatios measureBandRatios(const FrameImages& f, const Image& reference,
+                             const std::vector<float>& distance, float nearM, float farM) {
+    PixelMask nearMask(distance.size(), 0);
+    PixelMask farMask(distance.size(), 0);
+    BandRatios r;
+    for (size_t i = 0; i < distance.size(); ++i) {
+        if (!isSurface(f, i) || distance[i] < 0.0f) continue;
+        if (distance[i] < nearM) {
+            nearMask[i] = 1;
+            ++r.nearCount;
+        } else if (distance[i] > farM) {
+            farMask[i] = 1;
+            ++r.farCount;
+        }
+    }
+    r.near = computeMaskedRatio(f.indirect, reference, nearMask);
+    r.far = computeMaskedRatio(f.indirect, reference, farMask);
+    return r;
+}
+
 // Width of pixel (x, y) on its surface, metres: the distance to a horizontal neighbour on the
 // same surface (the largest footprint in the image when neither neighbour is).
 float computePixelFootprint(const FrameImages& f, int x, int y) {
@@ -289,31 +318,16 @@ TEST_F(FailureModeTest, CornersAndEdgesLoseIndirectEnergy) {
     for (int seed = 1; seed <= kSeeds; ++seed) {
         const Settings settings = makeCornellSettings(scene, 50000, seed);
         const FrameImages f = renderFrameImages(scene, settings);
-        const std::vector<float> edge = computeEdgeDistances(f);
-        PixelMask corner(edge.size(), 0);
-        PixelMask middle(edge.size(), 0);
-        size_t cornerCount = 0;
-        size_t middleCount = 0;
-        for (size_t i = 0; i < edge.size(); ++i) {
-            if (!isSurface(f, i)) continue;
-            if (edge[i] < kCornerM) {
-                corner[i] = 1;
-                ++cornerCount;
-            } else if (edge[i] > kMiddleM) {
-                middle[i] = 1;
-                ++middleCount;
-            }
-        }
-        ASSERT_GT(cornerCount, 50u);
-        ASSERT_GT(middleCount, 50u);
-        const double cornerRatio = computeMaskedRatio(f.indirect, reference, corner);
-        const double middleRatio = computeMaskedRatio(f.indirect, reference, middle);
+        const BandRatios r =
+            measureBandRatios(f, reference, computeEdgeDistances(f), kCornerM, kMiddleM);
+        ASSERT_GT(r.nearCount, 50u);
+        ASSERT_GT(r.farCount, 50u);
         std::printf("corners, seed %d: ispm / reference indirect: within %.0f cm of an edge %.3f "
                     "(%zu px), more than %.0f cm %.3f (%zu px)\n",
-                    seed, double(kCornerM) * 100.0, cornerRatio, cornerCount,
-                    double(kMiddleM) * 100.0, middleRatio, middleCount);
-        cornerSum += cornerRatio;
-        middleSum += middleRatio;
+                    seed, double(kCornerM) * 100.0, r.near, r.nearCount, double(kMiddleM) * 100.0,
+                    r.far, r.farCount);
+        cornerSum += r.near;
+        middleSum += r.far;
     }
     const double cornerRatio = cornerSum / kSeeds;
     const double middleRatio = middleSum / kSeeds;
@@ -388,32 +402,22 @@ TEST_F(FailureModeTest, SurfaceEndsKeepTheLightAtAWallsRim) {
             settings.setEnum("splat_clip", "off", "test");
             settings.setEnum("surface_ends", on == 1 ? "on" : "off", "test");
             const FrameImages f = renderFrameImages(scene, settings);
-            PixelMask rim(f.position.pixels.size(), 0);
-            PixelMask middle(f.position.pixels.size(), 0);
-            for (size_t i = 0; i < rim.size(); ++i) {
+            // The face's pixels by their distance from its top or sides; the foot (a corner with
+            // the yard, not an edge seen past) belongs to neither band.
+            std::vector<float> fromRim(f.position.pixels.size(), -1.0f);
+            for (size_t i = 0; i < fromRim.size(); ++i) {
                 const glm::vec3 p = f.position.pixels[i];
-                if (!isSurface(f, i) || std::abs(p.z) > kOnPlaneM || f.normal.pixels[i].z > -0.9f)
+                if (std::abs(p.z) > kOnPlaneM || f.normal.pixels[i].z > -0.9f || p.y < kRimM)
                     continue;
-                const float fromSide = kYardWallHalfWidthM - std::abs(p.x);
-                const float fromTop = kYardWallHeightM - p.y;
-                // The foot (a corner with the yard, not an edge seen past) belongs to neither.
-                if (p.y < kRimM) continue;
-                if (std::min(fromSide, fromTop) < kRimM) {
-                    rim[i] = 1;
-                } else if (std::min(fromSide, fromTop) > 2.0f * kRimM) {
-                    middle[i] = 1;
-                }
+                fromRim[i] = std::min(kYardWallHalfWidthM - std::abs(p.x), kYardWallHeightM - p.y);
             }
-            const auto rimCount = size_t(std::count(rim.begin(), rim.end(), 1));
-            const auto middleCount = size_t(std::count(middle.begin(), middle.end(), 1));
-            ASSERT_GT(rimCount, 50u);
-            ASSERT_GT(middleCount, 50u);
-            const double rimRatio = computeMaskedRatio(f.indirect, reference, rim);
-            const double middleRatio = computeMaskedRatio(f.indirect, reference, middle);
+            const BandRatios r = measureBandRatios(f, reference, fromRim, kRimM, 2.0f * kRimM);
+            ASSERT_GT(r.nearCount, 50u);
+            ASSERT_GT(r.farCount, 50u);
             std::printf("wall in a yard, surface_ends %s, seed %d: ispm / reference indirect on "
                         "the face's rim %.3f (%zu px), middle %.3f (%zu px)\n",
-                        on == 1 ? "on" : "off", seed, rimRatio, rimCount, middleRatio, middleCount);
-            rimToMiddle[on] += rimRatio / middleRatio / kSeeds;
+                        on == 1 ? "on" : "off", seed, r.near, r.nearCount, r.far, r.farCount);
+            rimToMiddle[on] += r.near / r.far / kSeeds;
         }
     }
     std::printf("rim / middle: surface_ends off %.3f, on %.3f\n", rimToMiddle[0], rimToMiddle[1]);
