@@ -1,14 +1,14 @@
 #!/usr/bin/python3
 # Quality figures of an image in its caustic region: the 4x4-pixel blocks where the light-traced
 # reference holds more than the path-traced one (which cannot see caustics from point, spot or
-# sun lights) by over half the light reference's mean, and over the whole image (DESIGN.md's
-# energy and rel RMSE 4x4, luminance-free: all channels together).
+# sun lights) by over half the light reference's mean, and over the whole image (the energy and
+# rel RMSE 4x4 of docs/design.md "Measuring quality", luminance-free: all channels together).
 # Usage: tools/measure_caustics.py IMAGE.pfm LIGHT_REF.pfm PATH_REF.pfm  (/usr/bin/python3: numpy)
 import sys
 
 import numpy as np
 
-BLOCK_PX = 4  # DESIGN.md's rel RMSE blocks
+BLOCK_PX = 4  # rel RMSE blocks (docs/design.md "Measuring quality")
 CAUSTIC_SHARE = 0.5  # caustic light above this fraction of the reference's mean radiance
 
 

@@ -17,8 +17,8 @@ struct BenchOptions {
     std::string scenePath;  // optional only with a preset, which then supplies the scene
     std::string cameraName; // --camera: one of the file's `cameras` ("" = `camera`)
     int frames = 10;        // timed frames
-    // The first use of a program costs about 60 ms on llvmpipe (DESIGN.md): frames before the
-    // timed ones absorb that.
+    // The first use of a program costs about 60 ms on llvmpipe: frames before the timed ones
+    // absorb that (docs/design.md "The test renderer (llvmpipe)").
     int warmup = 2;
     std::optional<int> width; // unset: from the preset or the settings
     std::optional<int> height;

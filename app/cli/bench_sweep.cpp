@@ -14,7 +14,7 @@
 #include "image/metrics.h"
 #include "render/readback.h"
 #include "render/reference_pass.h"
-#include "scene/frame_settings.h"
+#include "settings/frame_settings.h"
 
 #include <unistd.h>
 
@@ -279,8 +279,8 @@ class ReferenceCurve {
                    SweepProgress& progress)
         : mTracer(scene, settings), mSppMax(sppMax), mReference(reference),
           mReferenceDirect(referenceDirect), mProgress(progress) {
-        // First use of the program is slow on llvmpipe (DESIGN.md); a throw-away pass absorbs
-        // it, as the warm-up frames do for ispm.
+        // First use of the program is slow on llvmpipe; a throw-away pass absorbs it, as the
+        // warm-up frames do for ispm (docs/design.md "The test renderer (llvmpipe)").
         ReferencePass warm(scene, settings);
         for (int i = 0; i < warmup; ++i) {
             warm.addSample();

@@ -12,7 +12,7 @@
 #include "image/image_io.h"
 #include "image/metrics.h"
 #include "scene/scene_loader.h"
-#include "scene/settings.h"
+#include "settings/settings.h"
 
 #include <CLI/CLI.hpp>
 

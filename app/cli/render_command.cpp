@@ -11,8 +11,8 @@
 #include "render/photon_points.h"
 #include "render/readback.h"
 #include "render/reference_pass.h"
-#include "scene/frame_settings.h"
 #include "scene/scene_loader.h"
+#include "settings/frame_settings.h"
 
 #include <shared/light_trace_data.h>
 

@@ -21,16 +21,18 @@ struct ImageMetrics {
     double ssim = 1.0;
     glm::dvec3 meanRatio{1.0};
     size_t pixelCount = 0; // pixels the mask included
-    // DESIGN.md's quality figures, over included pixels where the reference is not black; left
-    // at these values (and litPixelCount 0) when the reference is black everywhere.
+    // The quality figures of docs/design.md "Measuring quality", over included pixels where the
+    // reference is not black; left at these values (and litPixelCount 0) when the reference is
+    // black everywhere.
     size_t litPixelCount = 0;
     double energy = 1.0;   // computeEnergyRatio
     double relRmse4 = 0.0; // computeRelRmse, 4x4 blocks
     double relRmse1 = 0.0; // computeRelRmse, per pixel
 };
 
-// Side of the pixel blocks of the quality figure "rel RMSE (4x4)" (DESIGN.md): errors are
-// averaged over a block first, so the figure measures blotches, not per-pixel aliasing.
+// Side of the pixel blocks of the quality figure "rel RMSE (4x4)": errors are averaged over a
+// block first, so the figure measures blotches, not per-pixel aliasing
+// (docs/design.md "Measuring quality").
 constexpr int kRelRmseBlock = 4;
 
 // Every function below throws InputError when the sizes differ (naming both), when the mask has
@@ -59,13 +61,15 @@ glm::dvec3 computeMeanRatio(const Image& test, const Image& reference,
 // (some channel above 0); possibly none. The two functions below throw InputError when none is.
 PixelMask selectLitPixels(const Image& reference, const PixelMask* mask);
 
-// mean(test) / mean(reference) over the lit pixels, all channels together (DESIGN.md "energy").
+// mean(test) / mean(reference) over the lit pixels, all channels together: the energy of
+// docs/design.md "Measuring quality".
 double computeEnergyRatio(const Image& test, const Image& reference,
                           const PixelMask* mask = nullptr);
 
-// DESIGN.md's rel RMSE: each channel averaged over the lit pixels of every blockPx x blockPx
-// block (blocks without one are left out), then sqrt(mean over blocks and channels of
-// (test - reference)^2) / mean(reference over lit pixels and channels). blockPx 1 = per pixel.
+// The rel RMSE of docs/design.md "Measuring quality": each channel averaged over the lit pixels
+// of every blockPx x blockPx block (blocks without one are left out), then sqrt(mean over blocks
+// and channels of (test - reference)^2) / mean(reference over lit pixels and channels).
+// blockPx 1 = per pixel.
 double computeRelRmse(const Image& test, const Image& reference, int blockPx,
                       const PixelMask* mask = nullptr);
 

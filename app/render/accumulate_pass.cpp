@@ -22,8 +22,8 @@ constexpr uint32_t kMovingFramesCarried = 4;
 
 // Progressive photon mapping's alpha, the share of the photons a shrinking radius keeps (Hachisuka
 // et al. 2008 use 2/3 for an unbounded sequence). Measured over 32 frames of the Cornell box and
-// both courtyard views (README, "Converging and moving"): 0.8 gives the lowest error; 2/3 shrinks
-// too fast for so few frames (noise), 1 keeps the blur.
+// both courtyard views (docs/results.md, "Converging and moving"): 0.8 gives the lowest error;
+// 2/3 shrinks too fast for so few frames (noise), 1 keeps the blur.
 constexpr double kProgressiveAlpha = 0.8;
 // Density radius at most this times the photon's travel (computeProgressiveStep). Measured as
 // alpha: 0.25 to 2 all help outdoors, 0.5 the most; in one frame too (courtyard outside, median

@@ -1,4 +1,4 @@
-// The frame runner: wires the passes in data-flow order (DESIGN.md, "Frame, as data flows"),
+// The frame runner: wires the passes in data-flow order (docs/design.md "Frame, as data flows"),
 // wraps each in a debug group and a timer named after it, and exposes the AOVs.
 #pragma once
 

@@ -3,8 +3,8 @@
 #pragma once
 
 #include "render/gpu_scene.h"
-#include "scene/frame_settings.h"
 #include "scene/scene.h"
+#include "settings/frame_settings.h"
 
 #include <shared/scene_data.h>
 

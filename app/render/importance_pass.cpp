@@ -3,7 +3,7 @@
 
 #include "gl/state.h"
 #include "render/gpu_scene.h"
-#include "scene/settings.h"
+#include "settings/settings.h"
 
 #include <shared/importance_data.h>
 #include <shared/scene_data.h>

@@ -5,7 +5,7 @@
 
 #include "gl/objects.h"
 #include "render/reloadable_program.h"
-#include "scene/frame_settings.h"
+#include "settings/frame_settings.h"
 
 #include <shared/scene_data.h>
 

@@ -6,7 +6,7 @@
 #include "gl/state.h"
 #include "render/gpu_scene.h"
 #include "render/shader_root.h"
-#include "scene/settings.h"
+#include "settings/settings.h"
 
 #include <shared/photon_data.h>
 #include <shared/scene_data.h>

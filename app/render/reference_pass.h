@@ -9,8 +9,8 @@
 #include "gl/program.h"
 #include "image/image.h"
 #include "render/gpu_scene.h"
-#include "scene/frame_settings.h"
 #include "scene/scene.h"
+#include "settings/frame_settings.h"
 
 #include <memory>
 

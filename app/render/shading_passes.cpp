@@ -6,7 +6,7 @@
 #include "render/light_cameras.h"
 #include "render/pixel_rect.h"
 #include "render/shader_root.h"
-#include "scene/settings.h"
+#include "settings/settings.h"
 
 #include <shared/scene_data.h>
 #include <shared/tonemap_data.h>

@@ -1,9 +1,10 @@
 // The scene model: camera, lights, materials, meshes and their instances, plus the render
-// settings the scene overrides. Plain data in metres and SI radiometric units (DESIGN.md); no GL.
+// settings the scene overrides. Plain data in metres and SI radiometric units; no GL
+// (docs/design.md "Units and conventions").
 #pragma once
 
 #include "scene/animation.h"
-#include "scene/settings.h"
+#include "settings/settings.h"
 
 #include <glm/glm.hpp>
 

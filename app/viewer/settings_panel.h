@@ -1,9 +1,9 @@
-// The settings panel, generated from the one settings table (scene/settings.h): a widget per
+// The settings panel, generated from the one settings table (settings/settings.h): a widget per
 // setting with its range, unit and help; derived settings can be left to the renderer. Also the
 // "save" that writes the current settings as a scene `render` block.
 #pragma once
 
-#include "scene/settings.h"
+#include "settings/settings.h"
 
 #include <functional>
 #include <optional>

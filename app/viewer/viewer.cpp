@@ -1,7 +1,7 @@
 // The viewer's frame loop: input (window and script) -> camera and settings -> FrameRunner ->
 // debug view -> ImGui panels -> screenshots -> present.
 #include "viewer/viewer.h"
-#include "scene/frame_settings.h"
+#include "settings/frame_settings.h"
 #include "viewer/viewer_app.h"
 
 #include "core/input_error.h"

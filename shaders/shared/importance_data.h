@@ -1,6 +1,6 @@
 // Importance-driven emission, shared by C++ and GLSL: every light view gets a coarse map of where
 // its photons matter to the viewer this frame, built on the GPU from the viewer's G-buffer, and the
-// emission grid is warped through the map's inverse CDF (DESIGN.md "Where photons should go").
+// emission grid is warped through the map's inverse CDF (docs/design.md "Where photons go").
 #ifndef ISPM_IMPORTANCE_DATA_H
 #define ISPM_IMPORTANCE_DATA_H
 

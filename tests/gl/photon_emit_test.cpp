@@ -170,10 +170,10 @@ Settings makeSettings(uint32_t photons) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// The oracle. It re-derives photon_emit.geom's rules from their statement (DESIGN.md "Units and
-// conventions"), independently of the shader's code: same texel per grid cell, power = intensity
-// x spot falloff x exact cell solid angle (or irradiance x cell area), then the first bounce by
-// the oracle's scatterOracle with the photon's own random stream.
+// The oracle. It re-derives photon_emit.geom's rules from their statement
+// (docs/design.md "Units and conventions"), independently of the shader's code: same texel per
+// grid cell, power = intensity x spot falloff x exact cell solid angle (or irradiance x cell
+// area), then the first bounce by the oracle's scatterOracle with the photon's own random stream.
 
 // The oracle's own random stream: the PCG RXS-M-XS hash of Jarzynski and Olano (2020), seeded
 // by hashing frame seed, bounce and photon in turn; each number is the top 24 bits over 2^24.
@@ -342,12 +342,12 @@ glm::dvec3 computeOracleSpecularAlbedo(const glm::dvec3& diffuse, const glm::dve
     return glm::dvec3(specular) + diffuse * computeOracleSchlick(cosTheta, specular);
 }
 
-// The first bounce by its statement (DESIGN.md, docs/scene-format.md): Russian roulette on the
-// mean reflectance of the diffuse, specular and transmissive lobes at the photon's incidence in
-// that order with u, then the lobe's direction from (u1, u2): cosine-weighted (weight: the
-// coupled lobe 21/20 rho_d (1 - g_in)(1 - g_out) / p_d, or rho_d / p_d without specular); the
-// normalised Phong lobe around the mirror direction (absorbed below the surface; weight
-// rho_s(h) (e + 2) / (e + 1) cos(out) / p_s, rho_s(h) the specular reflectance at the half
+// The first bounce by its statement (docs/design.md "Frame, as data flows"; docs/scene-format.md):
+// Russian roulette on the mean reflectance of the diffuse, specular and transmissive lobes at the
+// photon's incidence in that order with u, then the lobe's direction from (u1, u2): cosine-weighted
+// (weight: the coupled lobe 21/20 rho_d (1 - g_in)(1 - g_out) / p_d, or rho_d / p_d without
+// specular); the normalised Phong lobe around the mirror direction (absorbed below the surface;
+// weight rho_s(h) (e + 2) / (e + 1) cos(out) / p_s, rho_s(h) the specular reflectance at the half
 // vector's angle); Fresnel reflection or refraction by u1. The weight is divided by the lobe's
 // probability. With first_bounce weighted every lobe's probability is divided by the surface's
 // albedo (the means of its diffuse, specular and transmissive reflectance summed), so they sum to

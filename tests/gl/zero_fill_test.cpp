@@ -47,7 +47,8 @@ TEST_F(ZeroFillTest, ComputeFillCrossesItsChunks) {
 
 TEST_F(ZeroFillTest, AutoClearsOnSoftwareRenderersAndFillsOnGpus) {
     // Auto follows the context's renderer: the clear on llvmpipe (the tests' renderer,
-    // DESIGN.md), the compute fill on a GPU; the explicit methods are what they say.
+    // docs/design.md "The test renderer (llvmpipe)"), the compute fill on a GPU; the explicit
+    // methods are what they say.
     const bool software = getTestContext().getInfo().isSoftware;
     EXPECT_EQ(ZeroFill().usesCompute(), !software);
     EXPECT_TRUE(ZeroFill(ZeroFill::Method::Compute).usesCompute());

@@ -9,7 +9,7 @@
 #include "support/render_support.h"
 
 #include "image/metrics.h"
-#include "scene/frame_settings.h"
+#include "settings/frame_settings.h"
 
 #include <glm/glm.hpp>
 

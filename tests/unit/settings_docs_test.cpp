@@ -1,6 +1,6 @@
 // The settings tables in README.md and docs/scene-format.md are the code's table, word for word:
 // documentation cannot drift from the settings the renderer accepts.
-#include "scene/settings.h"
+#include "settings/settings.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // The enumerated settings' choices, in table order, are the uint constants the shaders compare
 // against (shared/*.h): a choice added or moved in one place and not the other fails here.
-#include "scene/frame_settings.h"
-#include "scene/settings.h"
+#include "settings/frame_settings.h"
+#include "settings/settings.h"
 
 #include <shared/light_trace_data.h>
 #include <shared/photon_data.h>

@@ -1,7 +1,7 @@
 // The viewer's pure parts (no window): script parsing and replay, the fly camera, the saved
 // render block. They run in the same binary as the window tests, under xvfb-run.
 #include "core/input_error.h"
-#include "scene/settings.h"
+#include "settings/settings.h"
 #include "viewer/fly_camera.h"
 #include "viewer/input_script.h"
 #include "viewer/settings_panel.h"

@@ -1,5 +1,5 @@
 // Resolving the settings table into FrameSettings, with the derived values.
-#include "scene/frame_settings.h"
+#include "settings/frame_settings.h"
 
 #include <shared/gather_data.h>
 #include <shared/light_trace_data.h>
@@ -15,7 +15,7 @@ namespace ispm {
 namespace {
 
 // The shaders compare against these constants; the settings table lists its choices in this
-// order (settings.cpp builds them from the arrays in frame_settings.h).
+// order (settings.cpp builds them from the arrays in setting_choices.h).
 static_assert(kToneMapChoices[gpu::kTonemapThesis] == "thesis");
 static_assert(kToneMapChoices[gpu::kTonemapFilmic] == "filmic");
 static_assert(kToneMapChoices[gpu::kTonemapLinear] == "linear");
@@ -66,7 +66,7 @@ constexpr int kMaxNeighbours = 256;
 // splat_resolution auto: half resolution from this image size on. The splat's cost follows its
 // fragments (Cornell box, 50,000 photons: 174 ms at 128 px, 460 at 256, 1,420 at 512 on
 // llvmpipe), and its light varies over several pixels from 256 px on, where the filter and the
-// upsample keep the error at full resolution's (README).
+// upsample keep the error at full resolution's (docs/results.md, "Frame times on llvmpipe").
 constexpr int kHalfResolutionFromPx = 256;
 
 // Image size whose derived filter is one iteration wide (steps of 1 pixel, +-2 pixels): at

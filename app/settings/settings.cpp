@@ -1,7 +1,7 @@
 // The settings table and the checks every value passes on its way in.
-#include "scene/settings.h"
+#include "settings/settings.h"
 
-#include "scene/frame_settings.h"
+#include "settings/setting_choices.h"
 
 #include "core/input_error.h"
 #include "core/strings.h"
