@@ -130,8 +130,10 @@ int runCli(int argc, char** argv) {
         "info", "Print the OpenGL context: path taken, vendor, renderer, version, limits");
 
     CLI::App* settingsCmd = app.add_subcommand(
-        "settings",
-        "Print the settings table (name, type, default, range, unit, meaning) as Markdown");
+        "settings", "Print the user settings by group (default, range, unit, meaning) as Markdown");
+    bool allSettings = false;
+    settingsCmd->add_flag("--all", allSettings,
+                          "every setting, advanced ones included: a table per group");
 
     std::string compareA;
     std::string compareB;
@@ -180,7 +182,9 @@ int runCli(int argc, char** argv) {
         }
         if (app.got_subcommand(infoCmd)) return runInfo();
         if (app.got_subcommand(settingsCmd)) {
-            std::fputs(formatSettingsMarkdown().c_str(), stdout);
+            const std::string table =
+                allSettings ? formatAllSettingsMarkdown() : formatUserSettingsMarkdown();
+            std::fputs(table.c_str(), stdout);
             return 0;
         }
         if (app.got_subcommand(compareCmd))

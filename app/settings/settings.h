@@ -1,10 +1,13 @@
-// The one table of render settings: every tunable is declared here once with its name, type,
-// default, range, unit and help. The JSON `render` block, `--set name=value`, the viewer's panels
-// and the bench sweeps are all driven by this table.
+// The one table of render settings: every tunable is declared here once with its name, group,
+// level, type, default, range, unit and one line of help. The JSON `render` block, `--set
+// name=value`, the viewer's panels, the bench sweeps and the tables of README.md and
+// docs/settings.md are all driven by this table.
 #pragma once
 
 #include <nlohmann/json_fwd.hpp>
 
+#include <array>
+#include <cstddef>
 #include <map>
 #include <span>
 #include <string>
@@ -15,8 +18,25 @@ namespace ispm {
 
 enum class SettingType { Int, Float, Enum };
 
+// The groups settings are listed in (README.md, `ispm settings`, the viewer's headers), in order.
+enum class SettingGroup { Image, Lights, Photons, Splat, Time, Post, ToneMap, Debug };
+inline constexpr std::array<std::string_view, 8> kSettingGroupNames = {
+    "image",           "lights and shadows", "photons", "splat and filter", "time and accumulation",
+    "post-processing", "tone map",           "debug"};
+std::string_view getGroupName(SettingGroup group);
+
+// User settings are what a user of a renderer sets (README lists them, the viewer shows them);
+// advanced ones tune the method (`ispm settings --all`, folded in the viewer).
+enum class SettingLevel { User, Advanced };
+
+// A help string is one line: what the setting does and its choices (docs/settings.md holds the
+// why and the measurements).
+inline constexpr size_t kMaxSettingHelpChars = 160;
+
 struct SettingDesc {
     std::string_view name;
+    SettingGroup group;
+    SettingLevel level;
     SettingType type;
     double defaultValue;   // for Enum: index into choices
     double minValue;       // inclusive
@@ -31,9 +51,12 @@ struct SettingDesc {
 std::span<const SettingDesc> getSettingTable();
 const SettingDesc* findSetting(std::string_view name);
 
-// The table as Markdown (name, type, default, range, unit, meaning): what README.md and
-// docs/scene-format.md show between their settings-table markers, and `ispm settings` prints.
-std::string formatSettingsMarkdown();
+// The user settings as one Markdown table, a group column first: what README.md shows between
+// its settings-table markers, and `ispm settings` prints.
+std::string formatUserSettingsMarkdown();
+// Every setting, a section (### group) and a table per group with each setting's level: what
+// docs/settings.md shows between its markers, and `ispm settings --all` prints.
+std::string formatAllSettingsMarkdown();
 
 class Settings;
 // The overrides as a scene file's `render` block: enums by choice name, integers as integers

@@ -113,43 +113,81 @@ double computeUntickedValue(const SettingDesc& desc, std::optional<double> deriv
     return desc.type == SettingType::Int ? std::round(clamped) : clamped;
 }
 
-bool drawSettingsPanel(Settings& settings, const DerivedValues& derived) {
+namespace {
+
+// One setting's row: a widget, or for a derived setting an "auto" box and the derived value.
+bool drawSetting(const SettingDesc& d, Settings& settings, const DerivedValues& derived) {
+    bool changed = false;
+    ImGui::PushID(d.name.data(), d.name.data() + d.name.size());
+    if (isWindowSetting(d.name)) {
+        ImGui::Text("%s: %d (follows the window)", std::string(d.name).c_str(),
+                    settings.getInt(d.name));
+    } else if (d.derived) {
+        // Derived settings: "auto" leaves the value to the renderer (from the scene).
+        bool isAuto = !settings.isSet(d.name);
+        const std::optional<double> value = derived(d.name);
+        if (ImGui::Checkbox("auto", &isAuto)) {
+            settings = isAuto ? removeSetting(settings, d.name) : settings;
+            if (!isAuto) settings.set(d.name, computeUntickedValue(d, value), kWhere);
+            changed = true;
+        }
+        ImGui::SameLine();
+        if (isAuto) {
+            // Wrapped: a long unit must not run past the panel's edge.
+            ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+            if (value) {
+                ImGui::TextWrapped("%s = %.4g %s (derived)", std::string(d.name).c_str(), *value,
+                                   std::string(d.unit).c_str());
+            } else {
+                ImGui::TextWrapped("%s (derived)", std::string(d.name).c_str());
+            }
+            ImGui::PopStyleColor();
+            showHelp(d);
+        } else {
+            changed = drawValue(d, settings);
+        }
+    } else {
+        changed = drawValue(d, settings);
+    }
+    ImGui::PopID();
+    return changed;
+}
+
+// The settings of one group at one level, in table order.
+bool drawSettings(SettingGroup group, SettingLevel level, Settings& settings,
+                  const DerivedValues& derived) {
     bool changed = false;
     for (const SettingDesc& d : getSettingTable()) {
-        ImGui::PushID(d.name.data(), d.name.data() + d.name.size());
-        if (isWindowSetting(d.name)) {
-            ImGui::Text("%s: %d (follows the window)", std::string(d.name).c_str(),
-                        settings.getInt(d.name));
-        } else if (d.derived) {
-            // Derived settings: "auto" leaves the value to the renderer (from the scene).
-            bool isAuto = !settings.isSet(d.name);
-            const std::optional<double> value = derived(d.name);
-            if (ImGui::Checkbox("auto", &isAuto)) {
-                settings = isAuto ? removeSetting(settings, d.name) : settings;
-                if (!isAuto) settings.set(d.name, computeUntickedValue(d, value), kWhere);
-                changed = true;
-            }
-            ImGui::SameLine();
-            if (isAuto) {
-                // Wrapped: a long unit must not run past the panel's edge.
-                ImGui::PushStyleColor(ImGuiCol_Text,
-                                      ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-                if (value) {
-                    ImGui::TextWrapped("%s = %.4g %s (derived)", std::string(d.name).c_str(),
-                                       *value, std::string(d.unit).c_str());
-                } else {
-                    ImGui::TextWrapped("%s (derived)", std::string(d.name).c_str());
-                }
-                ImGui::PopStyleColor();
-                showHelp(d);
-            } else {
-                changed |= drawValue(d, settings);
-            }
-        } else {
-            changed |= drawValue(d, settings);
+        if (d.group == group && d.level == level) changed |= drawSetting(d, settings, derived);
+    }
+    return changed;
+}
+
+bool hasSettings(SettingGroup group, SettingLevel level) {
+    const auto table = getSettingTable();
+    return std::any_of(table.begin(), table.end(),
+                       [&](const SettingDesc& d) { return d.group == group && d.level == level; });
+}
+
+} // namespace
+
+bool drawSettingsPanel(Settings& settings, const DerivedValues& derived) {
+    bool changed = false;
+    ImGui::PushID("settings groups"); // group names apart from the panel column's headers
+    for (size_t g = 0; g < kSettingGroupNames.size(); ++g) {
+        const auto group = static_cast<SettingGroup>(g);
+        const std::string name(kSettingGroupNames[g]);
+        if (!ImGui::CollapsingHeader(name.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) continue;
+        ImGui::PushID(name.c_str());
+        changed |= drawSettings(group, SettingLevel::User, settings, derived);
+        // The method's own knobs, folded until asked for.
+        if (hasSettings(group, SettingLevel::Advanced) && ImGui::TreeNode("advanced")) {
+            changed |= drawSettings(group, SettingLevel::Advanced, settings, derived);
+            ImGui::TreePop();
         }
         ImGui::PopID();
     }
+    ImGui::PopID();
     return changed;
 }
 

@@ -25,7 +25,8 @@ bool isWindowSetting(std::string_view name);
 // The value a derived setting takes now (what "auto" gives), when the caller knows it.
 using DerivedValues = std::function<std::optional<double>(std::string_view name)>;
 
-// Draws the widgets, each derived setting's current value beside its "auto"; returns true when
+// Draws the widgets by group, each group a collapsing header with its advanced settings folded
+// in a tree node, each derived setting's current value beside its "auto"; returns true when
 // `settings` changed.
 bool drawSettingsPanel(Settings& settings, const DerivedValues& derived);
 
