@@ -54,16 +54,11 @@ gl::WindowOptions makeWindowOptions(const Scene& scene, const ViewerOptions& opt
     return w;
 }
 
-gl::TimingMethod chooseTiming(const gl::Context& context) {
-    return context.getInfo().isSoftware ? gl::TimingMethod::CpuFinish
-                                        : gl::TimingMethod::TimerQuery;
-}
-
 } // namespace
 
 Viewer::Viewer(Scene scene, const ViewerOptions& options)
     : mScene(std::move(scene)), mOptions(options), mContext(makeWindowOptions(mScene, options)),
-      mWindow(mContext.getWindow()), mTiming(chooseTiming(mContext)),
+      mWindow(mContext.getWindow()), mTiming(gl::chooseTimingMethod(mContext.getInfo())),
       mRunner(std::make_unique<FrameRunner>(mScene, mScene.settings, mTiming)),
       mImGui(installCallbacks()), mReference(mTiming),
       mFly(mScene.camera, glm::length(mScene.computeWorldBounds().getExtent())),
