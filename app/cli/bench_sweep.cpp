@@ -3,7 +3,7 @@
 // so both sides share the machine, the context and the load. One CSV holds both (column `kind`).
 #include "cli/bench_sweep.h"
 
-#include "cli/bench_command.h"
+#include "cli/bench_options.h"
 #include "cli/cli_common.h"
 #include "core/input_error.h"
 #include "core/strings.h"
