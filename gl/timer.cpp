@@ -1,6 +1,7 @@
 // PassTimer: queries are recycled across frames so timing costs no allocations after warm-up.
 #include "gl/timer.h"
 
+#include "gl/context.h"
 #include "gl/gl.h"
 
 #include <cassert>
@@ -10,6 +11,10 @@ namespace gl {
 const char* getTimingMethodName(TimingMethod method) {
     return method == TimingMethod::TimerQuery ? "GPU timer queries"
                                               : "CPU clock around glFinish (software renderer)";
+}
+
+TimingMethod chooseTimingMethod(const ContextInfo& info) {
+    return info.isSoftware ? TimingMethod::CpuFinish : TimingMethod::TimerQuery;
 }
 
 void PassTimer::begin(const std::string& name) {

@@ -16,9 +16,15 @@
 
 namespace gl {
 
+struct ContextInfo;
+
 enum class TimingMethod { TimerQuery, CpuFinish };
 
 const char* getTimingMethodName(TimingMethod method);
+// The method that gives true pass times on this context: the CPU clock around glFinish on a
+// software renderer, whose timer queries read near zero; timer queries on a GPU, where they do
+// not stall the frame.
+TimingMethod chooseTimingMethod(const ContextInfo& info);
 
 class PassTimer {
   public:

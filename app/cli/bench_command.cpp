@@ -12,6 +12,7 @@
 #include "gl/context.h"
 #include "gl/debug.h"
 #include "gl/state.h"
+#include "gl/timer.h"
 #include "render/frame.h"
 #include "render/readback.h"
 #include "scene/scene_loader.h"
@@ -376,8 +377,7 @@ int runBench(const BenchOptions& options) {
 
     auto context = gl::createHeadlessContext();
     const gl::ContextInfo& info = context->getInfo();
-    const gl::TimingMethod timing =
-        info.isSoftware ? gl::TimingMethod::CpuFinish : gl::TimingMethod::TimerQuery;
+    const gl::TimingMethod timing = gl::chooseTimingMethod(info);
     FrameRunner runner(scene, settings, timing);
     warnIfLightFades(runner);
     int frameIndex = 0;

@@ -3,13 +3,14 @@
 // so both sides share the machine, the context and the load. One CSV holds both (column `kind`).
 #include "cli/bench_sweep.h"
 
-#include "cli/bench_command.h"
+#include "cli/bench_options.h"
 #include "cli/cli_common.h"
 #include "core/input_error.h"
 #include "core/strings.h"
 #include "gl/context.h"
 #include "gl/debug.h"
 #include "gl/state.h"
+#include "gl/timer.h"
 #include "image/image_io.h"
 #include "image/metrics.h"
 #include "render/readback.h"
@@ -528,8 +529,7 @@ int runBenchSweep(const BenchOptions& options, const std::string& scenePath, con
 
     auto context = gl::createHeadlessContext();
     const gl::ContextInfo& info = context->getInfo();
-    const gl::TimingMethod timing =
-        info.isSoftware ? gl::TimingMethod::CpuFinish : gl::TimingMethod::TimerQuery;
+    const gl::TimingMethod timing = gl::chooseTimingMethod(info);
     const int configCount = static_cast<int>(plan.configs.size());
     std::printf("bench sweep %s: %dx%d, %d configurations x (%d warm-up + %d timed frames)%s; "
                 "path tracer to %d spp, bounces=%d\n",

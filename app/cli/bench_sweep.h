@@ -4,6 +4,7 @@
 // speedup.
 #pragma once
 
+#include "cli/bench_options.h"
 #include "cli/bench_stats.h"
 #include "render/frame.h"
 #include "scene/scene.h"
@@ -12,8 +13,6 @@
 #include <vector>
 
 namespace ispm {
-
-struct BenchOptions;
 
 // True when the options ask for a sweep (--sweep, --reference or --csv): runBench hands over.
 bool isSweepRequested(const BenchOptions& options);

@@ -37,9 +37,7 @@ int runInfo() {
                 info.isSoftware ? " (software)" : "");
     std::printf("version:       %s\n", info.version.c_str());
     std::printf("GLSL:          %s\n", info.glslVersion.c_str());
-    std::printf("pass timing:   %s\n",
-                gl::getTimingMethodName(info.isSoftware ? gl::TimingMethod::CpuFinish
-                                                        : gl::TimingMethod::TimerQuery));
+    std::printf("pass timing:   %s\n", gl::getTimingMethodName(gl::chooseTimingMethod(info)));
     for (const gl::ContextLimit& l : gl::queryContextLimits())
         std::printf("%-26s %lld\n", l.name, static_cast<long long>(l.value));
     return 0;

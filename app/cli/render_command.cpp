@@ -6,6 +6,7 @@
 #include "core/strings.h"
 #include "gl/context.h"
 #include "gl/debug.h"
+#include "gl/timer.h"
 #include "image/image_io.h"
 #include "render/frame.h"
 #include "render/photon_points.h"
@@ -299,8 +300,7 @@ int runRender(const RenderOptions& options) {
     if (isReference) return runReference(options, scene, settings, start);
 
     auto context = gl::createHeadlessContext();
-    const gl::TimingMethod timing =
-        context->getInfo().isSoftware ? gl::TimingMethod::CpuFinish : gl::TimingMethod::TimerQuery;
+    const gl::TimingMethod timing = gl::chooseTimingMethod(context->getInfo());
     FrameRunner runner(scene, settings, timing);
     if (photonAov && !runner.hasIndirect()) {
         throw InputError(strCat("--aov: '", options.aov,

@@ -1,41 +1,25 @@
 // The viewer's frame loop: input (window and script) -> camera and settings -> FrameRunner ->
 // debug view -> ImGui panels -> screenshots -> present.
 #include "viewer/viewer.h"
-#include "settings/frame_settings.h"
 #include "viewer/viewer_app.h"
 
 #include "core/input_error.h"
 #include "core/strings.h"
-#include "gl/context.h"
 #include "gl/debug.h"
-#include "gl/gl.h" // before GLFW: glad's header must come first
 #include "gl/state.h"
-#include "gl/timer.h"
-#include "render/frame.h"
 #include "render/gbuffer.h"
-#include "render/photon_points.h"
 #include "scene/scene_loader.h"
-#include "viewer/animation_panel.h"
-#include "viewer/debug_view.h"
-#include "viewer/fly_camera.h"
-#include "viewer/imgui_layer.h"
-#include "viewer/reference_view.h"
-
-#include <GLFW/glfw3.h>
+#include "settings/frame_settings.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <memory>
 
 namespace ispm {
 namespace {
 
 constexpr float kScriptFrameSeconds = 1.0f / 60.0f; // scripted keys move as at 60 Hz, always
 constexpr float kMaxFrameSeconds = 0.1f;            // a stall must not fling the camera away
-// Stats-panel read-backs (photon counts, white point) every this many frames: a few times a
-// second at interactive rates, instead of a GPU wait every frame.
-constexpr uint64_t kStatsReadbackFrames = 8;
 // A window with nothing happening is redrawn this often while a frame is drawn in slices (ImGui's
 // hover tooltips and text caret move on time, not on events).
 constexpr double kIdleRedrawMs = 100.0;
@@ -54,70 +38,24 @@ gl::WindowOptions makeWindowOptions(const Scene& scene, const ViewerOptions& opt
     return w;
 }
 
-gl::TimingMethod chooseTiming(const gl::Context& context) {
-    return context.getInfo().isSoftware ? gl::TimingMethod::CpuFinish
-                                        : gl::TimingMethod::TimerQuery;
-}
-
 } // namespace
 
 Viewer::Viewer(Scene scene, const ViewerOptions& options)
     : mScene(std::move(scene)), mOptions(options), mContext(makeWindowOptions(mScene, options)),
-      mWindow(mContext.getWindow()), mTiming(chooseTiming(mContext)),
+      mWindow(mContext.getWindow()), mTiming(gl::chooseTimingMethod(mContext.getInfo())),
       mRunner(std::make_unique<FrameRunner>(mScene, mScene.settings, mTiming)),
-      mImGui(installCallbacks()), mReference(mTiming),
-      mFly(mScene.camera, glm::length(mScene.computeWorldBounds().getExtent())),
-      mScript(options.script) {
+      mInput(mWindow, mScene, options.script), mImGui(mWindow), mReference(mTiming),
+      mPanels(mScene.sourcePath) {
     if (!options.referencePath.empty()) mReference.load(options.referencePath);
-    mScenePaths = listScenesBeside(mScene.sourcePath);
     mLastTime = glfwGetTime();
-    glfwGetCursorPos(mWindow, &mLastCursor.x, &mLastCursor.y);
-    mInput.setCursor(mLastCursor);
 }
 
-Viewer& Viewer::getViewer(GLFWwindow* window) {
-    return *static_cast<Viewer*>(glfwGetWindowUserPointer(window));
-}
-
-// Events, not polled state: a click, a key tapped or a character typed between two slow frames
-// (a software renderer) reaches ImGui and the camera in its order (InputQueue).
-GLFWwindow* Viewer::installCallbacks() {
-    glfwSetWindowUserPointer(mWindow, this);
-    glfwSetCursorPosCallback(mWindow, [](GLFWwindow* w, double x, double y) {
-        getViewer(w).mInput.push(InputEvent::move({x, y}));
-    });
-    glfwSetMouseButtonCallback(mWindow, [](GLFWwindow* w, int button, int action, int mods) {
-        (void)mods;
-        getViewer(w).mInput.push(InputEvent::button(button, action == GLFW_PRESS));
-    });
-    glfwSetScrollCallback(mWindow, [](GLFWwindow* w, double dx, double dy) {
-        (void)dx;
-        getViewer(w).mInput.push(InputEvent::wheel(dy));
-    });
-    glfwSetKeyCallback(mWindow, [](GLFWwindow* w, int key, int scancode, int action, int mods) {
-        (void)scancode;
-        if (action == GLFW_REPEAT) return; // held keys stay down until released
-        getViewer(w).mInput.push(InputEvent::key(key, action == GLFW_PRESS, mods));
-    });
-    glfwSetCharCallback(mWindow, [](GLFWwindow* w, unsigned int c) {
-        getViewer(w).mInput.push(InputEvent::character(c));
-    });
-    return mWindow;
-}
-
-// F5 and F12 act whatever has the keyboard; F1, F2 and Ctrl+Q (quit) unless a text field has it.
-void Viewer::handleKeys(const FrameInput& input) {
-    const bool typing = mImGui.isCapturingKeyboard();
-    for (const InputEvent& e : input.events) {
-        if (e.kind != InputEvent::Kind::Key || !e.down) continue;
-        if (e.code == GLFW_KEY_F12) mScreenshotRequested = true;
-        if (e.code == GLFW_KEY_F5) mReloadRequested = true;
-        if (e.code == GLFW_KEY_F1 && !typing) mShowHelp = !mShowHelp;
-        if (e.code == GLFW_KEY_F2 && !typing) mShowFrameRate = !mShowFrameRate;
-        if (e.code == GLFW_KEY_Q && (e.mods & GLFW_MOD_CONTROL) != 0 && !typing) {
-            glfwSetWindowShouldClose(mWindow, GLFW_TRUE);
-        }
-    }
+void Viewer::applyKeys(const ViewerKeys& keys) {
+    if (keys.screenshot) mScreenshotRequested = true;
+    if (keys.reloadShaders) mReloadRequested = true;
+    if (keys.toggleHelp) mPanels.toggleHelp();
+    if (keys.toggleFrameRate) mPanels.toggleFrameRate();
+    if (keys.quit) glfwSetWindowShouldClose(mWindow, GLFW_TRUE);
 }
 
 void Viewer::applySettings(const Settings& settings) {
@@ -132,14 +70,15 @@ void Viewer::reloadShaders() {
     mDrawer.reloadPrograms(report);
     mPointsDrawer.reloadPrograms(report);
     mReference.reloadPrograms(report);
-    mShaderError = !report.errors.empty();
-    mShaderStatus = strCat("shaders: rebuilt ", report.rebuilt, " of ", report.checked, " programs",
-                           mShaderError ? strCat(", ", report.errors.size(), " failed (old kept):")
-                                        : std::string());
+    const bool failed = !report.errors.empty();
+    std::string status =
+        strCat("shaders: rebuilt ", report.rebuilt, " of ", report.checked, " programs",
+               failed ? strCat(", ", report.errors.size(), " failed (old kept):") : std::string());
     for (const std::string& error : report.errors)
-        mShaderStatus += "\n" + error;
-    std::fprintf(mShaderError ? stderr : stdout, "%s\n", mShaderStatus.c_str());
-    std::fflush(mShaderError ? stderr : stdout);
+        status += "\n" + error;
+    mPanels.setShaderStatus(status, failed);
+    std::fprintf(failed ? stderr : stdout, "%s\n", status.c_str());
+    std::fflush(failed ? stderr : stdout);
 }
 
 // The render region is the window minus the panel column: keep width/height in step with it.
@@ -155,31 +94,6 @@ void Viewer::syncRenderSize() {
     applySettings(next);
 }
 
-// The camera's share of this frame's events: ImGui has seen them (beginFrame), so its capture
-// flags are those of this frame, not the last one.
-CameraInput Viewer::readUserInput(const FrameInput& in) {
-    CameraInput input;
-    const bool panelHasMouse = mImGui.isCapturingMouse();
-    for (const InputEvent& e : in.events) {
-        // A drag belongs to the camera only if it started outside the panels.
-        if (e.kind == InputEvent::Kind::Button && e.code == kMouseLeft) {
-            mDragging = e.down && !panelHasMouse;
-        }
-        if (e.kind == InputEvent::Kind::Move) {
-            if (mDragging) input.dragPx += glm::vec2(e.cursor - mLastCursor);
-            mLastCursor = e.cursor;
-        }
-        if (e.kind == InputEvent::Kind::Scroll && !panelHasMouse) {
-            input.wheel += static_cast<float>(e.scroll);
-        }
-    }
-    mCameraKeys.apply(in, mImGui.isCapturingKeyboard());
-    for (const KeyAxis& k : kMoveKeys) {
-        if (mCameraKeys.isHeld(k.key)) input.move += k.move;
-    }
-    return input;
-}
-
 // Loads another scene with the command line's settings on top and the window's size; a bad file
 // is reported in the panel and the current scene stays.
 void Viewer::switchScene(const std::string& path) {
@@ -187,7 +101,7 @@ void Viewer::switchScene(const std::string& path) {
     try {
         next = loadScene(path);
     } catch (const InputError& e) {
-        setStatus(e.what(), true);
+        mOutput.setStatus(e.what(), true);
         return;
     }
     next.settings.merge(mOptions.commandLine);
@@ -198,32 +112,47 @@ void Viewer::switchScene(const std::string& path) {
     mScene = std::move(next);
     mContext.setTitle(makeWindowTitle(mScene));
     mRunner = std::make_unique<FrameRunner>(mScene, mScene.settings, mTiming);
-    mFly = FlyCamera(mScene.camera, glm::length(mScene.computeWorldBounds().getExtent()));
+    mInput.resetFly(mScene);
     mLightEdit = LightEdit::None;
-    setStatus(strCat("loaded ", path), false);
+    mOutput.setStatus(strCat("loaded ", path), false);
+}
+
+PanelContext Viewer::makePanelContext() {
+    return {mScene,
+            *mRunner,
+            mReference,
+            mInput.getFly(),
+            mOutput,
+            mClock,
+            mPacer,
+            mContext,
+            mWindowWidth,
+            mWindowHeight,
+            [this](const Settings& settings) { applySettings(settings); }};
 }
 
 void Viewer::drawFrame() {
     gl::applyState({});
     gl::bindDefaultFramebuffer(mWindowWidth, mWindowHeight);
     gl::clearDefaultFramebuffer(glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
-    const DebugView& view = mViews[static_cast<size_t>(mViewIndex)];
+    const DebugView& view = mPanels.getView();
     if (view.source == DebugView::Source::Reference) {
-        mReference.draw(*mRunner, view.referenceMode, mTransform.exposureStops, mRunner->getWidth(),
-                        mRunner->getHeight());
+        mReference.draw(*mRunner, view.referenceMode, mPanels.getTransform().exposureStops,
+                        mRunner->getWidth(), mRunner->getHeight());
     } else {
-        mDrawer.draw(*mRunner, view, mTransform, mRunner->getWidth(), mRunner->getHeight());
+        mDrawer.draw(*mRunner, view, mPanels.getTransform(), mRunner->getWidth(),
+                     mRunner->getHeight());
     }
     // Points are placed with the viewer camera: not over a light camera's image.
-    const DebugView::Source source = mViews[static_cast<size_t>(mViewIndex)].source;
-    if (source != DebugView::Source::LightGBuffer && source != DebugView::Source::LightImportance) {
+    if (view.source != DebugView::Source::LightGBuffer &&
+        view.source != DebugView::Source::LightImportance) {
         gl::bindDefaultFramebuffer(mRunner->getWidth(), mRunner->getHeight());
-        mPointsDrawer.draw(*mRunner, mPoints, mPointsColour);
+        mPointsDrawer.draw(*mRunner, mPanels.getPoints(), mPanels.getPointsColour());
     }
     gl::bindDefaultFramebuffer(mWindowWidth, mWindowHeight);
-    drawPanels();
-    if (mShowFrameRate) drawFrameRateOverlay();
-    if (mShowHelp) drawHelp();
+    const PanelRequests requests = mPanels.draw(makePanelContext());
+    mLightEdit = requests.lightEdit; // the last frame's was applied before this draw
+    if (!requests.scenePath.empty()) mPendingScenePath = requests.scenePath;
     if (view.referenceMode == ReferenceMode::HeatMap &&
         mReference.hasReference(mRunner->getWidth(), mRunner->getHeight())) {
         mReference.drawLegendLabels(mRunner->getHeight());
@@ -231,21 +160,39 @@ void Viewer::drawFrame() {
     mImGui.endFrame();
 }
 
+bool Viewer::isQuiet(double sinceDrawnMs) const {
+    if (!mRunner->isFrameInProgress() || !mInput.isIdle()) return false;
+    return sinceDrawnMs < kIdleRedrawMs && !mScene.isAnimated() && mPendingScenePath.empty();
+}
+
+// The camera flies (the script's input at a fixed step, the user's by the wall clock) and edits
+// of the lights and the animation reach the runner; the reference restarts on any of them.
+void Viewer::updateCameraAndScene(const CameraInput& scripted, const FrameInput& input,
+                                  float seconds) {
+    const Camera before = mScene.camera;
+    mInput.getFly().update(scripted, kScriptFrameSeconds, mScene.camera);
+    const CameraInput user =
+        mInput.readCamera(input, mImGui.isCapturingMouse(), mImGui.isCapturingKeyboard());
+    mInput.getFly().update(user, seconds, mScene.camera);
+    if (!isSameCamera(before, mScene.camera) || mLightEdit != LightEdit::None) {
+        mReference.restart();
+    }
+    // Edits wait for the next rendered frame (the runner keeps them until then), but lights
+    // added or removed drop the frame in progress.
+    if (mLightEdit == LightEdit::Values) mRunner->updateScene();
+    if (mLightEdit == LightEdit::AddedOrRemoved) mRunner->rebuildScene();
+    mLightEdit = LightEdit::None;
+    if (mScene.isAnimated() && advanceAnimationClock(mClock, seconds)) {
+        mScene.update(mClock.timeS);
+        mRunner->updateScene();
+        mReference.restart(); // a path-traced reference of another moment would be stale
+    }
+}
+
 // One UI frame: events, panels and the picture at their own rate (FramePacer); the rendered
 // frame goes on in slices between them and is shown when done. Scripts advance with rendered
 // frames (a `wait 3` is three pictures) and --frames counts them, so scripted runs see the
 // frames they asked for.
-bool Viewer::isQuiet(double sinceDrawnMs) const {
-    if (!mRunner->isFrameInProgress() || !mInput.isEmpty() || mDragging) return false;
-    if (sinceDrawnMs >= kIdleRedrawMs || mScene.isAnimated() || !mPendingScenePath.empty()) {
-        return false;
-    }
-    for (const KeyAxis& k : kMoveKeys) {
-        if (mCameraKeys.isHeld(k.key)) return false; // the camera flies on every UI frame
-    }
-    return true;
-}
-
 int Viewer::run() {
     using Clock = std::chrono::steady_clock;
     const auto msBetween = [](Clock::time_point a, Clock::time_point b) {
@@ -285,46 +232,19 @@ int Viewer::run() {
         // A frame done in a quiet slice is shown (and its script outputs written) before the
         // script goes on.
         const bool atFrameStart = !mRunner->isFrameInProgress() && !renderedQuietly;
-        // Said the frame after the last command's, so that its outputs saw the panel before.
-        const bool scriptInputSeen = mInput.getTakenCount() >= mScriptInputEnd;
-        if (atFrameStart && !mScriptDone && !mOptions.script.empty() && mScript.isFinished() &&
-            scriptInputSeen) {
-            mScriptDone = true;
-            setStatus(strCat("script finished (", mOptions.script.size(), " commands)"), false);
-        }
-        // A script's clicks and keys go through the queue as the window's do; the script goes on
-        // once they have all reached a frame (the user's own events do not hold it up).
-        if (atFrameStart && scriptInputSeen) {
-            for (const ScriptCommand* c : mScript.advanceFrame())
-                runScriptCommand(*c, scripted, afterFrame);
-        }
+        if (atFrameStart) advanceScript(scripted, afterFrame);
         const FrameInput input = mInput.takeFrame();
         mImGui.beginFrame(input);
-        handleKeys(input);
+        applyKeys(ViewerInput::readKeys(input, mImGui.isCapturingKeyboard()));
         if (mReloadRequested) reloadShaders();
         mReloadRequested = false;
-        const Camera before = mScene.camera;
-        mFly.update(scripted, kScriptFrameSeconds, mScene.camera);
-        mFly.update(readUserInput(input), seconds, mScene.camera);
-        if (!isSameCamera(before, mScene.camera) || mLightEdit != LightEdit::None) {
-            mReference.restart();
-        }
-        // Edits wait for the next rendered frame (the runner keeps them until then), but lights
-        // added or removed drop the frame in progress.
-        if (mLightEdit == LightEdit::Values) mRunner->updateScene();
-        if (mLightEdit == LightEdit::AddedOrRemoved) mRunner->rebuildScene();
-        mLightEdit = LightEdit::None;
-        if (mScene.isAnimated() && advanceAnimationClock(mClock, seconds)) {
-            mScene.update(mClock.timeS);
-            mRunner->updateScene();
-            mReference.restart(); // a path-traced reference of another moment would be stale
-        }
+        updateCameraAndScene(scripted, input, seconds);
 
         if (!mRunner->isFrameInProgress() && !renderedQuietly) {
             mRunner->setTimeStep(sinceFrameBeganS); // eye adaptation follows the wall clock
             sinceFrameBeganS = 0.0;
             renderFrameStart = Clock::now();
-            const DebugView& shown = mViews[static_cast<size_t>(mViewIndex)];
+            const DebugView& shown = mPanels.getView();
             mRunner->setKeepVelocity(shown.source == DebugView::Source::ViewerGBuffer &&
                                      getGBufferChannels()[shown.channel].name == "velocity");
             mRunner->beginFrame(mPacer.getRenderBudgetMs());
@@ -336,19 +256,9 @@ int Viewer::run() {
             mPacer.recordRenderFrame(msBetween(renderFrameStart, Clock::now()));
         }
         if (rendered) {
-            // Counts and the white point are read back for the Stats panel only, every few
-            // frames: a read-back waits for the GPU to finish the frame.
-            if (mFrameIndex++ % kStatsReadbackFrames == 0) {
-                mCounts = mRunner->readPhotonCounts();
-                mLuminanceMax = mRunner->readLuminanceMax();
-            }
+            mPanels.readStats(*mRunner);
             mReference.update(mScene, *mRunner);
-            // The frame row counts the in-viewer path tracer too, when it ran this frame.
-            std::vector<PassTiming> timings = mRunner->getLastTimings();
-            if (const std::optional<PassTiming> traced = mReference.getFrameTiming()) {
-                timings.push_back(*traced);
-            }
-            mTimings.record(timings);
+            mPanels.recordTimings(*mRunner, mReference);
         }
 
         drawFrame();
@@ -358,11 +268,11 @@ int Viewer::run() {
                 writeScriptOutput(*c);
             afterFrame.clear();
         }
-        if (mScreenshotRequested) takeNumberedScreenshot();
+        if (mScreenshotRequested) mOutput.takeNumberedScreenshot(mWindowWidth, mWindowHeight);
         mScreenshotRequested = false;
         if (rendered) ++frame;
         if (rendered && frame == mOptions.maxFrames && !mOptions.screenshotPath.empty()) {
-            takeScreenshot(mOptions.screenshotPath);
+            mOutput.takeScreenshot(mOptions.screenshotPath, mWindowWidth, mWindowHeight);
         }
         glfwSwapBuffers(mWindow);
         const Clock::time_point end = Clock::now();

@@ -1,46 +1,26 @@
-// The viewer's panel column: scene picker, view, reference, camera, settings, lights, animation
-// and stats, right of the rendered region.
-#include "viewer/viewer_app.h"
+// PanelColumn: one ImGui window at the right of the rendered region whose collapsing headers hold
+// the panels, and the state the panels edit; the message line is a footer under them.
+#include "viewer/viewer_panel_column.h"
 
-#include "core/strings.h"
 #include "render/gpu_scene.h"
 #include "render/photon_density_pass.h"
 #include "render/splat_pass.h"
-#include "scene/scene_loader.h"
+#include "viewer/settings_panel.h"
+#include "viewer/viewer_overlays.h"
 
 #include <imgui.h>
 
 #include <algorithm>
-#include <array>
 #include <cstdio>
 #include <filesystem>
-#include <utility>
 
 namespace ispm {
 namespace {
 
 constexpr float kMaxExposureStops = 20.0f; // the debug view's exposure slider
-constexpr float kOverlayMarginPx = 4.0f;
-constexpr float kOverlayAlpha = 0.6f; // the frame-rate overlay's backing
-constexpr size_t kOverlayTextSize = 64;
-constexpr float kHelpKeyColumnEm = 8.0f; // where the help window's descriptions start
-constexpr std::array<std::pair<const char*, const char*>, 12> kHelpLines = {{
-    {"W A S D", "fly forward, left, back, right"},
-    {"Q / E", "fly down / up"},
-    {"left drag", "look around (in the scene region)"},
-    {"wheel", "flying speed (in the scene region)"},
-    {"F1", "this help"},
-    {"F2", "frame rate overlay on/off"},
-    {"F5", "reload the shaders that changed on disk"},
-    {"F12", "screenshot (ispm_screenshot_N.png, this folder)"},
-    {"Ctrl+Q", "quit"},
-    {"Ctrl+click", "type a value into a slider or drag field"},
-    {"hover", "a setting's help, unit and range"},
-    {"Esc", "leave a text field without applying it"},
-}};
-constexpr float kMaxStatusLines = 4.0f; // the message footer's height at most
-const ImVec4 kErrorColour(1.0f, 0.4f, 0.4f, 1.0f);
-const ImVec4 kOkColour(0.6f, 0.9f, 0.6f, 1.0f);
+// Stats-panel read-backs (photon counts, white point) every this many frames: a few times a
+// second at interactive rates, instead of a GPU wait every frame.
+constexpr uint64_t kStatsReadbackFrames = 8;
 
 } // namespace
 
@@ -86,195 +66,200 @@ bool usesViewStops(const DebugView& view) {
     return !(view.source == DebugView::Source::Aov && view.aov == Aov::Display);
 }
 
-void Viewer::drawPanels() {
-    const int renderWidth = mRunner->getWidth();
-    ImGui::SetNextWindowPos(ImVec2(static_cast<float>(renderWidth), 0.0f));
+PanelColumn::PanelColumn(const std::string& scenePath) : mScenePaths(listScenesBeside(scenePath)) {}
+
+PanelRequests PanelColumn::draw(const PanelContext& context) {
+    PanelRequests requests;
+    FrameRunner& runner = context.runner;
+    Scene& scene = context.scene;
+    ImGui::SetNextWindowPos(ImVec2(static_cast<float>(runner.getWidth()), 0.0f));
     ImGui::SetNextWindowSize(
-        ImVec2(static_cast<float>(kPanelWidthPx), static_cast<float>(mWindowHeight)));
+        ImVec2(static_cast<float>(kPanelWidthPx), static_cast<float>(context.windowHeight)));
     ImGui::Begin("ispm", nullptr,
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                      ImGuiWindowFlags_NoSavedSettings);
     // The message line (a file written, a path refused, the script's end) is a footer: visible
     // without scrolling, and its coming and going moves no widget above it.
-    const float footerHeight = computeStatusFooterHeight();
+    const float footerHeight = context.output.computeFooterHeight();
     ImGui::BeginChild("panels", ImVec2(0.0f, -footerHeight));
     // Widgets leave room for the widest label on their right: none is cut at the panel's edge.
     ImGui::PushItemWidth(-computeSettingsLabelWidth());
-    drawScenePicker();
-    if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) {
-        const DebugView& current = mViews[static_cast<size_t>(mViewIndex)];
-        if (ImGui::BeginCombo("debug view", current.name.c_str())) {
-            for (size_t i = 0; i < mViews.size(); ++i) {
-                if (ImGui::Selectable(mViews[i].name.c_str(), static_cast<int>(i) == mViewIndex)) {
-                    mViewIndex = static_cast<int>(i);
-                }
-            }
-            ImGui::EndCombo();
-        }
-        // Display is the tone-mapped frame: its brightness is the exposure setting.
-        const bool stops = usesViewStops(current);
-        ImGui::BeginDisabled(!stops);
-        ImGui::SliderFloat("view stops", &mTransform.exposureStops, -kMaxExposureStops,
-                           kMaxExposureStops);
-        ImGui::EndDisabled();
-        recordItem("view stops");
-        if (!stops) {
-            ImGui::SameLine();
-            ImGui::TextDisabled("(?)");
-            recordItem("view stops help");
-            if (ImGui::IsItemHovered()) {
-                showWrappedTooltip("view stops scale the linear views; display is tone mapped: "
-                                   "set its brightness with the exposure setting");
-            }
-        }
-        if (current.source == DebugView::Source::Reference) {
-            // The region stays black without a reference: say why here, not only under the
-            // (collapsed) Reference header.
-            const std::string missing =
-                mReference.describeMissing(mRunner->getWidth(), mRunner->getHeight());
-            if (!missing.empty()) {
-                ImGui::PushStyleColor(ImGuiCol_Text, kErrorColour);
-                ImGui::TextWrapped("%s", missing.c_str());
-                ImGui::PopStyleColor();
-            }
-        }
-        int points = static_cast<int>(mPoints);
-        if (ImGui::Combo("photon points", &points, kPhotonPointsNames.data(),
-                         static_cast<int>(kPhotonPointsNames.size()))) {
-            mPoints = static_cast<PhotonPoints>(points);
-        }
-        if (mPoints != PhotonPoints::None) {
-            int colour = static_cast<int>(mPointsColour);
-            if (ImGui::Combo("point colour", &colour, kPhotonColourNames.data(),
-                             static_cast<int>(kPhotonColourNames.size()))) {
-                mPointsColour = static_cast<PhotonColour>(colour);
-            }
-            drawPointColourLegend();
-        }
-        if (current.source == DebugView::Source::LightGBuffer ||
-            current.source == DebugView::Source::LightImportance) {
-            const int layers = mRunner->getLightGBuffer().getLayers();
-            ImGui::SliderInt("light camera", &mTransform.lightLayer, 0, std::max(0, layers - 1));
-        }
-        ImGui::Checkbox("frame rate overlay (F2)", &mShowFrameRate);
-        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-        ImGui::TextWrapped("F1: keys   F12: screenshot   F5: reload shaders   Ctrl+Q: quit");
-        ImGui::PopStyleColor();
-        if (!mShaderStatus.empty()) {
-            ImGui::PushStyleColor(ImGuiCol_Text, mShaderError ? kErrorColour : kOkColour);
-            ImGui::TextWrapped("%s", mShaderStatus.c_str());
-            ImGui::PopStyleColor();
-        }
-    }
-    if (ImGui::CollapsingHeader("Reference")) mReference.drawPanel(*mRunner);
+    drawScenePicker(context, requests);
+    if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) drawViewSection(context);
+    if (ImGui::CollapsingHeader("Reference")) context.reference.drawPanel(runner);
     if (ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen)) {
-        float speed = mFly.getSpeed();
+        float speed = context.fly.getSpeed();
         if (ImGui::DragFloat("speed m/s", &speed, speed * 0.01f, 1e-4f, 1e6f, "%.3g")) {
-            mFly.setSpeed(speed);
+            context.fly.setSpeed(speed);
         }
-        const glm::vec3& p = mScene.camera.position;
+        const glm::vec3& p = scene.camera.position;
         ImGui::Text("position %.3f %.3f %.3f", static_cast<double>(p.x), static_cast<double>(p.y),
                     static_cast<double>(p.z));
-        if (ImGui::Button("reset camera")) mFly.reset(mScene.camera);
+        if (ImGui::Button("reset camera")) context.fly.reset(scene.camera);
     }
     if (ImGui::CollapsingHeader("Settings", ImGuiTreeNodeFlags_DefaultOpen)) {
         // "save" first: the table is long.
         ImGui::InputText("##savepath", mSavePath.data(), mSavePath.size());
         recordItem("save path");
         ImGui::SameLine();
-        if (ImGui::Button("save")) saveSettings(mSavePath.data());
+        if (ImGui::Button("save"))
+            context.output.saveSettings(mSavePath.data(), runner.getSettings());
         recordItem("save");
-        Settings edited = mRunner->getSettings();
+        Settings edited = runner.getSettings();
         const auto derived = [&](std::string_view name) {
-            return findDerivedValue(*mRunner, mLuminanceMax, name);
+            return findDerivedValue(runner, mLuminanceMax, name);
         };
-        if (drawSettingsPanel(edited, derived)) applySettings(edited);
+        if (drawSettingsPanel(edited, derived)) context.applySettings(edited);
     }
     if (ImGui::CollapsingHeader("Lights")) {
-        const LightEdit edit =
-            drawLightsPanel(mScene.lights, mScene.camera.position,
-                            glm::length(mScene.computeWorldBounds().getExtent()));
-        if (edit != LightEdit::None && mLightEdit != LightEdit::AddedOrRemoved) mLightEdit = edit;
+        requests.lightEdit = drawLightsPanel(scene.lights, scene.camera.position,
+                                             glm::length(scene.computeWorldBounds().getExtent()));
     }
-    if (mScene.isAnimated() && ImGui::CollapsingHeader("Animation")) drawAnimationPanel(mClock);
+    if (scene.isAnimated() && ImGui::CollapsingHeader("Animation")) {
+        drawAnimationPanel(context.clock);
+    }
     if (ImGui::CollapsingHeader("Stats", ImGuiTreeNodeFlags_DefaultOpen)) {
-        drawStatsPanel(mTimings, mCounts, mContext.getInfo().renderer,
-                       gl::getTimingMethodName(mRunner->getTimingMethod()), mLuminanceMax,
-                       mRunner->getAccumulatedFrames());
+        drawStatsPanel(mTimings, mCounts, context.window.getInfo().renderer,
+                       gl::getTimingMethodName(runner.getTimingMethod()), mLuminanceMax,
+                       runner.getAccumulatedFrames());
     }
     ImGui::PopItemWidth();
     ImGui::EndChild();
-    if (!mStatus.empty()) {
-        ImGui::Separator();
-        ImGui::BeginChild("message");
-        ImGui::PushStyleColor(ImGuiCol_Text, mStatusIsError ? kErrorColour : kOkColour);
-        ImGui::TextWrapped("%s", mStatus.c_str());
-        ImGui::PopStyleColor();
-        ImGui::EndChild();
-    }
+    context.output.drawFooter();
     ImGui::End();
+    if (mShowFrameRate)
+        drawFrameRateOverlay(context.pacer, runner.getWidth(), context.windowHeight);
+    if (mShowHelp) drawHelpWindow(mShowHelp, context.windowWidth, context.windowHeight);
+    return requests;
 }
 
-// The message's wrapped height, a few lines at most (a longer one scrolls), with the separator.
-float Viewer::computeStatusFooterHeight() const {
-    if (mStatus.empty()) return 0.0f;
-    const ImGuiStyle& style = ImGui::GetStyle();
-    const float width = ImGui::GetContentRegionAvail().x;
-    const float textHeight = ImGui::CalcTextSize(mStatus.c_str(), nullptr, false, width).y;
-    const float maxHeight = kMaxStatusLines * ImGui::GetTextLineHeightWithSpacing();
-    return std::min(textHeight, maxHeight) + 2.0f * style.ItemSpacing.y + style.WindowPadding.y;
+void PanelColumn::drawViewSection(const PanelContext& context) {
+    const DebugView& current = getView();
+    if (ImGui::BeginCombo("debug view", current.name.c_str())) {
+        for (size_t i = 0; i < mViews.size(); ++i) {
+            if (ImGui::Selectable(mViews[i].name.c_str(), static_cast<int>(i) == mViewIndex)) {
+                mViewIndex = static_cast<int>(i);
+            }
+        }
+        ImGui::EndCombo();
+    }
+    // Display is the tone-mapped frame: its brightness is the exposure setting.
+    const bool stops = usesViewStops(current);
+    ImGui::BeginDisabled(!stops);
+    ImGui::SliderFloat("view stops", &mTransform.exposureStops, -kMaxExposureStops,
+                       kMaxExposureStops);
+    ImGui::EndDisabled();
+    recordItem("view stops");
+    if (!stops) {
+        ImGui::SameLine();
+        ImGui::TextDisabled("(?)");
+        recordItem("view stops help");
+        if (ImGui::IsItemHovered()) {
+            showWrappedTooltip("view stops scale the linear views; display is tone mapped: "
+                               "set its brightness with the exposure setting");
+        }
+    }
+    const FrameRunner& runner = context.runner;
+    if (current.source == DebugView::Source::Reference) {
+        // The region stays black without a reference: say why here, not only under the
+        // (collapsed) Reference header.
+        const std::string missing =
+            context.reference.describeMissing(runner.getWidth(), runner.getHeight());
+        if (!missing.empty()) drawMessageText(missing, true);
+    }
+    int points = static_cast<int>(mPoints);
+    if (ImGui::Combo("photon points", &points, kPhotonPointsNames.data(),
+                     static_cast<int>(kPhotonPointsNames.size()))) {
+        mPoints = static_cast<PhotonPoints>(points);
+    }
+    if (mPoints != PhotonPoints::None) {
+        int colour = static_cast<int>(mPointsColour);
+        if (ImGui::Combo("point colour", &colour, kPhotonColourNames.data(),
+                         static_cast<int>(kPhotonColourNames.size()))) {
+            mPointsColour = static_cast<PhotonColour>(colour);
+        }
+        drawPointColourLegend(runner);
+    }
+    if (current.source == DebugView::Source::LightGBuffer ||
+        current.source == DebugView::Source::LightImportance) {
+        const int layers = runner.getLightGBuffer().getLayers();
+        ImGui::SliderInt("light camera", &mTransform.lightLayer, 0, std::max(0, layers - 1));
+    }
+    ImGui::Checkbox("frame rate overlay (F2)", &mShowFrameRate);
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("F1: keys   F12: screenshot   F5: reload shaders   Ctrl+Q: quit");
+    ImGui::PopStyleColor();
+    if (!mShaderStatus.empty()) drawMessageText(mShaderStatus, mShaderError);
 }
 
-void Viewer::recordItem(const std::string& name) {
+void PanelColumn::setShaderStatus(const std::string& text, bool isError) {
+    mShaderStatus = text;
+    mShaderError = isError;
+}
+
+bool PanelColumn::selectView(const std::string& name) {
+    const int index = findDebugView(mViews, name);
+    if (index < 0) return false;
+    mViewIndex = index;
+    return true;
+}
+
+void PanelColumn::selectPoints(const std::string& points, const std::string& colour) {
+    for (size_t i = 0; i < kPhotonPointsNames.size(); ++i) {
+        if (points == kPhotonPointsNames[i]) mPoints = static_cast<PhotonPoints>(i);
+    }
+    for (size_t i = 0; i < kPhotonColourNames.size(); ++i) {
+        if (colour == kPhotonColourNames[i]) mPointsColour = static_cast<PhotonColour>(i);
+    }
+}
+
+// Counts and the white point are read back for the Stats panel only, every few frames: a
+// read-back waits for the GPU to finish the frame.
+void PanelColumn::readStats(const FrameRunner& runner) {
+    if (mFrameIndex++ % kStatsReadbackFrames != 0) return;
+    mCounts = runner.readPhotonCounts();
+    mLuminanceMax = runner.readLuminanceMax();
+}
+
+// The frame row counts the in-viewer path tracer too, when it ran this frame.
+void PanelColumn::recordTimings(const FrameRunner& runner, const ReferenceView& reference) {
+    std::vector<PassTiming> timings = runner.getLastTimings();
+    if (const std::optional<PassTiming> traced = reference.getFrameTiming()) {
+        timings.push_back(*traced);
+    }
+    mTimings.record(timings);
+}
+
+// Its message lines and the Stats frame time, and the window's clocks: rendered frames in wall
+// time (their slices and the UI frames between them) and the UI frames' median interval.
+void PanelColumn::print(const PanelContext& context) const {
+    std::printf("panel status: %s\n", context.output.getStatus().c_str());
+    std::printf("panel title: %s\n", context.window.getTitle().c_str());
+    std::printf("panel metrics: %s\n", context.reference.getMetricsText().c_str());
+    std::printf("panel reference: %s\n", context.reference.getStatus().c_str());
+    const glm::vec3& p = context.scene.camera.position;
+    std::printf("panel camera: %.6f %.6f %.6f\n", static_cast<double>(p.x),
+                static_cast<double>(p.y), static_cast<double>(p.z));
+    std::printf("panel frame ms: %.6f\n", mTimings.getLastTotalMs());
+    std::printf("panel frame wall ms: %.6f\n", context.pacer.getLastRenderFrameMs());
+    std::printf("panel ui frame ms: %.6f\n", context.pacer.getMedianUiFrameMs());
+    std::printf("panel ui frame max ms: %.6f\n", context.pacer.getMaxUiFrameMs());
+    std::printf("panel ui frames per frame: %d\n", context.pacer.getUiFramesPerRenderFrame());
+    for (const PassTiming& t : mTimings.getLast())
+        std::printf("panel pass ms: %s = %.6f\n", t.name.c_str(), t.ms);
+    std::printf("panel view stops: %s\n", usesViewStops(getView()) ? "on" : "off");
+    std::fflush(stdout);
+}
+
+void PanelColumn::recordItem(const std::string& name) {
     const ImVec2 min = ImGui::GetItemRectMin();
     const ImVec2 max = ImGui::GetItemRectMax();
     mItems[name] = {{min.x, min.y}, {max.x, max.y}};
 }
 
-// Frame rate and time in the scene region's top-left corner, over the image (two lines: narrow
-// regions too show both).
-// F2: the UI's rate (it keeps its own, FramePacer) and the rendered frames' (drawn in slices).
-void Viewer::drawFrameRateOverlay() {
-    const double uiMs = mPacer.getMedianUiFrameMs();
-    const double frameMs = mPacer.getLastRenderFrameMs();
-    if (uiMs <= 0.0 || frameMs <= 0.0) return;
-    std::array<char, kOverlayTextSize> text{};
-    std::snprintf(text.data(), text.size(), "%.1f fps (%.0f ms)\nUI %.0f Hz", 1000.0 / frameMs,
-                  frameMs, 1000.0 / uiMs);
-    ImDrawList* list = ImGui::GetForegroundDrawList();
-    list->PushClipRect(ImVec2(0.0f, 0.0f), ImVec2(static_cast<float>(mRunner->getWidth()),
-                                                  static_cast<float>(mWindowHeight)));
-    const ImVec2 at(kOverlayMarginPx, kOverlayMarginPx);
-    const ImVec2 size = ImGui::CalcTextSize(text.data());
-    list->AddRectFilled(ImVec2(0.0f, 0.0f),
-                        ImVec2(at.x + size.x + kOverlayMarginPx, at.y + size.y + kOverlayMarginPx),
-                        ImGui::GetColorU32(ImVec4(0.0f, 0.0f, 0.0f, kOverlayAlpha)));
-    list->AddText(at, IM_COL32_WHITE, text.data());
-    list->PopClipRect();
-}
-
-// F1: what the keys and the mouse do.
-void Viewer::drawHelp() {
-    const ImVec2 centre(static_cast<float>(mWindowWidth) * 0.5f,
-                        static_cast<float>(mWindowHeight) * 0.5f);
-    ImGui::SetNextWindowPos(centre, ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-    if (!ImGui::Begin("keys (F1 closes)", &mShowHelp,
-                      ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
-                          ImGuiWindowFlags_NoCollapse)) {
-        ImGui::End();
-        return;
-    }
-    for (const auto& [key, what] : kHelpLines) {
-        ImGui::TextUnformatted(key);
-        ImGui::SameLine(ImGui::GetFontSize() * kHelpKeyColumnEm);
-        ImGui::TextUnformatted(what);
-    }
-    ImGui::End();
-}
-
-void Viewer::drawScenePicker() {
+void PanelColumn::drawScenePicker(const PanelContext& context, PanelRequests& requests) const {
     if (mScenePaths.empty()) return;
-    const std::string current = std::filesystem::path(mScene.sourcePath).filename().string();
+    const std::string current = std::filesystem::path(context.scene.sourcePath).filename().string();
     if (!ImGui::BeginCombo("scene", current.c_str())) return;
     std::string picked;
     for (const std::string& path : mScenePaths) {
@@ -283,10 +268,10 @@ void Viewer::drawScenePicker() {
     }
     ImGui::EndCombo();
     // Switched at the start of the next frame: this frame's panels still read the old runner.
-    if (!picked.empty()) mPendingScenePath = picked;
+    if (!picked.empty()) requests.scenePath = picked;
 }
 
-void Viewer::drawPointColourLegend() const {
+void PanelColumn::drawPointColourLegend(const FrameRunner& runner) const {
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     switch (mPointsColour) {
     case PhotonColour::Kind:
@@ -298,7 +283,7 @@ void Viewer::drawPointColourLegend() const {
                            "leaving the surface, result photons arriving");
         break;
     case PhotonColour::Power: {
-        const double scale = computePhotonPowerScale(*mRunner);
+        const double scale = computePhotonPowerScale(runner);
         ImGui::TextWrapped("RGB power, gamma 2.2: white = %.3g W, %g x the mean a photon leaves "
                            "its light with (%.3g W)",
                            scale > 0.0 ? kPhotonPowerWhite / scale : 0.0, kPhotonPowerWhite,
