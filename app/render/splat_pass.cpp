@@ -162,12 +162,15 @@ void SplatPass::executeGather(const FrameInputs& inputs) {
     const size_t tileBytes = sizeof(glm::uvec4) + size_t(tilesX) * tilesY * sizeof(gpu::GatherTile);
     if (mTiles.getSize() < tileBytes) mTiles = gl::Buffer("gather tiles", tileBytes);
     mTiles.clearToZero();
-    gpu::GatherParams params{
-        .tiles = glm::uvec4(tilesX, tilesY, tilesX * tilesY, inputs.settings.splatClip ? 1u : 0u),
-        .splat = glm::uvec4(size.x, size.y, inputs.settings.splatDivisor,
-                            separatesCaustics(inputs.settings) ? gpu::kSplatDiffusePhotons
-                                                               : gpu::kSplatAllPhotons),
-        .shape = glm::vec4(inputs.settings.squash, 0.0f, 0.0f, 0.0f)};
+    gpu::GatherParams params{.tiles = glm::uvec2(tilesX, tilesY),
+                             .tileCount = tilesX * tilesY,
+                             .clipLines = inputs.settings.splatClip ? 1u : 0u,
+                             .bufferSizePx = glm::uvec2(size),
+                             .pixelsPerBufferPx = uint32_t(inputs.settings.splatDivisor),
+                             .photons = separatesCaustics(inputs.settings)
+                                            ? gpu::kSplatDiffusePhotons
+                                            : gpu::kSplatAllPhotons,
+                             .squash = inputs.settings.squash};
     mGatherParams.upload(0, sizeof(params), &params);
     mGatherParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
@@ -220,17 +223,18 @@ void SplatPass::uploadParams(const FrameInputs& inputs) {
     std::vector<gpu::SplatParams> params(size_t(draws) + 1);
     for (uint32_t p = 0; p <= draws; ++p) {
         const bool caustic = p == draws; // at the image's resolution, its photons from the list
-        params[p].control =
-            glm::uvec4(inputs.settings.splatClip ? 1u : 0u, inputs.settings.splatShape, p, draws);
-        const glm::vec2 offset =
-            caustic ? glm::vec2(0.0f) : glm::vec2(computeTargetOffset(inputs.settings.splatSize));
-        params[p].shape =
-            glm::vec4(inputs.settings.squash, caustic ? 1.0f : float(inputs.settings.splatDivisor),
-                      offset.x, offset.y);
-        params[p].photons = glm::uvec4(!apart    ? gpu::kSplatAllPhotons
-                                       : caustic ? gpu::kSplatCausticPhotons
-                                                 : gpu::kSplatDiffusePhotons,
-                                       drawsDiscList(inputs) && !caustic ? 1u : 0u, 0u, 0u);
+        params[p].clipLines = inputs.settings.splatClip ? 1u : 0u;
+        params[p].shape = inputs.settings.splatShape;
+        params[p].draw = p;
+        params[p].drawCount = draws;
+        params[p].squash = inputs.settings.squash;
+        params[p].pixelsPerBufferPx = caustic ? 1 : inputs.settings.splatDivisor;
+        params[p].targetOffsetPx =
+            caustic ? glm::ivec2(0) : computeTargetOffset(inputs.settings.splatSize);
+        params[p].photons = !apart    ? gpu::kSplatAllPhotons
+                            : caustic ? gpu::kSplatCausticPhotons
+                                      : gpu::kSplatDiffusePhotons;
+        params[p].discList = drawsDiscList(inputs) && !caustic ? 1u : 0u;
     }
     mParams.upload(params);
 }
