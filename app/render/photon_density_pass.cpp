@@ -5,7 +5,7 @@
 #include "gl/state.h"
 #include "render/gbuffer.h"
 #include "render/gpu_scene.h"
-#include "render/splat_pass.h"
+#include "render/splat_radii.h"
 
 #include <shared/photon_data.h>
 #include <shared/scene_data.h>

@@ -1,4 +1,4 @@
-// Splatting and the derived radius defaults.
+// Splatting, and the warning on splat discs too wide for the scene.
 #include "render/splat_pass.h"
 
 #include "core/strings.h"
@@ -12,8 +12,6 @@
 #include <shared/photon_data.h>
 #include <shared/scene_data.h>
 #include <shared/splat_clip.h>
-
-#include <glm/gtc/constants.hpp>
 
 #include <array>
 #include <cassert>
@@ -35,12 +33,6 @@ constexpr std::array<uint32_t, gpu::kSplatCubeVertices> kCubeIndices = {
 // splat at 256x256.)
 constexpr std::array<uint32_t, gpu::kSplatDiscIndices> kDiscIndices = {0, 1, 3, 0, 3, 2};
 
-// How many discs cover a point on average with the derived base radius: enough overlap that
-// one photon's noise is averaged with its neighbours', few enough to keep detail.
-constexpr double kSplatOverlap = 32.0;
-constexpr float kMinRadiusFactor = 0.5f;
-constexpr float kMaxRadiusFactor = 2.0f;
-
 // Pixels across a tile of llvmpipe's rasteriser, which bins and shades each tile on one thread.
 constexpr int kRasterTilePx = 64;
 // The list's first size (slots: 1 MiB); it grows to 1.5x a frame's need when a frame needs more.
@@ -59,18 +51,6 @@ unsigned divideRoundingUp(unsigned n, unsigned d) {
 }
 
 } // namespace
-
-SplatRadii computeSplatRadii(double surfaceAreaM2, float diagonalM, const FrameSettings& settings,
-                             float radiusScale) {
-    const double photons = std::max(1, settings.photons);
-    const auto r0 = float(std::sqrt(kSplatOverlap * surfaceAreaM2 / (glm::pi<double>() * photons)));
-    SplatRadii r;
-    r.radiusMinM = settings.radiusMinM.value_or(kMinRadiusFactor * r0) * radiusScale;
-    r.radiusMaxM = settings.radiusMaxM.value_or(kMaxRadiusFactor * r0) * radiusScale;
-    r.distMinM = settings.distMinM.value_or(0.0f);
-    r.distMaxM = settings.distMaxM.value_or(diagonalM);
-    return r;
-}
 
 std::string describeOversizedSplats(double surfaceAreaM2, float diagonalM,
                                     const FrameSettings& settings) {

@@ -5,7 +5,7 @@
 #include "core/strings.h"
 #include "render/gpu_scene.h"
 #include "render/photon_density_pass.h"
-#include "render/splat_pass.h"
+#include "render/splat_radii.h"
 #include "scene/scene_loader.h"
 
 #include <imgui.h>
