@@ -176,4 +176,23 @@ void Program::use() const {
     glUseProgram(getId());
 }
 
+std::optional<size_t> Program::getUniformOffset(const std::string& name) const {
+    const GLuint index = glGetProgramResourceIndex(getId(), GL_UNIFORM, name.c_str());
+    if (index == GL_INVALID_INDEX) return std::nullopt;
+    const GLenum property = GL_OFFSET;
+    GLint offset = -1;
+    glGetProgramResourceiv(getId(), GL_UNIFORM, index, 1, &property, 1, nullptr, &offset);
+    if (offset < 0) return std::nullopt; // a uniform outside any block
+    return static_cast<size_t>(offset);
+}
+
+std::optional<size_t> Program::getUniformBlockSize(const std::string& block) const {
+    const GLuint index = glGetProgramResourceIndex(getId(), GL_UNIFORM_BLOCK, block.c_str());
+    if (index == GL_INVALID_INDEX) return std::nullopt;
+    const GLenum property = GL_BUFFER_DATA_SIZE;
+    GLint bytes = 0;
+    glGetProgramResourceiv(getId(), GL_UNIFORM_BLOCK, index, 1, &property, 1, nullptr, &bytes);
+    return static_cast<size_t>(bytes);
+}
+
 } // namespace gl

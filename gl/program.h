@@ -5,7 +5,9 @@
 
 #include "gl/handle.h"
 
+#include <cstddef>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -41,6 +43,12 @@ class Program {
     GLuint getId() const { return mHandle.get(); }
     // The files the program was built from, for hot reload.
     const std::vector<std::filesystem::path>& getSourceFiles() const { return mSourceFiles; }
+    // Where the linker placed uniform `name` in its block (bytes from the block's start; a
+    // member of a struct instance: "params.lightCount"), and the byte size of uniform block
+    // `block`: the layout the GLSL side sees, to check against the C++ one. nullopt where the
+    // program has no active uniform or block of that name.
+    std::optional<size_t> getUniformOffset(const std::string& name) const;
+    std::optional<size_t> getUniformBlockSize(const std::string& block) const;
 
   private:
     Handle<deleteProgram> mHandle;

@@ -122,9 +122,9 @@ void AccumulatePass::execute(const FrameInputs& inputs) {
     mHistoryNormal.bindUnit(gpu::kUnitHistoryNormal);
     gpu::AccumulateParams params{};
     params.previousClipFromWorld = inputs.previousClipFromWorld;
-    params.weights = glm::vec4(computeAccumulateWeight(accumulate, inputs.historyFrames),
-                               computeHistoryCap(inputs), 0.0f, 0.0f);
-    params.control = glm::uvec4(inputs.moved ? 1u : 0u, 0u, 0u, 0u); // after a reset the cap is 0
+    params.directWeight = computeAccumulateWeight(accumulate, inputs.historyFrames);
+    params.historyCapFrames = computeHistoryCap(inputs); // after a reset the cap is 0
+    params.moved = inputs.moved ? 1u : 0u;
     mParams.upload(0, sizeof(params), &params);
     mParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
     drawFullscreenTriangle();

@@ -55,10 +55,11 @@ void DenoisePass::execute(const FrameInputs& inputs) {
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
     mViewer.bindTextures(gpu::kUnitGBufferFirst);
     // Block 0: the input draw's (the input and the guide); block i + 1: iteration i's dispatch.
-    std::vector<gpu::FilterParams> params = {{glm::ivec4(0, 0, 0, divisor)}};
+    std::vector<gpu::FilterParams> params = {{.pixelsPerBufferPx = divisor}};
     for (int i = 0; i < iterations; ++i) {
         const bool modulate = i + 1 >= iterations && !leavesIrradiance(inputs);
-        params.push_back({glm::ivec4(1 << i, modulate ? 1 : 0, 0, divisor)});
+        params.push_back(
+            {.stepPx = 1 << i, .modulate = modulate ? 1 : 0, .pixelsPerBufferPx = divisor});
     }
     mParams.upload(params);
     const auto targetOf = [&](int draw) {
@@ -77,7 +78,7 @@ void DenoisePass::execute(const FrameInputs& inputs) {
         mParams.bind(size_t(i) + 1);
         // A work group filters kFilterGroupSide^2 pixels `step` apart: step^2 lattices, each
         // split into blocks (atrous.comp).
-        const auto step = static_cast<unsigned>(params[size_t(i) + 1].iteration.x);
+        const auto step = static_cast<unsigned>(params[size_t(i) + 1].stepPx);
         const auto groups = [&](int size) {
             const unsigned span = gpu::kFilterGroupSide * step;
             return step * ((static_cast<unsigned>(size) + span - 1) / span);

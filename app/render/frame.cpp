@@ -137,7 +137,7 @@ void FrameRunner::updateFrameConstants() {
     gpu::FrameConstants fc = computeFrameConstants(mScene, mGpuScene, mFrameSettings, mWidth,
                                                    mHeight, getFrameSeed(), jitter);
     mClipFromWorld = fc.clipFromWorld;
-    fc.tonemap.x =
+    fc.adaptationWeight =
         static_cast<float>(computeAdaptationWeight(mTimeStepS, mFrameSettings.eyeAdaptationS));
     mFrameConstants.upload(0, sizeof(fc), &fc);
 }

@@ -83,20 +83,23 @@ gpu::FrameConstants computeFrameConstants(const Scene& scene, const GpuScene& gp
     fc.clipFromWorld = clipFromView * viewFromWorld;
     fc.worldFromClip = glm::inverse(fc.clipFromWorld);
     fc.eyeOffsetFromClip = glm::inverse(clipFromView * glm::mat4(glm::mat3(viewFromWorld)));
-    fc.cameraPosition = glm::vec4(cam.position, 1.0f);
-    fc.background = glm::vec4(scene.background, 0.0f);
-    fc.imageSize = glm::vec4(width, height, 1.0f / static_cast<float>(width),
-                             1.0f / static_cast<float>(height));
-    fc.counts = glm::uvec4(gpuScene.getLightCount(),
-                           static_cast<uint32_t>(gpuScene.getLightCameras().size()), seed,
-                           settings.toneMap);
-    fc.shadow = glm::vec4(settings.shadowBiasTexels,
-                          static_cast<float>(gpuScene.getLightResolution()), 0.0f, 0.0f);
-    fc.tonemap = glm::vec4(0.0f, std::exp2(settings.exposureStops), 1.0f / settings.gamma,
-                           settings.luminanceMax.value_or(0.0f));
-    fc.specularTrace = glm::vec4(
-        settings.specularDepth > 0 && settings.bounces > 0 ? gpu::kSpecularTraceMinExponent : 0.0f,
-        0.0f, 0.0f, 0.0f);
+    fc.cameraPosW = cam.position;
+    fc.lightCount = gpuScene.getLightCount();
+    fc.backgroundRadiance = scene.background;
+    fc.lightViewCount = static_cast<uint32_t>(gpuScene.getLightCameras().size());
+    fc.imageSizePx = glm::vec2(width, height);
+    fc.inverseImageSizePx =
+        glm::vec2(1.0f / static_cast<float>(width), 1.0f / static_cast<float>(height));
+    fc.seed = seed;
+    fc.tonemapOperator = settings.toneMap;
+    fc.shadowBiasTexels = settings.shadowBiasTexels;
+    fc.lightResolutionPx = static_cast<float>(gpuScene.getLightResolution());
+    fc.adaptationWeight = 0.0f;
+    fc.exposureScale = std::exp2(settings.exposureStops);
+    fc.inverseGamma = 1.0f / settings.gamma;
+    fc.luminanceMax = settings.luminanceMax.value_or(0.0f);
+    fc.specularTraceMinExponent =
+        settings.specularDepth > 0 && settings.bounces > 0 ? gpu::kSpecularTraceMinExponent : 0.0f;
     return fc;
 }
 

@@ -169,13 +169,13 @@ void appendGBufferParams(std::vector<gpu::GBufferParams>& blocks, const GpuScene
                          const glm::mat4& clipFromWorld, const glm::vec4& eye,
                          const glm::mat4& previousClipFromWorld, glm::vec2 targetSizePx,
                          glm::vec2 jitterMotionPx) {
-    const glm::vec4 pixelScale(0.5f * targetSizePx, jitterMotionPx);
     for (uint32_t i = 0; i < scene.getInstanceCount(); ++i)
         blocks.push_back({.clipFromWorld = clipFromWorld,
                           .previousClipFromWorld = previousClipFromWorld,
                           .eye = eye,
-                          .pixelScale = pixelScale,
-                          .control = {i, 0, 0, 0}});
+                          .halfTargetSizePx = 0.5f * targetSizePx,
+                          .jitterMotionPx = jitterMotionPx,
+                          .instance = i});
 }
 
 std::vector<uint32_t> computeDrawOrder(const GpuScene& scene, const glm::vec4& eye) {

@@ -85,12 +85,16 @@ void ImportancePass::execute(const FrameInputs& inputs) {
     // view), so that the average covers the pixels; a first frame draws with the seed alone.
     mBlends = blend ? mBlends + 1 : 0;
     const uint32_t gatherSeed = inputs.seed + mBlends * kBlendSeedStep;
-    params.counts = glm::uvec4(across, down, uint32_t(views), gatherSeed);
-    params.weights = glm::vec4(share, kVisibleWeight, kBounceWeight, inputs.scene.getRayEpsilon());
-    params.history =
-        glm::vec4(blend ? 1.0f / float(frames) : 1.0f,
-                  1.0f / (gpu::kImportanceFixedPoint * float(across * down)), 0.0f, 0.0f);
-    params.unlit = glm::vec4(kUnlitSecondBounceWeight, 0.0f, 0.0f, 0.0f);
+    params.gatherSamples = glm::uvec2(across, down);
+    params.lightViewCount = uint32_t(views);
+    params.seed = gatherSeed;
+    params.importanceShare = share;
+    params.visibleWeight = kVisibleWeight;
+    params.bounceWeight = kBounceWeight;
+    params.rayOffsetM = inputs.scene.getRayEpsilon();
+    params.historyWeight = blend ? 1.0f / float(frames) : 1.0f;
+    params.hitScale = 1.0f / (gpu::kImportanceFixedPoint * float(across * down));
+    params.unlitWeight = kUnlitSecondBounceWeight;
     mParams.upload(0, sizeof(params), &params);
 
     inputs.scene.bind();

@@ -5,7 +5,7 @@
 #include "gl/state.h"
 #include "render/gbuffer.h"
 #include "render/gpu_scene.h"
-#include "render/splat_pass.h"
+#include "render/splat_radii.h"
 
 #include <shared/photon_data.h>
 #include <shared/scene_data.h>
@@ -61,26 +61,34 @@ PhotonDensityPass::PhotonDensityPass(PhotonBuffers& buffers, const GBuffer& view
       mParams("photon density parameters", sizeof(gpu::DensityParams)),
       mOrderParams("photon order parameters", sizeof(gpu::OrderParams)) {}
 
-void PhotonDensityPass::setTravelRadii(const FrameInputs& inputs, glm::uvec4 slice) {
+void PhotonDensityPass::setTravelRadii(const FrameInputs& inputs, glm::uvec2 slice) {
     const SplatRadii r = computeSplatRadii(inputs.scene.getSurfaceArea(),
                                            glm::length(inputs.scene.getBounds().getExtent()),
                                            inputs.settings, inputs.getRadiusScale());
     gpu::DensityParams params{};
-    params.control = glm::uvec4(gpu::kDensityStageTravelCull, 0, 0, inputs.settings.radiusMode);
-    params.travel = glm::vec4(r.radiusMinM, r.radiusMaxM, r.distMinM, r.distMaxM);
-    params.scales = glm::vec4(1.0f, inputs.scene.getRayEpsilon(), 0.0f, 0.0f); // the clip's rays
-    params.slice = slice;
-    params.view = glm::vec4(inputs.settings.squash, 0.0f, 0.0f, 0.0f);
+    params.stage = gpu::kDensityStageTravelCull;
+    params.radiusMode = inputs.settings.radiusMode;
+    params.travel = {.radiusMinM = r.radiusMinM,
+                     .radiusMaxM = r.radiusMaxM,
+                     .distMinM = r.distMinM,
+                     .distMaxM = r.distMaxM};
+    params.radiusScale = 1.0f;
+    params.rayOffsetM = inputs.scene.getRayEpsilon(); // the clip's rays
+    params.slice = slice.x;
+    params.slices = slice.y;
+    params.squash = inputs.settings.squash;
     runTravelStage(inputs, params);
 }
 
-void PhotonDensityPass::sumLightPower(const FrameInputs& inputs, glm::uvec4 slice) {
+void PhotonDensityPass::sumLightPower(const FrameInputs& inputs, glm::uvec2 slice) {
     const size_t bytes = size_t(std::max(inputs.scene.getLightCount(), 1u)) * 2 * sizeof(uint32_t);
     if (mLightPower.getSize() != bytes) mLightPower = gl::Buffer("photon power per light", bytes);
     if (slice.x == 0) mLightPower.clearToZero();
     gpu::DensityParams params{};
-    params.control = glm::uvec4(gpu::kDensityStageTravelPower, 0, 0, inputs.settings.radiusMode);
-    params.slice = slice;
+    params.stage = gpu::kDensityStageTravelPower;
+    params.radiusMode = inputs.settings.radiusMode;
+    params.slice = slice.x;
+    params.slices = slice.y;
     runTravelStage(inputs, params);
 }
 
@@ -92,17 +100,17 @@ void PhotonDensityPass::runTravelStage(const FrameInputs& inputs,
     mBuffers.bind();
     if (inputs.settings.widenStrong)
         mLightPower.bindBase(gl::BufferTarget::Storage, gpu::kBindingDensityCells);
-    if (inputs.settings.splatClip && params.control.x == gpu::kDensityStageTravelCull) {
+    if (inputs.settings.splatClip && params.stage == gpu::kDensityStageTravelCull) {
         reserveClip();
         inputs.scene.bind();
         mClip.bindBase(gl::BufferTarget::Storage, gpu::kBindingSplatClip);
     }
-    if (measuresSurfaceEnds(params.control.x, inputs.settings))
+    if (measuresSurfaceEnds(params.stage, inputs.settings))
         mViewer.bindTextures(gpu::kUnitGBufferFirst);
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
     mParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
-    useStage(params.control.x, inputs.settings);
-    dispatch(params.slice);
+    useStage(params.stage, inputs.settings);
+    dispatch(glm::uvec2(params.slice, params.slices));
     // The cull stage reads the lights' sums; the splat's vertex stage reads the radii.
     gl::memoryBarrier(gl::Barrier::Storage);
 }
@@ -128,7 +136,7 @@ void PhotonDensityPass::reserveClip() {
     if (mClip.getSize() < bytes) mClip = gl::Buffer("splat clip distances", bytes);
 }
 
-void PhotonDensityPass::dispatch(glm::uvec4 slice) const {
+void PhotonDensityPass::dispatch(glm::uvec2 slice) const {
     if (slice.y == 1) {
         gl::dispatchComputeIndirect(mBuffers.getCounters(),
                                     offsetof(gpu::PhotonCounters, densityDispatch));
@@ -141,9 +149,10 @@ void PhotonDensityPass::dispatch(glm::uvec4 slice) const {
 
 gpu::OrderParams makeOrderParams(const Aabb& bounds, size_t countsAt, size_t orderAt) {
     const glm::vec3 extent = glm::max(bounds.getExtent(), glm::vec3(1e-6f));
-    return {.lo = glm::vec4(bounds.lo, 0.0f),
-            .scale = glm::vec4(float(1u << gpu::kOrderAxisBits) / extent, 0.0f),
-            .control = glm::uvec4(uint32_t(countsAt), uint32_t(orderAt), 0u, 0u)};
+    return {.loW = bounds.lo,
+            .countsAt = uint32_t(countsAt),
+            .cellsPerM = float(1u << gpu::kOrderAxisBits) / extent,
+            .orderAt = uint32_t(orderAt)};
 }
 
 void PhotonDensityPass::sortPhotons(const FrameInputs& inputs, size_t countsAt, size_t orderAt) {
@@ -157,7 +166,7 @@ void PhotonDensityPass::sortPhotons(const FrameInputs& inputs, size_t countsAt, 
         if (stage == gpu::kOrderStageScan)
             gl::dispatchCompute(1);
         else
-            dispatch(glm::uvec4(0u, 1u, 0u, 0u)); // every stored photon
+            dispatch(glm::uvec2(0u, 1u)); // every stored photon
         gl::memoryBarrier(gl::Barrier::Storage);
     }
 }
@@ -177,7 +186,7 @@ void PhotonDensityPass::executeSlice(const FrameInputs& inputs, uint32_t stage, 
                                      uint32_t slices) {
     assert(stage < getStageCount(inputs.settings) && slice < slices &&
            slices <= gpu::kMaxComputeSlices);
-    const glm::uvec4 sliceParams(slice, slices, 0u, 0u);
+    const glm::uvec2 sliceParams(slice, slices);
     if (inputs.settings.radiusMode != gpu::kRadiusDensity) {
         if (stage + 1 < getStageCount(inputs.settings))
             sumLightPower(inputs, sliceParams);
@@ -233,18 +242,25 @@ void PhotonDensityPass::executeSlice(const FrameInputs& inputs, uint32_t stage, 
     const float cell = kFinestCellFraction * even;
 
     gpu::DensityParams params{};
-    params.grid = glm::vec4(cell, float(neighbours), radiusMin, radiusMax);
-    params.scales = glm::vec4(scale, inputs.scene.getRayEpsilon(),
-                              inputs.progressive.travelRadiusFactor, inputs.settings.splatMerge);
+    params.finestCellM = cell;
+    params.neighbours = float(neighbours);
+    params.radiusMinM = radiusMin;
+    params.radiusMaxM = radiusMax;
+    params.radiusScale = scale;
+    params.rayOffsetM = inputs.scene.getRayEpsilon();
+    params.travelRadiusFactor = inputs.progressive.travelRadiusFactor;
+    params.mergeCellPerRadius = inputs.settings.splatMerge;
     constexpr uint32_t kStages[3] = {gpu::kDensityStageCount, gpu::kDensityStageRadius,
                                      gpu::kDensityStageMerge};
-    params.control =
-        glm::uvec4(kStages[stage], slots - 1, inputs.progressive.spreadStrongPhotons ? 1u : 0u, 0u);
-    params.slice = sliceParams;
-    params.slice.z = uint32_t(mOrderOffset / sizeof(uint32_t));
-    params.slice.w = uint32_t(mCausticOffset / sizeof(uint32_t));
-    params.view = glm::vec4(inputs.settings.squash, 0.0f, 0.0f, 0.0f);
-    params.discs = glm::uvec4(uint32_t(mDiscOffset / sizeof(uint32_t)), 0u, 0u, 0u);
+    params.stage = kStages[stage];
+    params.slotMask = slots - 1;
+    params.spreadStrong = inputs.progressive.spreadStrongPhotons ? 1u : 0u;
+    params.slice = sliceParams.x;
+    params.slices = sliceParams.y;
+    params.orderAt = uint32_t(mOrderOffset / sizeof(uint32_t));
+    params.causticListAt = uint32_t(mCausticOffset / sizeof(uint32_t));
+    params.squash = inputs.settings.squash;
+    params.discListAt = uint32_t(mDiscOffset / sizeof(uint32_t));
     mParams.upload(0, sizeof(params), &params);
 
     mBuffers.bind();
@@ -254,9 +270,9 @@ void PhotonDensityPass::executeSlice(const FrameInputs& inputs, uint32_t stage, 
     mCells.bindBase(gl::BufferTarget::Storage, gpu::kBindingDensityCells);
     if (inputs.settings.splatClip)
         mClip.bindBase(gl::BufferTarget::Storage, gpu::kBindingSplatClip);
-    if (measuresSurfaceEnds(params.control.x, inputs.settings))
+    if (measuresSurfaceEnds(params.stage, inputs.settings))
         mViewer.bindTextures(gpu::kUnitGBufferFirst);
-    useStage(params.control.x, inputs.settings);
+    useStage(params.stage, inputs.settings);
     // The block is written anew for every dispatch (the GL orders the update after the
     // dispatch before it that read the last one).
     dispatch(sliceParams);
@@ -266,7 +282,8 @@ void PhotonDensityPass::executeSlice(const FrameInputs& inputs, uint32_t stage, 
     if (stage + 1 == getStageCount(inputs.settings) && slice + 1 == slices) {
         // The discs are listed: the splat's draws take them alone.
         gpu::PrepareParams prepare{};
-        prepare.control = glm::uvec4(0u, 0u, gpu::kPrepareStageDiscDraws, inputs.splatDraws);
+        prepare.stage = gpu::kPrepareStageDiscDraws;
+        prepare.splatDraws = inputs.splatDraws;
         mPrepareParams.upload(0, sizeof(prepare), &prepare);
         mPrepareParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
         mCells.bindRange(gl::BufferTarget::Storage, gpu::kBindingDiscList, mDiscOffset,

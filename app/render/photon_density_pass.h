@@ -71,15 +71,15 @@ class PhotonDensityPass final : public Pass {
   private:
     // Travel modes: each photon's travel (or path-density) radius, 0 where its disc cannot
     // reach the view; the others count in view.
-    void setTravelRadii(const FrameInputs& inputs, glm::uvec4 slice);
+    void setTravelRadii(const FrameInputs& inputs, glm::uvec2 slice);
     // Over the stored photons, or slice.x of slice.y of them.
-    void dispatch(glm::uvec4 slice) const;
+    void dispatch(glm::uvec2 slice) const;
 
     PhotonBuffers& mBuffers;
     const GBuffer& mViewer;
     // widen_strong: each light's stored photons and power, for setTravelRadii.
-    void sumLightPower(const FrameInputs& inputs, glm::uvec4 slice);
-    // Uploads `params` and runs its travel stage (params.control.x) over params.slice.
+    void sumLightPower(const FrameInputs& inputs, glm::uvec2 slice);
+    // Uploads `params` and runs its travel stage (params.stage) over its slice.
     void runTravelStage(const FrameInputs& inputs, const gpu::DensityParams& params);
     void useStage(uint32_t stage, const FrameSettings& settings);
     // surface_ends: whether `stage` divides each photon's power by its disc's share on a

@@ -72,10 +72,13 @@ void PhotonEmitPass::execute(const FrameInputs& inputs) {
     std::vector<gpu::EmitParams> params(mGrids.size());
     for (size_t i = 0; i < mGrids.size(); ++i) {
         const EmissionGrid& g = mGrids[i];
-        params[i].grid = glm::uvec4(g.viewIndex, g.firstPhoton, g.width, g.height);
-        params[i].random =
-            glm::uvec4(inputs.seed, inputs.settings.rngGenerator,
-                       uint32_t(scene.getLightResolution()), inputs.settings.firstBounce);
+        params[i].lightView = g.viewIndex;
+        params[i].firstPhoton = g.firstPhoton;
+        params[i].gridPhotons = glm::uvec2(g.width, g.height);
+        params[i].seed = inputs.seed;
+        params[i].rngGenerator = inputs.settings.rngGenerator;
+        params[i].lightResolutionPx = uint32_t(scene.getLightResolution());
+        params[i].firstBounce = inputs.settings.firstBounce;
     }
     mParams.upload(params);
     mFeedback.attachBuffer(0, mBuffers.getBounce(), 0, mBuffers.getBounce().getSize());

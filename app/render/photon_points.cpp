@@ -37,10 +37,11 @@ ReloadableProgram buildPointsProgram(bool isResult) {
 void drawPoints(const ReloadableProgram& program, const gl::Buffer& params, const glm::vec4& tint,
                 PhotonColour colour, float powerScale, uint32_t capacity) {
     program.use();
-    const gpu::PhotonPointsParams block{
-        .tint = tint,
-        .display = glm::vec4(powerScale, 1.0f / kPowerGamma, 0.0f, 0.0f),
-        .control = glm::uvec4(static_cast<uint32_t>(colour), 0, 0, 0)};
+    const gpu::PhotonPointsParams block{.tint = glm::vec3(tint),
+                                        .pointSizePx = tint.a,
+                                        .powerScale = powerScale,
+                                        .inverseGamma = 1.0f / kPowerGamma,
+                                        .colouring = static_cast<uint32_t>(colour)};
     params.upload(0, sizeof(block), &block);
     params.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
     gl::drawArrays(gl::Primitive::Points, 0, static_cast<int>(capacity));

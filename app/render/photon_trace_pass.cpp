@@ -34,15 +34,20 @@ void PhotonTracePass::execute(const FrameInputs& inputs) {
 void PhotonTracePass::executeSlice(const FrameInputs& inputs, uint32_t slice, uint32_t slices) {
     assert(slice < slices && slices <= gpu::kMaxComputeSlices);
     gpu::PrepareParams prepare{};
-    prepare.control = glm::uvec4(mBuffers.getResultCapacity(), mBuffers.getBounceCapacity(),
-                                 gpu::kPrepareStageBeforeTrace, inputs.splatDraws);
-    prepare.splat =
-        glm::uvec4(gpu::getSplatIndexCount(inputs.settings.splatShape), mPhotonsPerLane, 0u, 0u);
+    prepare.resultCapacity = mBuffers.getResultCapacity();
+    prepare.bounceCapacity = mBuffers.getBounceCapacity();
+    prepare.stage = gpu::kPrepareStageBeforeTrace;
+    prepare.splatDraws = inputs.splatDraws;
+    prepare.splatIndexCount = gpu::getSplatIndexCount(inputs.settings.splatShape);
+    prepare.photonsPerLane = mPhotonsPerLane;
     gpu::TraceParams trace{};
-    trace.control = glm::uvec4(static_cast<uint32_t>(inputs.settings.bounces), inputs.seed,
-                               inputs.settings.rngGenerator, inputs.settings.rngMode);
-    trace.ray = glm::vec4(inputs.scene.getRayEpsilon(), 0.0f, 0.0f, 0.0f);
-    trace.slice = glm::uvec4(slice, slices, 0u, 0u);
+    trace.bounces = static_cast<uint32_t>(inputs.settings.bounces);
+    trace.seed = inputs.seed;
+    trace.rngGenerator = inputs.settings.rngGenerator;
+    trace.rngMode = inputs.settings.rngMode;
+    trace.rayOffsetM = inputs.scene.getRayEpsilon();
+    trace.slice = slice;
+    trace.slices = slices;
     mTraceParams.upload(0, sizeof(trace), &trace);
 
     mBuffers.bind();
@@ -70,7 +75,7 @@ void PhotonTracePass::executeSlice(const FrameInputs& inputs, uint32_t slice, ui
 
     // The same block again, at its second stage (the GL orders the update after the dispatch
     // that read the first).
-    prepare.control.z = gpu::kPrepareStageBeforeSplat;
+    prepare.stage = gpu::kPrepareStageBeforeSplat;
     mPrepareParams.upload(0, sizeof(prepare), &prepare);
     mPrepare.use();
     mPrepareParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);

@@ -28,17 +28,23 @@ gpu::PostParams computePostParams(const FrameInputs& inputs) {
     const Camera& camera = inputs.model.camera;
     gpu::PostParams p{};
     const float sigma = s.bloomRadiusPx / gpu::kBloomSigmasPerRadius;
-    p.bloom = {s.bloomThreshold, s.bloomIntensity, s.bloomRadiusPx, sigma};
+    p.bloomThreshold = s.bloomThreshold;
+    p.bloomIntensity = s.bloomIntensity;
+    p.bloomRadiusPx = s.bloomRadiusPx;
+    p.bloomSigmaPx = sigma;
     // Pixels per radian at the image centre: the image height spans 2 tan(fovY / 2) on a plane
     // one metre ahead.
     const float halfFov = 0.5f * glm::radians(camera.fovYDeg);
     const float pixelsPerRadian = float(inputs.height) / (2.0f * std::tan(halfFov));
     const float inverseFocus = s.dofFocusM ? 1.0f / *s.dofFocusM : 0.0f;
-    p.depthBlur = {s.dofApertureM, inverseFocus, pixelsPerRadian, s.dofFocusM ? 0.0f : 1.0f};
-    p.motion = {s.motionBlurShutter, 0.0f, 0.0f, 0.0f};
+    p.apertureM = s.dofApertureM;
+    p.inverseFocusPerM = inverseFocus;
+    p.pixelsPerRadian = pixelsPerRadian;
+    p.focusAtCentre = s.dofFocusM ? 0u : 1u;
+    p.shutter = s.motionBlurShutter;
     const glm::vec3 axis = camera.target - camera.position;
     const float length = glm::length(axis);
-    p.camera = glm::vec4(length > 0.0f ? axis / length : glm::vec3(0.0f, 0.0f, -1.0f), 0.0f);
+    p.viewAxisW = length > 0.0f ? axis / length : glm::vec3(0.0f, 0.0f, -1.0f);
     return p;
 }
 
@@ -132,8 +138,10 @@ void BloomPass::execute(const FrameInputs& inputs) {
     mBlurX.target.resize(inputs.width, inputs.height);
     mCombine.target.resize(inputs.width, inputs.height);
     std::array<gpu::PostParams, 2> params = {computePostParams(inputs), computePostParams(inputs)};
-    params[0].control = {0u, 0u, 0u, 0u}; // along x: extract -> blurred x
-    params[1].control = {1u, 1u, 0u, 0u}; // along y, then source - extract + blurred
+    params[0].blurAxis = 0u; // along x: extract -> blurred x
+    params[0].addsSource = 0u;
+    params[1].blurAxis = 1u; // along y, then source - extract + blurred
+    params[1].addsSource = 1u;
     mParams.upload(params);
     mParams.bind(0);
     mInput->bindUnit(gpu::kUnitPostSource);

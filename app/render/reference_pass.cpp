@@ -91,9 +91,10 @@ void ReferencePass::addSample() {
 void ReferencePass::addPathSample() {
     mProgram.use();
     gpu::ReferenceParams params{};
-    params.control =
-        glm::uvec4(static_cast<uint32_t>(mSamples), static_cast<uint32_t>(mBounces), mSeed, 0u);
-    params.ray = glm::vec4(mGpuScene.getRayEpsilon(), 0.0f, 0.0f, 0.0f);
+    params.sampleIndex = static_cast<uint32_t>(mSamples);
+    params.bounces = static_cast<uint32_t>(mBounces);
+    params.seed = mSeed;
+    params.rayOffsetM = mGpuScene.getRayEpsilon();
     mParams.upload(0, sizeof(params), &params);
     mParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
     gl::dispatchCompute((static_cast<unsigned>(mWidth) + kGroupSize - 1) / kGroupSize,
@@ -106,13 +107,16 @@ void ReferencePass::addLightSample() {
     // One light path per pixel: the same work per sample as a camera path, spread by the lights.
     const auto pathCount = static_cast<uint32_t>(mWidth) * static_cast<uint32_t>(mHeight);
     gpu::LightTraceParams params{};
-    params.control = glm::uvec4(static_cast<uint32_t>(mSamples), static_cast<uint32_t>(mBounces),
-                                mSeed, pathCount);
-    params.ray = glm::vec4(mGpuScene.getRayEpsilon(), mPixelAreaM2, 0.0f, 0.0f);
-    params.cameraAxis =
-        glm::vec4(glm::normalize(mScene.camera.target - mScene.camera.position), 0.0f);
+    params.sampleIndex = static_cast<uint32_t>(mSamples);
+    params.bounces = static_cast<uint32_t>(mBounces);
+    params.seed = mSeed;
+    params.pathCount = pathCount;
+    params.rayFloorM = mGpuScene.getRayEpsilon();
+    params.pixelAreaM2 = mPixelAreaM2;
+    params.cameraAxisW = glm::normalize(mScene.camera.target - mScene.camera.position);
     const Aabb& bounds = mGpuScene.getBounds();
-    params.sceneSphere = glm::vec4(bounds.getCenter(), 0.5f * glm::length(bounds.getExtent()));
+    params.sceneCentreW = bounds.getCenter();
+    params.sceneRadiusM = 0.5f * glm::length(bounds.getExtent());
     mParams.upload(0, sizeof(params), &params);
     mParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
     mSplat.bindBase(gl::BufferTarget::Storage, gpu::kBindingLightSplat);

@@ -12,7 +12,6 @@
 #include <shared/tonemap_data.h>
 
 #include <algorithm>
-#include <bit>
 #include <cstddef>
 #include <optional>
 #include <span>
@@ -59,8 +58,8 @@ std::vector<DirectDraw> planDirectDraws(const FrameInputs& inputs) {
     std::vector<DirectDraw> draws;
     const auto addDraw = [&](std::span<const uint32_t> indices, std::optional<PixelRect> rect) {
         DirectDraw d;
-        d.params.control =
-            glm::uvec4(static_cast<uint32_t>(indices.size()), draws.empty() ? 1u : 0u, 0u, 0u);
+        d.params.lightCount = static_cast<uint32_t>(indices.size());
+        d.params.firstDraw = draws.empty() ? 1u : 0u;
         for (size_t k = 0; k < indices.size(); ++k) {
             d.params.lights[k / 4][k % 4] = indices[k];
             d.lightTypes |= 1u << getGpuLightType(lights[indices[k]].type);
@@ -102,7 +101,7 @@ void DirectPass::execute(const FrameInputs& inputs) {
     std::vector<gpu::DirectParams> blocks;
     for (const DirectDraw& d : draws) {
         blocks.push_back(d.params);
-        blocks.back().control.z = std::bit_cast<uint32_t>(inputs.scene.getRayEpsilon());
+        blocks.back().rayFloorM = inputs.scene.getRayEpsilon();
     }
     mParams.upload(blocks);
     for (size_t i = 0; i < draws.size(); ++i) {
@@ -140,8 +139,8 @@ void DirectPass::shadeEdges(const FrameInputs& inputs) {
     // is rewritten (the list holds each pixel once, and a pixel reads its neighbours only here).
     gl::memoryBarrier(gl::Barrier::Storage | gl::Barrier::Command);
     gpu::DirectEdgeParams params{};
-    params.control = glm::uvec4(static_cast<uint32_t>(inputs.settings.edgeSamples),
-                                std::bit_cast<uint32_t>(inputs.scene.getRayEpsilon()), 0u, 0u);
+    params.samplesPerPixel = static_cast<uint32_t>(inputs.settings.edgeSamples);
+    params.rayFloorM = inputs.scene.getRayEpsilon();
     mEdgeParams.upload(0, sizeof(params), &params);
     mEdgeParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
     std::vector<std::string> defines = inputs.scene.getSurfaceDefines();

@@ -66,10 +66,10 @@ void SpecularPass::execute(const FrameInputs& inputs) {
     gpu::SpecularParams params{};
     // Light seen in a mirror reflected once more than the mirror's own: `bounces` caps the
     // levels as it caps the reference's camera paths.
-    params.control = glm::uvec4(
-        static_cast<uint32_t>(std::min(settings.specularDepth, settings.bounces)), 0u, 0u, 0u);
-    params.ray = glm::vec4(inputs.scene.getRayEpsilon(), kReprojectionDepthTolerance,
-                           computePixelAngle(inputs), 0.0f);
+    params.levels = static_cast<uint32_t>(std::min(settings.specularDepth, settings.bounces));
+    params.rayFloorM = inputs.scene.getRayEpsilon();
+    params.reprojectionTolerance = kReprojectionDepthTolerance;
+    params.pixelAngleRad = computePixelAngle(inputs);
     mParams.upload(0, sizeof(params), &params);
     inputs.scene.bind();
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);

@@ -1,4 +1,4 @@
-// Splatting and the derived radius defaults.
+// Splatting, and the warning on splat discs too wide for the scene.
 #include "render/splat_pass.h"
 
 #include "core/strings.h"
@@ -12,8 +12,6 @@
 #include <shared/photon_data.h>
 #include <shared/scene_data.h>
 #include <shared/splat_clip.h>
-
-#include <glm/gtc/constants.hpp>
 
 #include <array>
 #include <cassert>
@@ -35,12 +33,6 @@ constexpr std::array<uint32_t, gpu::kSplatCubeVertices> kCubeIndices = {
 // splat at 256x256.)
 constexpr std::array<uint32_t, gpu::kSplatDiscIndices> kDiscIndices = {0, 1, 3, 0, 3, 2};
 
-// How many discs cover a point on average with the derived base radius: enough overlap that
-// one photon's noise is averaged with its neighbours', few enough to keep detail.
-constexpr double kSplatOverlap = 32.0;
-constexpr float kMinRadiusFactor = 0.5f;
-constexpr float kMaxRadiusFactor = 2.0f;
-
 // Pixels across a tile of llvmpipe's rasteriser, which bins and shades each tile on one thread.
 constexpr int kRasterTilePx = 64;
 // The list's first size (slots: 1 MiB); it grows to 1.5x a frame's need when a frame needs more.
@@ -59,18 +51,6 @@ unsigned divideRoundingUp(unsigned n, unsigned d) {
 }
 
 } // namespace
-
-SplatRadii computeSplatRadii(double surfaceAreaM2, float diagonalM, const FrameSettings& settings,
-                             float radiusScale) {
-    const double photons = std::max(1, settings.photons);
-    const auto r0 = float(std::sqrt(kSplatOverlap * surfaceAreaM2 / (glm::pi<double>() * photons)));
-    SplatRadii r;
-    r.radiusMinM = settings.radiusMinM.value_or(kMinRadiusFactor * r0) * radiusScale;
-    r.radiusMaxM = settings.radiusMaxM.value_or(kMaxRadiusFactor * r0) * radiusScale;
-    r.distMinM = settings.distMinM.value_or(0.0f);
-    r.distMaxM = settings.distMaxM.value_or(diagonalM);
-    return r;
-}
 
 std::string describeOversizedSplats(double surfaceAreaM2, float diagonalM,
                                     const FrameSettings& settings) {
@@ -162,12 +142,15 @@ void SplatPass::executeGather(const FrameInputs& inputs) {
     const size_t tileBytes = sizeof(glm::uvec4) + size_t(tilesX) * tilesY * sizeof(gpu::GatherTile);
     if (mTiles.getSize() < tileBytes) mTiles = gl::Buffer("gather tiles", tileBytes);
     mTiles.clearToZero();
-    gpu::GatherParams params{
-        .tiles = glm::uvec4(tilesX, tilesY, tilesX * tilesY, inputs.settings.splatClip ? 1u : 0u),
-        .splat = glm::uvec4(size.x, size.y, inputs.settings.splatDivisor,
-                            separatesCaustics(inputs.settings) ? gpu::kSplatDiffusePhotons
-                                                               : gpu::kSplatAllPhotons),
-        .shape = glm::vec4(inputs.settings.squash, 0.0f, 0.0f, 0.0f)};
+    gpu::GatherParams params{.tiles = glm::uvec2(tilesX, tilesY),
+                             .tileCount = tilesX * tilesY,
+                             .clipLines = inputs.settings.splatClip ? 1u : 0u,
+                             .bufferSizePx = glm::uvec2(size),
+                             .pixelsPerBufferPx = uint32_t(inputs.settings.splatDivisor),
+                             .photons = separatesCaustics(inputs.settings)
+                                            ? gpu::kSplatDiffusePhotons
+                                            : gpu::kSplatAllPhotons,
+                             .squash = inputs.settings.squash};
     mGatherParams.upload(0, sizeof(params), &params);
     mGatherParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
@@ -220,17 +203,18 @@ void SplatPass::uploadParams(const FrameInputs& inputs) {
     std::vector<gpu::SplatParams> params(size_t(draws) + 1);
     for (uint32_t p = 0; p <= draws; ++p) {
         const bool caustic = p == draws; // at the image's resolution, its photons from the list
-        params[p].control =
-            glm::uvec4(inputs.settings.splatClip ? 1u : 0u, inputs.settings.splatShape, p, draws);
-        const glm::vec2 offset =
-            caustic ? glm::vec2(0.0f) : glm::vec2(computeTargetOffset(inputs.settings.splatSize));
-        params[p].shape =
-            glm::vec4(inputs.settings.squash, caustic ? 1.0f : float(inputs.settings.splatDivisor),
-                      offset.x, offset.y);
-        params[p].photons = glm::uvec4(!apart    ? gpu::kSplatAllPhotons
-                                       : caustic ? gpu::kSplatCausticPhotons
-                                                 : gpu::kSplatDiffusePhotons,
-                                       drawsDiscList(inputs) && !caustic ? 1u : 0u, 0u, 0u);
+        params[p].clipLines = inputs.settings.splatClip ? 1u : 0u;
+        params[p].shape = inputs.settings.splatShape;
+        params[p].draw = p;
+        params[p].drawCount = draws;
+        params[p].squash = inputs.settings.squash;
+        params[p].pixelsPerBufferPx = caustic ? 1 : inputs.settings.splatDivisor;
+        params[p].targetOffsetPx =
+            caustic ? glm::ivec2(0) : computeTargetOffset(inputs.settings.splatSize);
+        params[p].photons = !apart    ? gpu::kSplatAllPhotons
+                            : caustic ? gpu::kSplatCausticPhotons
+                                      : gpu::kSplatDiffusePhotons;
+        params[p].discList = drawsDiscList(inputs) && !caustic ? 1u : 0u;
     }
     mParams.upload(params);
 }

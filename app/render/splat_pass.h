@@ -15,26 +15,13 @@
 #include "render/pass.h"
 #include "render/photon_buffers.h"
 #include "render/photon_density_pass.h"
+#include "render/splat_radii.h"
 #include "scene/scene.h"
 
 #include <optional>
 #include <shared/photon_data.h>
 
 namespace ispm {
-
-struct SplatRadii {
-    float radiusMinM = 0.0f;
-    float radiusMaxM = 0.0f;
-    float distMinM = 0.0f;
-    float distMaxM = 0.0f;
-};
-
-// Settings where given, else derived: a base radius r0 such that `photons` discs of radius r0
-// cover the area in view (GpuScene::getSurfaceArea) kSplatOverlap times; radius_min = r0 / 2 at
-// dist_min = 0, radius_max = 2 r0 at dist_max = the scene's diagonal. radius_scale multiplies both
-// radii. `surfaceAreaM2` and `diagonalM` describe the scene (GpuScene keeps both up to date).
-SplatRadii computeSplatRadii(double surfaceAreaM2, float diagonalM, const FrameSettings& settings,
-                             float radiusScale);
 
 // One line for stderr when the settings make splat discs so wide that much of a photon's power
 // lands where no surface is and the indirect light fades (radius_mode travel or path_density

@@ -39,7 +39,7 @@ void UpsamplePass::execute(const FrameInputs& inputs) {
     mCaustics.bindUnit(gpu::kUnitCaustics);
     // Irradiance from a smaller buffer (DenoisePass::leavesIrradiance); at the image's
     // resolution the light passes through as it is.
-    const gpu::FilterParams params{glm::ivec4(0, 0, 0, divisor)};
+    const gpu::FilterParams params{.pixelsPerBufferPx = divisor};
     mParams.upload(0, sizeof(params), &params);
     mParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
     drawFullscreenTriangle();

@@ -141,10 +141,14 @@ void DebugViewDrawer::draw(const FrameRunner& runner, const DebugView& view,
     program.use();
     // Light views hold their channels only where a surface is (LightViewPass).
     const bool masked = view.source == DebugView::Source::LightGBuffer;
-    const gpu::BlitParams params{.region = glm::vec4(0.0f, 0.0f, static_cast<float>(regionWidth),
-                                                     static_cast<float>(regionHeight)),
-                                 .transform = glm::vec4(scale, bias, inverseGamma, layer),
-                                 .control = glm::uvec4(masked ? 1u : 0u, 0, 0, 0)};
+    const gpu::BlitParams params{.regionOriginPx = glm::vec2(0.0f),
+                                 .regionSizePx = glm::vec2(static_cast<float>(regionWidth),
+                                                           static_cast<float>(regionHeight)),
+                                 .scale = scale,
+                                 .bias = bias,
+                                 .inverseGamma = inverseGamma,
+                                 .layer = layer,
+                                 .masked = masked ? 1u : 0u};
     mParams.upload(0, sizeof(params), &params);
     mParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
     texture.bindUnit(kUnitSource);

@@ -171,9 +171,12 @@ void ReferenceView::draw(const FrameRunner& runner, ReferenceMode mode, float ex
     gl::bindDefaultFramebuffer(width, height);
     mProgram.use();
     const gpu::ReferenceViewParams params{
-        .region = glm::vec4(0.0f, 0.0f, static_cast<float>(width), static_cast<float>(height)),
-        .display = glm::vec4(std::exp2(exposureStops), 1.0f / kDisplayGamma, mHeatMax, 0.0f),
-        .control = glm::uvec4(toGpuMode(mode), 0, 0, 0)};
+        .regionOriginPx = glm::vec2(0.0f),
+        .regionSizePx = glm::vec2(static_cast<float>(width), static_cast<float>(height)),
+        .scale = std::exp2(exposureStops),
+        .inverseGamma = 1.0f / kDisplayGamma,
+        .heatMapMax = mHeatMax,
+        .mode = toGpuMode(mode)};
     mParams.upload(0, sizeof(params), &params);
     mParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
     runner.getAov(Aov::Total).bindUnit(kUnitTotal);

@@ -4,7 +4,7 @@
 
 #include "render/gpu_scene.h"
 #include "render/photon_density_pass.h"
-#include "render/splat_pass.h"
+#include "render/splat_radii.h"
 #include "viewer/settings_panel.h"
 #include "viewer/viewer_overlays.h"
 

@@ -17,7 +17,7 @@ void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec4 direct = texelFetch(uDirect, pixel, 0);
     float coverage = clamp(direct.a, 0.0, 1.0);
-    vec3 radiance = frame.background.rgb * (1.0 - coverage);
+    vec3 radiance = frame.backgroundRadiance * (1.0 - coverage);
     if (coverage > 0.0) radiance += direct.rgb + texelFetch(uIndirect, pixel, 0).rgb * coverage;
 #if COMPOSE_EMISSION // a scene with an emitter (ComposePass)
     // This frame's emission where this frame sees a surface (GBufferPass clears it to 0 where

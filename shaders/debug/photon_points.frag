@@ -15,7 +15,7 @@ const float kDepthSlack = 0.02;
 
 void main() {
     vec4 surface = texelFetch(uPosition, ivec2(gl_FragCoord.xy), 0);
-    vec3 eye = frame.cameraPosition.xyz;
+    vec3 eye = frame.cameraPosW;
     if (surface.w > 0.0 &&
         distance(eye, vPositionW) > distance(eye, surface.xyz) * (1.0 + kDepthSlack)) {
         discard;

@@ -38,13 +38,13 @@ void main() {
     vec3 power = photons[gl_VertexID].power.rgb;
     vPositionW = positionW;
     gl_Position = frame.clipFromWorld * vec4(positionW, 1.0);
-    gl_PointSize = params.tint.a;
-    if (params.control.x == kPhotonColourDirection) {
+    gl_PointSize = params.pointSizePx;
+    if (params.colouring == kPhotonColourDirection) {
         vColor = getDirection(uint(gl_VertexID)) * 0.5 + 0.5;
-    } else if (params.control.x == kPhotonColourPower) {
-        vColor = pow(clamp(power * params.display.x, 0.0, 1.0), vec3(params.display.y));
+    } else if (params.colouring == kPhotonColourPower) {
+        vColor = pow(clamp(power * params.powerScale, 0.0, 1.0), vec3(params.inverseGamma));
     } else {
         float peak = max(max(power.r, power.g), max(power.b, kTinyPower));
-        vColor = mix(power / peak, params.tint.rgb, kTintWeight);
+        vColor = mix(power / peak, params.tint, kTintWeight);
     }
 }

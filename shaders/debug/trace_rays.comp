@@ -16,7 +16,7 @@ layout(std140, binding = kBindingPassParams) uniform TraceRaysParamsBlock { Trac
 
 void main() {
     uint index = gl_GlobalInvocationID.x;
-    if (index >= params.control.x) return;
+    if (index >= params.rayCount) return;
     DebugRay ray = debugRays[index];
     RayHit hit;
     bool found = traceRay(ray.originTMax.xyz, ray.direction.xyz, ray.originTMax.w, hit);

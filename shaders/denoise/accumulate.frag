@@ -1,14 +1,15 @@
 // Temporal accumulation (AccumulatePass): this frame's direct and indirect light mixed into their
 // histories.
-// - Direct light: a running mean of the frames of a still view (params.weights.x = 1 / frames);
+// - Direct light: a running mean of the frames of a still view (params.directWeight = 1 / frames);
 //   1 after any motion, where shadows and highlights move with what moved.
 // - Indirect light: each pixel keeps how many frames its history holds (its length). A still
 //   view mixes the history at the same pixel with weight 1 / (length + 1), the length at most
-//   params.weights.y (a running mean from a reset; after motion the moving frames count as a
-//   few). When the view or objects moved (params.control.x), the history is fetched where this pixel's surface was
-//   in the last frame: the point moved back with its instance's motion, projected by the last
-//   frame's camera, the four history pixels around it kept where they show the same surface (the
-//   same plane, a normal alike) and weighed bilinearly; none kept: the history starts anew.
+//   params.historyCapFrames (a running mean from a reset; after motion the moving frames count as
+//   a few). When the view or objects moved (params.moved), the history is fetched where this
+//   pixel's surface was in the last frame: the point moved back with its instance's motion,
+//   projected by the last frame's camera, the four history pixels around it kept where they show
+//   the same surface (the same plane, a normal alike) and weighed bilinearly; none kept: the
+//   history starts anew.
 //   A frame whose pixel centre sees no surface adds nothing to it (the background's 0 is no
 //   light of the surface): the history stays the surface's, and compose.frag weighs it by the
 //   share of frames that saw it (the direct light's alpha).
@@ -54,11 +55,11 @@ History fetchReprojected(vec4 position, vec3 normal) {
     vec3 n = normalize(transpose(inverse(mat3(previousFromCurrent))) * normal);
     vec4 clip = params.previousClipFromWorld * vec4(p, 1.0);
     if (clip.w <= 0.0) return none;
-    vec2 size = frame.imageSize.xy;
+    vec2 size = frame.imageSizePx;
     vec2 f = (clip.xy / clip.w * 0.5 + 0.5) * size - 0.5;
     ivec2 base = ivec2(floor(f));
     vec2 t = f - vec2(base);
-    float tolerance = kPlaneTolerance * distance(position.xyz, frame.cameraPosition.xyz);
+    float tolerance = kPlaneTolerance * distance(position.xyz, frame.cameraPosW);
     vec3 sum = vec3(0.0);
     float length = 0.0;
     float weights = 0.0;
@@ -86,19 +87,19 @@ void main() {
     // Alpha too: the direct light's is the pixel's surface coverage (compose.frag).
     // A weight of 1 takes this frame's light as it is (mix would round it).
     vec4 direct = texelFetch(uDirect, pixel, 0);
-    outDirect = params.weights.x >= 1.0 ? direct
-                                     : mix(texelFetch(uHistoryDirect, pixel, 0), direct, params.weights.x);
+    outDirect = params.directWeight >= 1.0 ? direct
+                                     : mix(texelFetch(uHistoryDirect, pixel, 0), direct, params.directWeight);
     // A cap of 0 (a reset) reads no history at all: the textures may hold anything then.
     vec4 position = texelFetch(uPosition, pixel, 0);
     bool surface = position.w >= 0.5;
     History history = History(vec3(0.0), 0.0);
-    if (params.weights.y > 0.0 && params.control.x == 0u) {
+    if (params.historyCapFrames > 0.0 && params.moved == 0u) {
         history = History(texelFetch(uHistoryIndirect, pixel, 0).rgb,
                           texelFetch(uHistoryLength, pixel, 0).r);
-    } else if (params.weights.y > 0.0 && surface) {
+    } else if (params.historyCapFrames > 0.0 && surface) {
         history = fetchReprojected(position, texelFetch(uNormal, pixel, 0).xyz);
     }
-    float length = min(history.length, params.weights.y);
+    float length = min(history.length, params.historyCapFrames);
     vec4 current = texelFetch(uIndirect, pixel, 0);
     // Where this frame's centre sees the background the history stays as it is.
     vec3 indirect = !surface        ? history.indirect

@@ -26,7 +26,7 @@ shared vec3 tileNormal[kTileSide * kTileSide];
 shared vec3 tileLight[kTileSide * kTileSide];
 
 void main() {
-    int step = params.iteration.x;
+    int step = params.stepPx;
     ivec2 size = textureSize(uSource, 0);
     // The lattice (its offset below `step` along each axis) and the block of it.
     ivec2 group = ivec2(gl_WorkGroupID.xy);
@@ -49,13 +49,13 @@ void main() {
     ivec2 pixel = blockFirst + local * step;
     if (any(greaterThanEqual(pixel, size))) return;
     int centreAt = (local.y + kApron) * kTileSide + local.x + kApron;
-    ivec2 g = getBlockGBufferPixel(pixel, params.iteration.w);
+    ivec2 g = getBlockGBufferPixel(pixel, params.pixelsPerBufferPx);
     vec3 filtered = tileLight[centreAt];
     if (tilePosition[centreAt].w > 0.5) {
         vec3 n = tileNormal[centreAt];
         vec3 position = tilePosition[centreAt].xyz;
         // Footprints of a filtered pixel on its surface, times the step.
-        float planeScale = computePlaneScale(g, position, params.iteration.w) / float(step);
+        float planeScale = computePlaneScale(g, position, params.pixelsPerBufferPx) / float(step);
         const float kB3[3] = float[3](3.0 / 8.0, 1.0 / 4.0, 1.0 / 16.0);
         vec3 sum = vec3(0.0);
         float weights = 0.0;
@@ -73,5 +73,5 @@ void main() {
         if (weights > 0.0) filtered = sum / weights;
     }
     imageStore(uOutput, pixel,
-               vec4(params.iteration.y == 1 ? filtered * getReflectance(g) : filtered, 1.0));
+               vec4(params.modulate == 1 ? filtered * getReflectance(g) : filtered, 1.0));
 }

@@ -15,7 +15,7 @@ layout(location = 1) out vec4 outGuide;
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
-    ivec2 g = getBlockGBufferPixel(pixel, params.iteration.w);
+    ivec2 g = getBlockGBufferPixel(pixel, params.pixelsPerBufferPx);
     vec4 position = texelFetch(uPosition, g, 0);
     outIrradiance = vec4(texelFetch(uSource, pixel, 0).rgb / getReflectance(g), 1.0);
     outGuide = position.w < 0.5 ? vec4(0.0, 0.0, 0.0, kGuideNoSurface)

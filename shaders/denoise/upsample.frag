@@ -57,8 +57,8 @@ vec3 upsample(ivec2 pixel) {
     ivec2 size = textureSize(uSource, 0);
     vec3 n = texelFetch(uNormal, pixel, 0).xyz;
     // Footprints of a buffer pixel on this surface.
-    float planeScale = computePlaneScale(pixel, position.xyz, params.iteration.w);
-    vec2 at = (vec2(pixel) - float(params.iteration.w / 2)) / float(params.iteration.w); // in buffer pixels
+    float planeScale = computePlaneScale(pixel, position.xyz, params.pixelsPerBufferPx);
+    vec2 at = (vec2(pixel) - float(params.pixelsPerBufferPx / 2)) / float(params.pixelsPerBufferPx); // in buffer pixels
     ivec2 first = ivec2(floor(at));
     vec3 sum = vec3(0.0);
     float weights = 0.0;

@@ -33,13 +33,13 @@ void main() {
     vec3 n = texelFetch(uNormal, pixel, 0).xyz;
     vec3 diffuse = texelFetch(uDiffuse, pixel, 0).rgb;
     vec4 specular = texelFetch(uSpecular, pixel, 0);
-    vec3 wo = normalize(frame.cameraPosition.xyz - position.xyz);
+    vec3 wo = normalize(frame.cameraPosW - position.xyz);
     vec3 radiance = vec3(0.0);
-    float rayFloorM = uintBitsToFloat(params.control.z);
-    for (uint k = 0u; k < params.control.x; ++k) {
+    float rayFloorM = params.rayFloorM;
+    for (uint k = 0u; k < params.lightCount; ++k) {
         GpuLight light = lights[params.lights[k / 4u][k % 4u]];
         radiance += computeLightRadiance(light, position.xyz, n, diffuse, specular, wo, rayFloorM);
     }
     // Coverage once: the draws after the first add their light and 0.
-    outRadiance = vec4(radiance, params.control.y == 1u ? 1.0 : 0.0);
+    outRadiance = vec4(radiance, params.firstDraw == 1u ? 1.0 : 0.0);
 }

@@ -55,7 +55,7 @@ bool bends(vec3 before, vec3 centre, vec3 after) {
 
 // The light a pixel shows: the direct light on a surface, the background's radiance elsewhere.
 vec3 getShownRadiance(Shown s) {
-    return s.instance > 0.5 ? s.radiance : frame.background.rgb;
+    return s.instance > 0.5 ? s.radiance : frame.backgroundRadiance;
 }
 
 // How many times a listed pixel halves its samples, by how far the light spreads from `lowest`

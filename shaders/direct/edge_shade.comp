@@ -47,7 +47,7 @@ bool showsBackground = false;
 void findShownInstances(ivec2 pixel) {
     for (int dy = -1; dy <= 1; ++dy) {
         for (int dx = -1; dx <= 1; ++dx) {
-            ivec2 q = clamp(pixel + ivec2(dx, dy), ivec2(0), ivec2(frame.imageSize.xy) - 1);
+            ivec2 q = clamp(pixel + ivec2(dx, dy), ivec2(0), ivec2(frame.imageSizePx) - 1);
             float shown = texelFetch(uPosition, q, 0).w; // instance + 1; 0: the background
             showsBackground = showsBackground || shown < 0.5;
             if (shown < 0.5) continue;
@@ -77,7 +77,7 @@ const uint kEdgeSeedSlot = 0xfffffffdu;
 vec3 shadeThrough(vec2 point, float rayFloorM, out bool hitSurface) {
     // From the near plane on, as the G-buffer sees the scene.
     vec3 toNear = computeEyeToNear(point);
-    vec3 origin = frame.cameraPosition.xyz + toNear;
+    vec3 origin = frame.cameraPosW + toNear;
     vec3 dir = normalize(toNear);
     RayHit hit;
     hitSurface = traceEdgeRay(origin, dir, hit);
@@ -96,16 +96,16 @@ void main() {
     bool listed = index < header.pixels;
     uint entry = listed ? edgePixels[index] : 0u;
     uint at = entry & ((1u << kDirectEdgeHalvingShift) - 1u);
-    uint width = uint(frame.imageSize.x);
+    uint width = uint(frame.imageSizePx.x);
     ivec2 pixel = ivec2(at % width, at / width);
-    uint samples = listed ? max(params.control.x >> (entry >> kDirectEdgeHalvingShift), 1u) : 0u;
+    uint samples = listed ? max(params.samplesPerPixel >> (entry >> kDirectEdgeHalvingShift), 1u) : 0u;
     vec4 sum = vec4(0.0); // radiance, surface hits
     if (samples > lane) {
         findShownInstances(pixel);
-        uint rng = seedRandom(at, kEdgeSeedSlot, frame.counts.z);
+        uint rng = seedRandom(at, kEdgeSeedSlot, frame.seed);
         uint seedX = hashPcg(rng);
         uint seedY = hashPcg(seedX);
-        float rayFloorM = uintBitsToFloat(params.control.y);
+        float rayFloorM = params.rayFloorM;
         for (uint i = lane; i < samples; i += kDirectEdgeLanes) {
             bool hitSurface;
             uvec2 bits = computeSobolBits(i).xy;

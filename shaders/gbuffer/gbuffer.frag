@@ -67,6 +67,6 @@ void main() {
     vec2 motionNdc = vPreviousClip.w > 0.0
                          ? vClip.xy / vClip.w - vPreviousClip.xy / vPreviousClip.w
                          : vec2(0.0);
-    outVelocity = motionNdc * params.pixelScale.xy - params.pixelScale.zw;
+    outVelocity = motionNdc * params.halfTargetSizePx - params.jitterMotionPx;
 #endif
 }

@@ -33,7 +33,7 @@ flat out vec3 vEmission;
 flat out uint vInstance;
 
 void main() {
-    uint instance = params.control.x;
+    uint instance = params.instance;
     GpuInstance inst = instances[instance];
     uvec4 tri = triangles[inst.range.x + uint(gl_VertexID) / 3u];
     vec3 p0 = positions[tri.x].xyz;

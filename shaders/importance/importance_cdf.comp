@@ -31,7 +31,7 @@ shared float sRowMass[kImportanceSize];
 // touches anywhere keeps a probability (the photon's own power uses the exact falloff).
 float computeBase(GpuLightView view, GpuLight light, uint column, uint row) {
     if (view.info.y == 1u) return 1.0; // orthographic: equal areas, equal power
-    float t = 0.5 * view.axisTexel.w * frame.shadow.y;
+    float t = 0.5 * view.axisTexel.w * frame.lightResolutionPx;
     vec2 uv = (vec2(column, row) + 0.5) / float(kImportanceSize);
     vec2 p = (uv * 2.0 - 1.0) * t;
     float solidAngle = computePlaneSolidAngleDensity(p);
@@ -88,7 +88,7 @@ float filterColumn(uint viewIndex, uint column, int row, int radius, int compone
 }
 
 float getImportance(uint viewIndex, uint column, uint row) {
-    if (params.weights.x <= 0.0) return 0.0; // nothing aimed: the hits were not gathered
+    if (params.importanceShare <= 0.0) return 0.0; // nothing aimed: the hits were not gathered
     return filterColumn(viewIndex, column, int(row), kSharpRadius, 0) +
            kWideWeight * filterColumn(viewIndex, column, int(row), kWideRadius, 1);
 }
@@ -99,13 +99,13 @@ void main() {
     GpuLightView view = lightViews[viewIndex];
     GpuLight light = lights[view.info.x];
     uint first = viewIndex * kImportanceTexels + row * kImportanceSize;
-    if (params.weights.x > 0.0) {
+    if (params.importanceShare > 0.0) {
         // This frame's hits, per gather sample, into the maps' average (importance_frames): the
         // invocation's own row, which its row filter reads next.
         for (uint c = 0u; c < kImportanceSize; ++c) {
-            float hits = float(importanceHits[first + c]) * params.history.y;
-            float kept = params.history.x < 1.0 ? importanceHistory[first + c] : 0.0;
-            importanceHistory[first + c] = mix(kept, hits, params.history.x);
+            float hits = float(importanceHits[first + c]) * params.hitScale;
+            float kept = params.historyWeight < 1.0 ? importanceHistory[first + c] : 0.0;
+            importanceHistory[first + c] = mix(kept, hits, params.historyWeight);
         }
         for (uint c = 0u; c < kImportanceSize; ++c) {
             importanceRows[first + c] = vec2(filterRow(viewIndex, int(c), row, kSharpRadius),
@@ -136,7 +136,7 @@ void main() {
         totalWeighted += sRowWeighted[r];
     }
     // Without gathered importance (nothing of it visible) the floor takes everything.
-    float share = totalWeighted > 0.0 ? params.weights.x : 0.0;
+    float share = totalWeighted > 0.0 ? params.importanceShare : 0.0;
     float baseScale = totalBase > 0.0 ? (1.0 - share) / totalBase : 0.0;
     float weightedScale = totalWeighted > 0.0 ? share / totalWeighted : 0.0;
 
@@ -154,7 +154,7 @@ void main() {
     sRowMass[row] = rowMass;
     barrier();
     if (row != 0u) return;
-    uint marginal = params.counts.z * kImportanceTexels + viewIndex * kImportanceSize;
+    uint marginal = params.lightViewCount * kImportanceTexels + viewIndex * kImportanceSize;
     float total = 0.0;
     for (uint r = 0u; r < kImportanceSize; ++r) total += sRowMass[r];
     running = 0.0;

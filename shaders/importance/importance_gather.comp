@@ -44,7 +44,7 @@ void addImportance(uint view, vec2 uv, float weight) {
 // sees it; whether any does. n may face either way: it is turned towards the light first.
 bool addLitPoint(vec3 p, vec3 n, float weight) {
     bool lit = false;
-    for (uint i = 0u; i < frame.counts.x; ++i) {
+    for (uint i = 0u; i < frame.lightCount; ++i) {
         GpuLight light = lights[i];
         LightSample s = sampleLight(light, p);
         if (all(equal(s.irradiance, vec3(0.0)))) continue;
@@ -60,7 +60,7 @@ bool addLitPoint(vec3 p, vec3 n, float weight) {
         // relMSE median 0.050 -> 0.073 by that view), so suns take a ray.
 #if SHADOW_RAYS
         if (light.views.z == kLightSun) {
-            if (computeRayVisibility(p, facing, s, params.weights.w) < 0.5) continue;
+            if (computeRayVisibility(p, facing, s, params.rayOffsetM) < 0.5) continue;
         } else
 #endif
         if (computeVisibility(light, p, facing) < 0.5) continue;
@@ -74,7 +74,7 @@ bool addLitPoint(vec3 p, vec3 n, float weight) {
 // point it hits, with its normal turned to face the ray's origin.
 bool traceBounce(vec3 p, vec3 n, inout uint rng, out vec3 q, out vec3 nq) {
     vec3 dir = sampleCosine(n, nextRandom(rng, kRngPcg), nextRandom(rng, kRngPcg));
-    vec3 origin = p + n * computeRayOffset(p, params.weights.w);
+    vec3 origin = p + n * computeRayOffset(p, params.rayOffsetM);
     RayHit hit;
     if (!traceRay(origin, dir, kNoHitDistance, hit)) return false;
     q = origin + dir * hit.t;
@@ -85,23 +85,23 @@ bool traceBounce(vec3 p, vec3 n, inout uint rng, out vec3 q, out vec3 nq) {
 
 void main() {
     uint index = gl_GlobalInvocationID.x;
-    uvec2 grid = params.counts.xy;
+    uvec2 grid = params.gatherSamples;
     if (index >= grid.x * grid.y) return;
     uvec2 cell = uvec2(index % grid.x, index / grid.x);
-    uint rng = seedRandom(index, 0u, params.counts.w);
+    uint rng = seedRandom(index, 0u, params.seed);
     vec2 jitter = vec2(nextRandom(rng, kRngPcg), nextRandom(rng, kRngPcg));
-    vec2 sizePx = frame.imageSize.xy;
+    vec2 sizePx = frame.imageSizePx;
     ivec2 pixel = clamp(ivec2((vec2(cell) + jitter) * sizePx / vec2(grid)), ivec2(0), ivec2(sizePx) - 1);
     vec4 position = texelFetch(uPosition, pixel, 0);
     if (position.w < 0.5) return;
     vec3 n = normalize(texelFetch(uNormal, pixel, 0).xyz);
-    bool lit = addLitPoint(position.xyz, n, params.weights.y);
+    bool lit = addLitPoint(position.xyz, n, params.visibleWeight);
 
     // One bounce towards the surfaces that light this one; from an unlit point, a second.
     vec3 q;
     vec3 nq;
     if (!traceBounce(position.xyz, n, rng, q, nq)) return;
-    addLitPoint(q, nq, params.weights.z);
+    addLitPoint(q, nq, params.bounceWeight);
     if (lit || !traceBounce(q, nq, rng, q, nq)) return;
-    addLitPoint(q, nq, params.unlit.x);
+    addLitPoint(q, nq, params.unlitWeight);
 }

@@ -19,7 +19,8 @@ vec3 evaluateBrdf(vec3 diffuse, vec4 specularExponent, vec3 n, vec3 wi, vec3 wo)
 #endif
 }
 
-// The BRDF the splats shade a viewer pixel with (frame.specularTrace.x = traceExponent): where
+// The BRDF the splats shade a viewer pixel with (traceExponent:
+// frame.specularTraceMinExponent): where
 // the specular pass traces the pixel's lobe as a mirror ray, that ray carries all the light the
 // lobe reflects but the lights' own (direct.frag), so the photons add only the diffuse lobe.
 vec3 evaluateSplatBrdf(vec3 diffuse, vec4 specularExponent, vec3 n, vec3 wi, vec3 wo,

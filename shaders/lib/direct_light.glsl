@@ -26,11 +26,11 @@ vec3 computeLightRadiance(GpuLight light, vec3 position, vec3 n, vec3 diffuse, v
     return evaluateBrdf(diffuse, specular, n, s.wi, wo) * s.irradiance * cosTheta * visibility;
 }
 
-// Every light of the scene (frame.counts.x).
+// Every light of the scene (frame.lightCount).
 vec3 computeDirectRadiance(vec3 position, vec3 n, vec3 diffuse, vec4 specular, vec3 wo,
                            float rayFloorM) {
     vec3 radiance = vec3(0.0);
-    for (uint i = 0u; i < frame.counts.x; ++i)
+    for (uint i = 0u; i < frame.lightCount; ++i)
         radiance += computeLightRadiance(lights[i], position, n, diffuse, specular, wo, rayFloorM);
     return radiance;
 }

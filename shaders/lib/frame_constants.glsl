@@ -10,7 +10,7 @@ layout(std140, binding = kBindingFrameConstants) uniform FrameConstantsBlock {
 // which keeps the digits however near the near plane (1e-5 of the far plane at most) and however
 // far the eye from the origin.
 vec3 computeEyeToNear(vec2 point) {
-    vec2 ndc = point * frame.imageSize.zw * 2.0 - 1.0;
+    vec2 ndc = point * frame.inverseImageSizePx * 2.0 - 1.0;
     vec4 offset = frame.eyeOffsetFromClip * vec4(ndc, -1.0, 1.0);
     return offset.xyz / offset.w;
 }
@@ -23,7 +23,7 @@ bool findViewerPixel(vec3 positionW, out ivec2 pixel) {
     if (clip.w <= 0.0) return false;
     vec2 ndc = clip.xy / clip.w;
     if (any(greaterThanEqual(abs(ndc), vec2(1.0)))) return false;
-    pixel = min(ivec2((ndc * 0.5 + 0.5) * frame.imageSize.xy), ivec2(frame.imageSize.xy) - 1);
+    pixel = min(ivec2((ndc * 0.5 + 0.5) * frame.imageSizePx), ivec2(frame.imageSizePx) - 1);
     return true;
 }
 
@@ -31,7 +31,7 @@ bool findViewerPixel(vec3 positionW, out ivec2 pixel) {
 // stands for (splat_resolution): the middle of its block, inside the image. The splat shades
 // it, the filter and the upsample weigh by it.
 ivec2 getBlockGBufferPixel(ivec2 p, int divisor) {
-    return min(p * divisor + divisor / 2, ivec2(frame.imageSize.xy) - 1);
+    return min(p * divisor + divisor / 2, ivec2(frame.imageSizePx) - 1);
 }
 
 // A clip-space position of the image moved into the clip space of a buffer `divisor` times
@@ -40,7 +40,7 @@ ivec2 getBlockGBufferPixel(ivec2 p, int divisor) {
 // tested where the fragment stage shades, so discs of a pixel or two lose nothing.
 vec4 toBlockClip(vec4 clip, int divisor) {
     if (divisor <= 1) return clip;
-    vec2 image = frame.imageSize.xy;
+    vec2 image = frame.imageSizePx;
     vec2 reduced = vec2((ivec2(image) + divisor - 1) / divisor);
     // Image pixel x = (ndc + 1) image / 2 must land at buffer pixel (x - divisor / 2 - 0.5) /
     // divisor + 0.5, buffer ndc = 2 pixel / reduced - 1: an affine map, applied before the divide.

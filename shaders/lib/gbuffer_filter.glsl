@@ -28,7 +28,7 @@ vec3 getReflectance(ivec2 g) { return max(texelFetch(uDiffuse, g, 0).rgb, vec3(k
 // its door) measures its footprint on its own surface, not the step across the edge (which let a
 // wall metres in front pass the plane test). A pixel alone on its surface gets no plane test.
 float computePlaneScale(ivec2 g, vec3 position, int step) {
-    ivec2 size = ivec2(frame.imageSize.xy);
+    ivec2 size = ivec2(frame.imageSizePx);
     float footprint = 1e30;
     const ivec2 kSides[4] = ivec2[4](ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1));
     for (int i = 0; i < 4; ++i) {

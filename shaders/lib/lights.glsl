@@ -66,7 +66,7 @@ uint selectShadowView(GpuLight light, vec3 positionW) {
     if (kHasSunLights && light.views.w != 0u) {
         uint fine = light.views.w - 1u;
         vec4 clip = lightViews[fine].clipFromWorld * vec4(positionW, 1.0);
-        float inside = 1.0 - 4.0 / frame.shadow.y; // the normal offset and jitter stay inside
+        float inside = 1.0 - 4.0 / frame.lightResolutionPx; // the normal offset and jitter stay inside
         if (all(lessThan(abs(clip.xy / clip.w), vec2(inside)))) return fine;
     }
     return selectLightView(light, positionW);
@@ -80,7 +80,7 @@ float computeVisibility(GpuLight light, vec3 positionW, vec3 normalW) {
     bool ortho = kHasOnlySuns || (kHasSunLights && view.info.y == 1u);
     float depth = dot(positionW - view.originAxis.xyz, axis);
     float texelM = ortho ? view.axisTexel.w : view.axisTexel.w * max(depth, 0.0);
-    float biasM = frame.shadow.x * texelM;
+    float biasM = frame.shadowBiasTexels * texelM;
     // The normal offset grows with the angle to the light (sin): a surface facing the light
     // needs none, one at grazing light the whole bias; it moves shadow edges by as much.
     vec3 toLight = ortho ? -axis : normalize(view.originAxis.xyz - positionW);
@@ -90,7 +90,7 @@ float computeVisibility(GpuLight light, vec3 positionW, vec3 normalW) {
     if (clip.w <= 0.0) return 1.0;
     vec3 ndc = clip.xyz / clip.w;
     if (any(greaterThan(abs(ndc.xy), vec2(1.0)))) return 1.0; // outside: the falloff decides
-    int resolution = int(frame.shadow.y);
+    int resolution = int(frame.lightResolutionPx);
     ivec2 texel = clamp(ivec2((ndc.xy * 0.5 + 0.5) * float(resolution)), ivec2(0), ivec2(resolution - 1));
     vec4 occluder = texelFetch(uLightPosition, ivec3(texel, int(viewIndex)), 0);
     if (occluder.w < 0.5) return 1.0; // the light sees nothing there

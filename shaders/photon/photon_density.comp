@@ -49,9 +49,9 @@ layout(std430, binding = kBindingSplatClip) writeonly buffer SplatClip { vec4 sp
 // bits) at S + 2; at S + 4 .. S + 7 the extent of its photons along the two axes of the plane
 // their facing is closest to, as fixed-point fractions of the cell (kExtentOne = the whole
 // cell): M - min u, max u, M - min v, max v, all kept by atomicMax from a cleared table.
-// At params.slice.w (after the table's slots, and with splat_clip the order's counts): the
+// At params.causticListAt (after the table's slots, and with splat_clip the order's counts): the
 // caustic photons in view, for their own splat draw: its command (kSplatDrawUvec4s uvec4s, the
-// instance count added here), then their indices; with splat_clip at params.slice.z the order.
+// instance count added here), then their indices; with splat_clip at params.orderAt the order.
 layout(std430, binding = kBindingDensityCells) buffer DensityCells { uint cells[]; };
 
 layout(std140, binding = kBindingPassParams) uniform DensityParamsBlock { DensityParams params; };
@@ -111,18 +111,18 @@ const float kExtentOne = 16777216.0; // 2^24: a whole cell in the extent words
 // radius_mode density: photon `index` keeps a disc of its own (not collapsed into its merge cell's,
 // not a caustic photon: those have their list): the splat draws it.
 void appendDisc(uint index) {
-    uint at = atomicAdd(cells[params.discs.x], 1u);
-    cells[params.discs.x + 4u + at] = index;
+    uint at = atomicAdd(cells[params.discListAt], 1u);
+    cells[params.discListAt + 4u + at] = index;
 }
 
 
 void appendCausticPhoton(uint index) {
-    uint list = params.slice.w;
+    uint list = params.causticListAt;
     uint at = atomicAdd(cells[list + 1u], 1u);
     cells[list + 4u * kSplatDrawUvec4s + at] = index;
 }
 
-float getCellSize(uint level) { return params.grid.x * exp2(float(level)); }
+float getCellSize(uint level) { return params.finestCellM * exp2(float(level)); }
 
 // The two axes of the plane a facing is closest to.
 ivec2 getPlaneAxes(uint facing) {
@@ -138,13 +138,13 @@ const uint kNoSlot = 0xffffffffu;
 uint findSlot(ivec3 c, uint level, uint facing, bool insert) {
     uint h = hashCell(c, level, facing);
     uint key = h | 1u;
-    uint slot = hashPcg(h) & params.control.y;
+    uint slot = hashPcg(h) & params.slotMask;
     for (uint i = 0u; i < kDensityProbes; ++i) {
         uint at = kDensitySlotUints * slot;
         uint previous = insert ? atomicCompSwap(cells[at], 0u, key) : cells[at];
         if (previous == key || (insert && previous == 0u)) return at;
         if (previous == 0u) return kNoSlot;
-        slot = (slot + 1u) & params.control.y;
+        slot = (slot + 1u) & params.slotMask;
     }
     return kNoSlot;
 }
@@ -169,7 +169,7 @@ void insertCell(vec3 p, uint level, uint facing, float power) {
 // density grid's coarsest level whose side is at most scales.w r (none when even the finest is
 // larger: -1), so that merged discs differ in radius by less than 2x.
 int computeMergeLevel(float radius) {
-    float cells = params.scales.w * radius / params.grid.x;
+    float cells = params.mergeCellPerRadius * radius / params.finestCellM;
     return cells >= 1.0 ? min(int(floor(log2(cells))), int(kDensityMergeLevelOffset) - 1) : -1;
 }
 
@@ -254,8 +254,8 @@ float getPhotonPower(uint index) { return max(computeMean(photons[index].power.r
 
 // Ray origins: above the surface by kClipLift of the radius (at least a few ray epsilons), and
 // just beneath it.
-vec3 getAboveOrigin(vec3 p, vec3 n, float radius) { return p + n * max(4.0 * computeRayOffset(p, params.scales.y), kClipLift * radius); }
-vec3 getBeneathOrigin(vec3 p, vec3 n) { return p - n * (4.0 * computeRayOffset(p, params.scales.y)); }
+vec3 getAboveOrigin(vec3 p, vec3 n, float radius) { return p + n * max(4.0 * computeRayOffset(p, params.rayOffsetM), kClipLift * radius); }
+vec3 getBeneathOrigin(vec3 p, vec3 n) { return p - n * (4.0 * computeRayOffset(p, params.rayOffsetM)); }
 
 // The disc being clipped (one per invocation): its plane's basis and the two ray origins (0
 // above, 1 beneath). Per origin and ray the nearest surface met so far: its distance along the
@@ -437,9 +437,9 @@ bool isSeenPast(vec3 q, vec3 p, vec3 n, float radius) {
     vec4 shown = texelFetch(uPosition, pixel, 0);
     if (shown.w < 0.5) return true;
     bool onPlane = dot(texelFetch(uNormal, pixel, 0).xyz, n) > 0.0 &&
-                   abs(dot(shown.xyz - p, n)) <= params.view.x * radius;
+                   abs(dot(shown.xyz - p, n)) <= params.squash * radius;
     if (onPlane) return false;
-    vec3 eye = frame.cameraPosition.xyz;
+    vec3 eye = frame.cameraPosW;
     return distance(eye, shown.xyz) > distance(eye, q);
 }
 
@@ -496,7 +496,7 @@ float computeWidening(uint index) {
 // when its disc cannot reach the view; the others count as in view.
 void setTravelRadius(uint index) {
     float radius = computeTravelRadius(photons[index].positionDistance.w, photons[index].normalDensity.w,
-                                       params.travel, params.control.w);
+                                       params.travel, params.radiusMode);
     if (kWidenStrong) radius *= computeWidening(index);
     if (isOutsideView(photons[index].positionDistance.xyz, radius)) {
         photons[index].power.w = 0.0;
@@ -544,12 +544,12 @@ void mergePhoton(uint index) {
 }
 
 void main() {
-    uvec2 range = computeSliceRange(counters.splatDraw.y, params.slice.x, params.slice.y);
+    uvec2 range = computeSliceRange(counters.splatDraw.y, params.slice, params.slices);
     uint at = range.x + gl_GlobalInvocationID.x;
     if (at >= range.y) return;
     // The radius stage takes the photons in spatial order where photon_order.comp made one.
-    uint index = (kStage == kDensityStageRadius || kStage == kDensityStageMerge) && params.slice.z != 0u
-                     ? cells[params.slice.z + at]
+    uint index = (kStage == kDensityStageRadius || kStage == kDensityStageMerge) && params.orderAt != 0u
+                     ? cells[params.orderAt + at]
                      : at;
     if (kStage == kDensityStageTravelPower) {
         addLightPower(index);
@@ -572,7 +572,7 @@ void main() {
     }
     // Counts grow with the level: binary search for the finest one that holds k, the coarsest
     // when none does (summed only then: most photons find theirs below it).
-    float k = params.grid.y;
+    float k = params.neighbours;
     uint lo = 0u;
     uint hi = kDensityLevels - 1u;
     Block block;
@@ -596,19 +596,19 @@ void main() {
     // bounces) would otherwise set the density it is measured against and stay a bright spot.
     // Averaged frames count it in: their noise falls with the frames, the wider disc's blur not.
     float others = block.count > 1.5 ? (block.power - power) / (block.count - 1.0) : power;
-    bool spreadStrong = params.control.z != 0u;
+    bool spreadStrong = params.spreadStrong != 0u;
     float powerDensity = spreadStrong ? max(others, 1e-30) * max(block.count, 1.0) / area
                                       : max(block.power, power) / area;
-    float radius = sqrt(k * power / (kPi * powerDensity)) * params.scales.x;
+    float radius = sqrt(k * power / (kPi * powerDensity)) * params.radiusScale;
     // Never wider than the coarsest block: a lone photon in an empty scene stays finite.
     radius = min(radius, 2.0 * getCellSize(kDensityLevels - 1u));
     // While frames are averaged: light from a surface d away varies over about d (a wall's foot);
     // the finest cell keeps a photon that travelled almost nothing from a point-sized disc.
-    if (params.scales.z > 0.0) {
+    if (params.travelRadiusFactor > 0.0) {
         float travel = photons[index].positionDistance.w;
-        radius = min(radius, max(params.scales.z * travel, getCellSize(0u)));
+        radius = min(radius, max(params.travelRadiusFactor * travel, getCellSize(0u)));
     }
-    radius = clamp(radius, params.grid.z, params.grid.w);
+    radius = clamp(radius, params.radiusMinM, params.radiusMaxM);
     if (isOutsideView(p, radius)) {
         photons[index].power.w = 0.0;
         return;

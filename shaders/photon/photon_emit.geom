@@ -26,21 +26,21 @@ out vec4 outPower;
 
 void main() {
     uint index = vGridIndex[0];
-    int resolution = int(params.random.z); // light G-buffer size (texels)
-    uvec2 cell = uvec2(index % params.grid.z, index / params.grid.z);
+    int resolution = int(params.lightResolutionPx); // light G-buffer size (texels)
+    uvec2 cell = uvec2(index % params.gridPhotons.x, index / params.gridPhotons.x);
     // The grid point, warped to where the importance map sends it; the photon stands for
     // 1 / (count x pdf) of the view's unit square.
     float pdf;
-    vec2 jitter = computeGridJitter(params.grid.x, params.random.x);
-    vec2 uv = warpByImportance(params.grid.x, frame.counts.y, (vec2(cell) + jitter) / vec2(params.grid.zw), pdf);
+    vec2 jitter = computeGridJitter(params.lightView, params.seed);
+    vec2 uv = warpByImportance(params.lightView, frame.lightViewCount, (vec2(cell) + jitter) / vec2(params.gridPhotons), pdf);
     if (!(pdf > 0.0)) return;
-    float share = 1.0 / (float(params.grid.z * params.grid.w) * pdf);
+    float share = 1.0 / (float(params.gridPhotons.x * params.gridPhotons.y) * pdf);
     ivec2 texel = min(ivec2(uv * float(resolution)), ivec2(resolution - 1));
-    ivec3 at = ivec3(texel, int(params.grid.x));
+    ivec3 at = ivec3(texel, int(params.lightView));
     vec4 position = texelFetch(uLightPosition, at, 0);
     if (position.w < 0.5) return; // the light sees nothing there
 
-    GpuLightView view = lightViews[params.grid.x];
+    GpuLightView view = lightViews[params.lightView];
     GpuLight light = lights[view.info.x];
     vec3 axis = view.axisTexel.xyz;
     vec3 power;
@@ -74,24 +74,24 @@ void main() {
     vec3 diffuse = texelFetch(uLightDiffuse, at, 0).rgb;
     vec4 specular = texelFetch(uLightSpecular, at, 0);
     vec4 transmissive = texelFetch(uLightTransmissive, at, 0);
-    uint photon = params.grid.y + index;
+    uint photon = params.firstPhoton + index;
     vec3 numbers;
-    if (params.random.y == kRngSobol) {
+    if (params.rngGenerator == kRngSobol) {
         // The cell's place on the Z-order curve indexes the sequence; the view and frame seed
         // the scrambling.
-        uint scramble = seedRandom(params.grid.x, kSobolScrambleSlot, params.random.x);
+        uint scramble = seedRandom(params.lightView, kSobolScrambleSlot, params.seed);
         numbers = computeSobolNumbers(computeZOrder(cell), scramble);
     } else {
-        uint rng = seedRandom(photon, 0u, params.random.x);
-        numbers.x = nextRandom(rng, params.random.y);
-        numbers.y = nextRandom(rng, params.random.y);
-        numbers.z = nextRandom(rng, params.random.y);
+        uint rng = seedRandom(photon, 0u, params.seed);
+        numbers.x = nextRandom(rng, params.rngGenerator);
+        numbers.y = nextRandom(rng, params.rngGenerator);
+        numbers.z = nextRandom(rng, params.rngGenerator);
     }
     // first_bounce weighted: the lobes' probabilities scaled to sum to 1 (scatterSurfaceWith's
     // selectScale), so the photon bounces wherever the surface reflects.
     float albedo = computeLobeAlbedo(diffuse, specular, transmissive);
     if (!(albedo > 0.0)) return;
-    float selectScale = params.random.w == kFirstBounceWeighted ? 1.0 / albedo : 1.0;
+    float selectScale = params.firstBounce == kFirstBounceWeighted ? 1.0 / albedo : 1.0;
     uint event = scatterSurfaceWith(dir, power, normal.xyz, diffuse, specular, transmissive,
                                     normal.w > 0.0, numbers, selectScale);
     if (event == kScatterAbsorbed) return;

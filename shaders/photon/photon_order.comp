@@ -22,7 +22,7 @@ const uint kCellsPerInvocation = kOrderCells / kOrderScanGroupSize;
 shared uint gSums[kOrderScanGroupSize];
 
 void main() {
-    uint counts = params.control.x;
+    uint counts = params.countsAt;
     if (kStage == kOrderStageScan) {
         // Each invocation's run of cells, the runs' exclusive prefix sum (Hillis and Steele),
         // then each cell's first slot.
@@ -53,5 +53,5 @@ void main() {
         atomicAdd(cells[counts + cell], 1u);
         return;
     }
-    cells[params.control.y + atomicAdd(cells[counts + cell], 1u)] = index;
+    cells[params.orderAt + atomicAdd(cells[counts + cell], 1u)] = index;
 }

@@ -20,22 +20,22 @@ layout(std430, binding = kBindingDiscList) readonly buffer DiscList { uvec4 disc
 void main() {
 #if DISC_DRAWS
     // The same indices a splat as the stage before gave the draws.
-    for (uint p = 0u; p < params.control.w; ++p)
-        splatDraws[kSplatDrawUvec4s * p] = makeSplatDraw(counters.splatDraw.x, discCount.x, p, params.control.w);
+    for (uint p = 0u; p < params.splatDraws; ++p)
+        splatDraws[kSplatDrawUvec4s * p] = makeSplatDraw(counters.splatDraw.x, discCount.x, p, params.splatDraws);
     return;
 #endif
-    if (params.control.z == kPrepareStageBeforeTrace) {
-        uint bounced = min(counters.bounce.x, params.control.y);
+    if (params.stage == kPrepareStageBeforeTrace) {
+        uint bounced = min(counters.bounce.x, params.bounceCapacity);
         counters.bounce.x = bounced;
-        counters.traceDispatch = uvec4(computeTraceGroups(bounced, params.splat.y), 1u, 1u, 0u);
-        counters.result = uvec4(0u, params.control.x, 0u, params.control.y);
+        counters.traceDispatch = uvec4(computeTraceGroups(bounced, params.photonsPerLane), 1u, 1u, 0u);
+        counters.result = uvec4(0u, params.resultCapacity, 0u, params.bounceCapacity);
         return;
     }
     uint stored = min(counters.result.x, counters.result.y);
-    counters.splatDraw = uvec4(params.splat.x, stored, 0u, 0u);
+    counters.splatDraw = uvec4(params.splatIndexCount, stored, 0u, 0u);
     counters.densityDispatch = uvec4((stored + kTraceGroupSize - 1u) / kTraceGroupSize, 1u, 1u, 0u);
-    for (uint p = 0u; p < params.control.w; ++p) {
-        splatDraws[kSplatDrawUvec4s * p] = makeSplatDraw(params.splat.x, stored, p, params.control.w);
+    for (uint p = 0u; p < params.splatDraws; ++p) {
+        splatDraws[kSplatDrawUvec4s * p] = makeSplatDraw(params.splatIndexCount, stored, p, params.splatDraws);
         splatDraws[kSplatDrawUvec4s * p + 1u] = uvec4(0u);
     }
 }

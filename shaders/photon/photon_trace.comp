@@ -51,10 +51,10 @@ uint hashObjectPoint(RayHit hit) {
 // photon (every `lanes`-th of the slice) as soon as one ends, instead of idling until the
 // longest path of its group is done (the dispatch's lanes: computeTraceGroups).
 void main() {
-    uvec2 range = computeSliceRange(counters.bounce.x, params.slice.x, params.slice.y);
+    uvec2 range = computeSliceRange(counters.bounce.x, params.slice, params.slices);
     uint lanes = gl_NumWorkGroups.x * kTraceGroupSize;
     uint next = range.x + gl_GlobalInvocationID.x;
-    uint bounces = params.control.x;
+    uint bounces = params.bounces;
     vec3 position, dir, power;
     float travelled, density;
     uint id, light;
@@ -73,7 +73,7 @@ void main() {
             light = findPhotonLight(id);
             reflections = 1u;
         }
-        float offset = computeRayOffset(position, params.ray.x);
+        float offset = computeRayOffset(position, params.rayOffsetM);
         vec3 origin = position + dir * offset;
         RayHit hit;
         if (!traceRay(origin, dir, kNoHitDistance, hit)) {
@@ -94,11 +94,11 @@ void main() {
         // object_space: the numbers of where the photon hit, in the hit triangle's own terms
         // (instance, triangle, barycentrics on a 2^-16 grid), so they stay while that surface
         // and the path to it stay, however the object moved; else the photon's emission cell.
-        uint key = params.control.w == kRngObjectSpace ? hashObjectPoint(hit) : id;
-        uint rng = seedRandom(key, reflections, params.control.y);
+        uint key = params.rngMode == kRngObjectSpace ? hashObjectPoint(hit) : id;
+        uint rng = seedRandom(key, reflections, params.seed);
         vec3 diffuse = getHitDiffuse(m, hit.triangle, hit.barycentric);
         uint event = scatterPhoton(dir, power, n, diffuse, m.specular, m.transmissive,
-                                   frontFace, rng, params.control.z);
+                                   frontFace, rng, params.rngGenerator);
         if (event == kScatterAbsorbed) {
             reflections = 0u;
             continue;

@@ -11,7 +11,7 @@ layout(location = 0) out vec4 outBloom;
 void main() {
     vec3 radiance = texelFetch(uSource, ivec2(gl_FragCoord.xy), 0).rgb;
     float luminance = dot(radiance, vec3(0.3, 0.6, 0.1)); // the thesis tone map's weights
-    float threshold = params.bloom.x;
+    float threshold = params.bloomThreshold;
     float share = luminance > threshold ? (luminance - threshold) / luminance : 0.0;
-    outBloom = vec4(radiance * (share * params.bloom.y), 1.0);
+    outBloom = vec4(radiance * (share * params.bloomIntensity), 1.0);
 }

@@ -18,7 +18,7 @@ layout(location = 0) out vec4 outSpread;
 float getInverseDepth(ivec2 pixel) {
     vec4 position = texelFetch(uPosition, pixel, 0);
     if (position.w < 0.5) return 0.0;
-    float depth = dot(position.xyz - frame.cameraPosition.xyz, params.camera.xyz);
+    float depth = dot(position.xyz - frame.cameraPosW, params.viewAxisW);
     // Visible points lie beyond the near plane; the guard keeps a degenerate one finite.
     return 1.0 / max(depth, 1e-6);
 }
@@ -26,9 +26,9 @@ float getInverseDepth(ivec2 pixel) {
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     ivec2 size = textureSize(uSource, 0);
-    float inverseFocus = params.depthBlur.w > 0.5 ? getInverseDepth(size / 2) : params.depthBlur.y;
-    float radius = computeCocRadiusPx(params.depthBlur.x, getInverseDepth(pixel), inverseFocus,
-                                      params.depthBlur.z);
+    float inverseFocus = params.focusAtCentre != 0u ? getInverseDepth(size / 2) : params.inverseFocusPerM;
+    float radius = computeCocRadiusPx(params.apertureM, getInverseDepth(pixel), inverseFocus,
+                                      params.pixelsPerRadian);
     int reach = int(ceil(radius + 0.5));
     float total = 0.0; // the whole disc: what lands beyond the image is mirrored back
     for (int dy = -reach; dy <= reach; ++dy) {

@@ -32,7 +32,7 @@ void main() {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(pixel, size))) return;
     vec3 radiance = texelFetch(uSource, pixel, 0).rgb;
-    vec2 streak = texelFetch(uVelocity, pixel, 0).xy * params.motion.x;
+    vec2 streak = texelFetch(uVelocity, pixel, 0).xy * params.shutter;
     float len = length(streak);
     // A velocity that is not finite (a point at the last eye's plane) does not move.
     if (isnan(len) || isinf(len)) {

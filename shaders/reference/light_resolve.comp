@@ -17,7 +17,7 @@ layout(std430, binding = kBindingLightSplat) buffer LightSplat { float splat[]; 
 vec3 traceEmission(vec2 pixel) {
     vec3 dir = normalize(computeEyeToNear(pixel));
     RayHit hit;
-    if (!traceRay(frame.cameraPosition.xyz, dir, kNoHitDistance, hit)) return frame.background.rgb;
+    if (!traceRay(frame.cameraPosW, dir, kNoHitDistance, hit)) return frame.backgroundRadiance;
     return materials[triangles[hit.triangle].w].emission.rgb;
 }
 
@@ -30,7 +30,7 @@ void main() {
     splat[index] = 0.0;
     splat[index + 1u] = 0.0;
     splat[index + 2u] = 0.0;
-    uint rng = seedRandom(uint(pixel.y * size.x + pixel.x), params.control.x, ~params.control.z);
+    uint rng = seedRandom(uint(pixel.y * size.x + pixel.x), params.sampleIndex, ~params.seed);
     vec2 jitter = vec2(nextRandom(rng, kRngPcg), nextRandom(rng, kRngPcg));
     vec3 seen = traceEmission(vec2(pixel) + jitter);
     vec4 sum = imageLoad(uAccumulation, pixel);

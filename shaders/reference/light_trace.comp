@@ -34,7 +34,7 @@ void addToSplat(uint index, float value) {
 float computeLightPowerW(GpuLight light) {
     float mean = computeMean(light.power.rgb);
     uint type = light.views.z;
-    if (type == kLightSun) return mean * kPi * params.sceneSphere.w * params.sceneSphere.w;
+    if (type == kLightSun) return mean * kPi * params.sceneRadiusM * params.sceneRadiusM;
     if (type == kLightSpot) return mean * kTwoPiF * (1.0 - light.directionCos.w);
     return mean * 2.0 * kTwoPiF;
 }
@@ -43,11 +43,11 @@ float computeLightPowerW(GpuLight light) {
 // choosing it. False when the scene has no light with power.
 bool sampleLightRay(inout uint rng, out vec3 origin, out vec3 dir, out vec3 powerW) {
     float total = 0.0;
-    for (uint i = 0u; i < frame.counts.x; ++i) total += computeLightPowerW(lights[i]);
+    for (uint i = 0u; i < frame.lightCount; ++i) total += computeLightPowerW(lights[i]);
     if (total <= 0.0) return false;
     float u = nextRandom(rng, kRngPcg) * total;
-    uint chosen = frame.counts.x - 1u;
-    for (uint i = 0u; i < frame.counts.x; ++i) {
+    uint chosen = frame.lightCount - 1u;
+    for (uint i = 0u; i < frame.lightCount; ++i) {
         float w = computeLightPowerW(lights[i]);
         if (u < w) { chosen = i; break; }
         u -= w;
@@ -65,10 +65,10 @@ bool sampleLightRay(inout uint rng, out vec3 origin, out vec3 dir, out vec3 powe
         // carries E x (disc area) / paths.
         dir = light.directionCos.xyz;
         buildBasis(dir, t, b);
-        float radius = params.sceneSphere.w;
+        float radius = params.sceneRadiusM;
         float r = radius * sqrt(u1);
         float phi = kTwoPiF * u2;
-        origin = params.sceneSphere.xyz - dir * (2.0 * radius) + t * (r * cos(phi)) +
+        origin = params.sceneCentreW - dir * (2.0 * radius) + t * (r * cos(phi)) +
                  b * (r * sin(phi));
         powerW = light.power.rgb * (kPi * radius * radius / choice);
         return true;
@@ -100,23 +100,23 @@ bool sampleLightRay(inout uint rng, out vec3 origin, out vec3 dir, out vec3 powe
 // in: power x BRDF x cos(surface) / (d^2 x pixel area on the image plane x cos^3(camera)) (the
 // pinhole's importance for a box-filtered pixel), over this sample's path count.
 void connectToCamera(vec3 position, vec3 n, vec3 wiLight, GpuMaterial m, vec3 powerW) {
-    vec3 toEye = frame.cameraPosition.xyz - position;
+    vec3 toEye = frame.cameraPosW - position;
     float d2 = dot(toEye, toEye);
     float d = sqrt(d2);
     vec3 wo = toEye / d;
     float cosSurface = dot(n, wo);
-    float cosCamera = -dot(wo, params.cameraAxis.xyz);
+    float cosCamera = -dot(wo, params.cameraAxisW);
     if (cosSurface <= 0.0 || cosCamera <= 0.0) return;
     ivec2 pixel;
     if (!findViewerPixel(position, pixel)) return;
     vec3 f = evaluateBrdf(m.diffuse.rgb, m.specular, n, wiLight, wo);
     if (all(equal(f, vec3(0.0)))) return;
-    float offset = computeRayOffset(position, params.ray.x);
+    float offset = computeRayOffset(position, params.rayFloorM);
     if (isRayBlocked(position + n * offset, wo, d - offset)) return;
     float importance = cosSurface /
-        (d2 * params.ray.y * cosCamera * cosCamera * cosCamera * float(params.control.w));
+        (d2 * params.pixelAreaM2 * cosCamera * cosCamera * cosCamera * float(params.pathCount));
     vec3 value = powerW * f * importance;
-    uint index = 3u * uint(pixel.y * int(frame.imageSize.x) + pixel.x);
+    uint index = 3u * uint(pixel.y * int(frame.imageSizePx.x) + pixel.x);
     addToSplat(index, value.r);
     addToSplat(index + 1u, value.g);
     addToSplat(index + 2u, value.b);
@@ -124,14 +124,14 @@ void connectToCamera(vec3 position, vec3 n, vec3 wiLight, GpuMaterial m, vec3 po
 
 void main() {
     uint path = gl_GlobalInvocationID.x;
-    if (path >= params.control.w) return;
-    uint rng = seedRandom(path, params.control.x, params.control.z);
+    if (path >= params.pathCount) return;
+    uint rng = seedRandom(path, params.sampleIndex, params.seed);
     vec3 origin;
     vec3 dir;
     vec3 powerW;
     if (!sampleLightRay(rng, origin, dir, powerW)) return;
     if (all(equal(powerW, vec3(0.0)))) return;
-    uint bounces = params.control.y;
+    uint bounces = params.bounces;
     for (uint vertex = 1u; vertex <= bounces + 1u; ++vertex) {
         RayHit hit;
         if (!traceRay(origin, dir, kNoHitDistance, hit)) break;
@@ -149,7 +149,7 @@ void main() {
         uint event = scatterPhoton(dir, powerW, n, m.diffuse.rgb, m.specular, m.transmissive,
                                    frontFace, rng, kRngPcg);
         if (event == kScatterAbsorbed) break;
-        float offset = computeRayOffset(position, params.ray.x);
+        float offset = computeRayOffset(position, params.rayFloorM);
         origin = position + (dot(dir, n) >= 0.0 ? n : -n) * offset;
     }
 }

@@ -23,15 +23,15 @@ const uint kRouletteDepth = 3u;      // vertices traced with certainty before ro
 const float kMaxSurvival = 0.95;     // even bright paths end eventually
 
 vec3 traceCameraPath(vec2 pixel, inout uint rng) {
-    vec3 origin = frame.cameraPosition.xyz;
+    vec3 origin = frame.cameraPosW;
     vec3 dir = normalize(computeEyeToNear(pixel));
     vec3 radiance = vec3(0.0);
     vec3 throughput = vec3(1.0);
-    uint bounces = params.control.y;
+    uint bounces = params.bounces;
     for (uint vertex = 1u; ; ++vertex) {
         RayHit hit;
         if (!traceRay(origin, dir, kNoHitDistance, hit)) {
-            if (vertex == 1u) radiance += frame.background.rgb; // the background lights nothing
+            if (vertex == 1u) radiance += frame.backgroundRadiance; // the background lights nothing
             break;
         }
         vec3 position = origin + dir * hit.t;
@@ -43,8 +43,8 @@ vec3 traceCameraPath(vec2 pixel, inout uint rng) {
         if (vertex == 1u) radiance += m.emission.rgb; // emission is seen, it lights nothing
         vec3 wo = -dir;
         radiance += throughput * computeDirectRadiance(position, n, diffuse, m.specular, wo,
-                                                       params.ray.x);
-        float offset = computeRayOffset(position, params.ray.x);
+                                                       params.rayOffsetM);
+        float offset = computeRayOffset(position, params.rayOffsetM);
         if (vertex > bounces) break;
         float total = computeLobeAlbedo(diffuse, m.specular, m.transmissive);
         if (total <= 0.0) break;
@@ -70,7 +70,7 @@ void main() {
     ivec2 size = imageSize(uAccumulation);
     if (any(greaterThanEqual(pixel, size))) return;
     uint pixelIndex = uint(pixel.y * size.x + pixel.x);
-    uint rng = seedRandom(pixelIndex, params.control.x, params.control.z);
+    uint rng = seedRandom(pixelIndex, params.sampleIndex, params.seed);
     // Box filter: a uniformly jittered position inside the pixel.
     vec2 jitter = vec2(nextRandom(rng, kRngPcg), nextRandom(rng, kRngPcg));
     vec3 radiance = traceCameraPath(vec2(pixel) + jitter, rng);

@@ -25,20 +25,26 @@ ISPM_STATIC_ASSERT_SIZE(DebugRay, 32);
 
 // Parameters of trace_rays.comp (std140, at kBindingPassParams).
 struct TraceRaysParams {
-    uvec4 control; // x = ray count (the last group runs past the end of the rays), yzw unused
+    uint rayCount; // the last group runs past the end of the rays
+    uint padding0;
+    uint padding1;
+    uint padding2;
 };
 ISPM_STATIC_ASSERT_SIZE(TraceRaysParams, 16);
 
 // debug/photon_points.vert: one kind of photon as points (render/photon_points.cpp).
 ISPM_CONST uint kPhotonColourKind = 0u;      // the kind's tint, half the photon's hue
 ISPM_CONST uint kPhotonColourDirection = 1u; // unit direction [-1, 1] -> RGB [0, 1]
-ISPM_CONST uint kPhotonColourPower = 2u;     // RGB power x display.x, then ^display.y
+ISPM_CONST uint kPhotonColourPower = 2u;     // RGB power x powerScale, then ^inverseGamma
 struct PhotonPointsParams {
-    vec4 tint;     // rgb tint of this kind of photon, a = point size (px)
-    vec4 display;  // x = power scale (1/W: white at 1), y = 1/gamma of power colours, zw unused
-    uvec4 control; // x = colouring (kPhotonColour*)
+    vec3 tint; // of this kind of photon
+    float pointSizePx;
+    float powerScale;   // 1/W: white at 1
+    float inverseGamma; // of power colours
+    uint colouring;     // kPhotonColour*
+    uint padding0;
 };
-ISPM_STATIC_ASSERT_SIZE(PhotonPointsParams, 48);
+ISPM_STATIC_ASSERT_SIZE(PhotonPointsParams, 32);
 
 ISPM_NAMESPACE_END
 

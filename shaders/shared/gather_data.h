@@ -33,10 +33,16 @@ ISPM_STATIC_ASSERT_SIZE(GatherTile, 16);
 // Parameters of gather_bin.comp, gather_scan.comp and gather.comp (std140, at
 // kBindingPassParams).
 struct GatherParams {
-    uvec4 tiles; // x = tiles across, y = tiles down, z = tile count, w = 1: clip lines (splat_clip)
-    uvec4 splat; // x, y = splat buffer size (px), z = image pixels per buffer pixel, w = which
-                 // photons it takes (kSplat*Photons, shared/photon_data.h)
-    vec4 shape;  // x = squash (thickness along the normal / radius), yzw unused
+    uvec2 tiles; // tiles across and down
+    uint tileCount;
+    uint clipLines;         // 1: clip lines (splat_clip)
+    uvec2 bufferSizePx;     // the splat buffer's
+    uint pixelsPerBufferPx; // image pixels per buffer pixel along an axis
+    uint photons;           // which photons it takes (kSplat*Photons, shared/photon_data.h)
+    float squash;           // thickness along the normal / radius
+    float padding0;
+    float padding1;
+    float padding2;
 };
 ISPM_STATIC_ASSERT_SIZE(GatherParams, 48);
 

@@ -1,6 +1,9 @@
 // Shared between C++ and GLSL: lets one header declare structs and constants for both.
-// In C++ the GLSL vector/matrix names map to glm; structs follow std430/std140 rules by using only
-// vec4/mat4/uvec4-sized members (checked by static_assert beside each struct).
+// In C++ the GLSL vector/matrix names map to glm, whose vec2/vec3 align to 4 bytes where std140
+// and std430 align them to 8 and 16: a struct lays out alike on both sides when its members fill
+// 16-byte rows in order (a vec3 followed by a scalar, named padding where none fits) and a vec2
+// starts at a multiple of 8. Checked by static_assert beside each struct, and the uniform blocks'
+// offsets against the GL's by tests/gl/param_block_layout_test.cpp.
 #ifndef ISPM_HOST_DEVICE_H
 #define ISPM_HOST_DEVICE_H
 
@@ -42,6 +45,7 @@ using vec4 = glm::vec4;
 using uvec2 = glm::uvec2;
 using uvec3 = glm::uvec3;
 using uvec4 = glm::uvec4;
+using ivec2 = glm::ivec2;
 using ivec4 = glm::ivec4;
 using mat4 = glm::mat4;
 using uint = uint32_t;

@@ -55,16 +55,21 @@ ISPM_INLINE float computePlaneSolidAngleDensity(vec2 p) {
 
 // Parameters of the importance passes (std140 uniform block).
 struct ImportanceParams {
-    uvec4 counts; // x = gather samples across, y = down, z = light view count, w = frame seed
-    vec4 weights; // x = importance share (1 - uniform floor), y = weight of a visible point,
-                  // z = weight of a point one bounce away, w = ray offset (m)
-    vec4 history; // x = weight of this frame's samples in the maps (1: built anew; else
-                  // 1 / importance_frames), y = scale from a texel's hits to importance per
-                  // gather sample, zw unused
-    vec4 unlit;   // x = weight of a point two bounces away from a visible point that no light
-                  // reaches, yzw unused
+    uvec2 gatherSamples; // gather samples across and down the image
+    uint lightViewCount;
+    uint seed;             // the frame's
+    float importanceShare; // 1 - the uniform floor
+    float visibleWeight;   // weight of a visible point
+    float bounceWeight;    // weight of a point one bounce away
+    float rayOffsetM;
+    // Weight of this frame's samples in the maps (1: built anew; else 1 / importance_frames).
+    float historyWeight;
+    float hitScale; // from a texel's hits to importance per gather sample
+    // Weight of a point two bounces away from a visible point that no light reaches.
+    float unlitWeight;
+    float padding0;
 };
-ISPM_STATIC_ASSERT_SIZE(ImportanceParams, 64);
+ISPM_STATIC_ASSERT_SIZE(ImportanceParams, 48);
 ISPM_CONST int kBindingImportanceParams = 1; // uniform buffer
 
 ISPM_NAMESPACE_END

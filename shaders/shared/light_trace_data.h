@@ -15,12 +15,20 @@ ISPM_CONST uint kReferenceLight = 1u; // light paths connected to the camera (se
 
 // std140, at kBindingPassParams.
 struct LightTraceParams {
-    uvec4 control;    // x = sample index, y = bounces, z = seed, w = light paths this sample
-    vec4 ray;         // x = ray offset floor (m), y = area of one pixel on the image plane at
-                      // 1 m from the eye (m^2), zw unused
-    vec4 cameraAxis;  // xyz: unit view direction, w unused
-    vec4 sceneSphere; // xyz: centre of the scene's bounds, w: radius enclosing them (m); the sun's
-                      // paths start on a disc of this radius facing the sun
+    uint sampleIndex;
+    uint bounces;
+    uint seed;
+    uint pathCount;    // light paths this sample
+    float rayFloorM;   // ray offset floor
+    float pixelAreaM2; // area of one pixel on the image plane at 1 m from the eye
+    float padding0;
+    float padding1;
+    vec3 cameraAxisW; // unit view direction
+    float padding2;
+    // The scene's bounds' centre and the radius enclosing them: the sun's paths start on a disc
+    // of this radius facing the sun.
+    vec3 sceneCentreW;
+    float sceneRadiusM;
 };
 ISPM_STATIC_ASSERT_SIZE(LightTraceParams, 64);
 

@@ -116,8 +116,8 @@ ISPM_INLINE uint getSplatIndexCount(uint shape) {
     return shape == kSplatShapeBox ? kSplatCubeVertices : kSplatDiscIndices;
 }
 
-// Which result photons a splat draw or the gather takes (SplatParams.photons.x,
-// GatherParams.splat.w). In radius_mode density a caustic photon (focused by a mirror, glass or a
+// Which result photons a splat draw or the gather takes (SplatParams::photons,
+// GatherParams::photons). In radius_mode density a caustic photon (focused by a mirror, glass or a
 // glossy lobe since its last diffuse bounce: path density above 1) has discs sized by the
 // caustic photons around it alone (photon_density.comp); the caustic photons are splatted apart,
 // at the image's resolution and left out of the filter, so that their sharp shapes survive, and
@@ -140,16 +140,27 @@ ISPM_CONST uint kRadiusTravel = 0u;
 ISPM_CONST uint kRadiusPathDensity = 1u;
 ISPM_CONST uint kRadiusDensity = 2u;
 
+// The settings of the modes travel and path_density (a member of DensityParams: std140).
+struct TravelRadii {
+    float radiusMinM; // radius_min (times radius_scale)
+    float radiusMaxM; // radius_max (times radius_scale)
+    float distMinM;   // dist_min: travel up to which a photon takes radius_min
+    float distMaxM;   // dist_max: travel from which a photon takes radius_max
+};
+ISPM_STATIC_ASSERT_SIZE(TravelRadii, 16);
+
 // Radii of the modes travel and path_density. travel (the thesis): from radius_min at dist_min
 // to radius_max at dist_max, linear in the distance the photon travelled between. path_density
 // (McGuire and Luebke 2009), from the path alone: radius_max for a photon whose path never
 // focused (path density 1: diffuse bounces only), divided by the square root of the path density,
-// so focused photons splat smaller, never below radius_min. radii = (radius_min, radius_max,
-// dist_min, dist_max).
-ISPM_INLINE float computeTravelRadius(float travelledM, float pathDensity, vec4 radii, uint mode) {
-    if (mode == kRadiusPathDensity) return max(radii.x, radii.y / sqrt(max(pathDensity, 1.0f)));
-    float s = clamp((travelledM - radii.z) / max(radii.w - radii.z, 1e-9f), 0.0f, 1.0f);
-    return mix(radii.x, radii.y, s);
+// so focused photons splat smaller, never below radius_min.
+ISPM_INLINE float computeTravelRadius(float travelledM, float pathDensity, TravelRadii radii,
+                                      uint mode) {
+    if (mode == kRadiusPathDensity)
+        return max(radii.radiusMinM, radii.radiusMaxM / sqrt(max(pathDensity, 1.0f)));
+    float s = clamp((travelledM - radii.distMinM) / max(radii.distMaxM - radii.distMinM, 1e-9f),
+                    0.0f, 1.0f);
+    return mix(radii.radiusMinM, radii.radiusMaxM, s);
 }
 
 // Local photon density: result photons are counted in hashed grids of cubic cells, one grid per
@@ -171,20 +182,29 @@ ISPM_CONST uint kPrepareStageDiscDraws = 2u;
 
 // Parameters of photon_prepare.comp (std140, at kBindingPassParams).
 struct PrepareParams {
-    uvec4 control; // x = result capacity, y = bounce capacity, z = stage (kPrepareStage*),
-                   // w = splat passes
-    uvec4 splat;   // x = indices a photon's splat draws (getSplatIndexCount), y = photons a
-                   // lane of the trace takes (computeTraceGroups), zw unused
+    uint resultCapacity;  // result photons the buffer holds
+    uint bounceCapacity;  // bounce photons the buffer holds
+    uint stage;           // kPrepareStage*
+    uint splatDraws;      // draws the splat is split into
+    uint splatIndexCount; // indices a photon's splat draws (getSplatIndexCount)
+    uint photonsPerLane;  // photons a lane of the trace takes (computeTraceGroups)
+    uint padding0;
+    uint padding1;
 };
 ISPM_STATIC_ASSERT_SIZE(PrepareParams, 32);
 
 // Parameters of photon_trace.comp (std140, at kBindingPassParams).
 struct TraceParams {
-    uvec4 control; // x = bounces, y = frame seed, z = generator (kRngPcg ...), w = kRngFixed ...
-    vec4 ray;      // x = ray offset off the surface a photon leaves (m), yzw unused
-    uvec4 slice;   // x = this slice, y = slices (computeSliceRange); zw unused
+    uint bounces;
+    uint seed;         // the frame's
+    uint rngGenerator; // kRngPcg ...
+    uint rngMode;      // kRngFixed ...
+    float rayOffsetM;  // ray offset off the surface a photon leaves
+    uint slice;        // this slice (computeSliceRange)
+    uint slices;
+    uint padding0;
 };
-ISPM_STATIC_ASSERT_SIZE(TraceParams, 48);
+ISPM_STATIC_ASSERT_SIZE(TraceParams, 32);
 
 // The first bounce's Russian roulette (setting first_bounce): on the surface's albedo, so that
 // absorbed photons end there (the thesis's), or among the lobes alone, by their share of the
@@ -195,23 +215,31 @@ ISPM_CONST uint kFirstBounceWeighted = 1u;
 
 // Parameters of photon_emit.geom for one light view's grid (std140, at kBindingPassParams).
 struct EmitParams {
-    uvec4 grid;   // x = light view (G-buffer layer), y = global index of its first photon,
-                  // z, w = photons across and down the view
-    uvec4 random; // x = frame seed, y = generator (kRngPcg ...), z = light G-buffer size
-                  // (texels), w = the first bounce (kFirstBounce*)
+    uint lightView;         // the light G-buffer's layer
+    uint firstPhoton;       // global index of the grid's first photon
+    uvec2 gridPhotons;      // photons across and down the view
+    uint seed;              // the frame's
+    uint rngGenerator;      // kRngPcg ...
+    uint lightResolutionPx; // light G-buffer size (texels a side)
+    uint firstBounce;       // kFirstBounce*
 };
 ISPM_STATIC_ASSERT_SIZE(EmitParams, 32);
 
 // Parameters of the splat pass, splat.vert and splat.frag (std140, at kBindingPassParams); one
 // block per splat_passes draw, bound by range.
 struct SplatParams {
-    uvec4 control; // x = 1: the discs have clip lines (splat_clip), y = shape (kSplatShape*), z =
-                   // this draw, w = draw count
-    vec4 shape;    // x = squash (thickness along the normal / radius), y = image pixels per
-                   // splat-buffer pixel along an axis, zw = where the buffer's pixel (0, 0) lies
-                   // in the target drawn (SplatPass::computeTargetOffset)
-    uvec4 photons; // x = which photons the draw takes (kSplat*Photons), y = 1: its instances are
-                   // the density pass's list of discs (kBindingDiscList), zw unused
+    uint clipLines; // 1: the discs have clip lines (splat_clip)
+    uint shape;     // kSplatShape*
+    uint draw;      // this draw
+    uint drawCount;
+    float squash;          // thickness along the normal / radius
+    int pixelsPerBufferPx; // image pixels per splat-buffer pixel along an axis
+    // Where the buffer's pixel (0, 0) lies in the target drawn (SplatPass::computeTargetOffset).
+    ivec2 targetOffsetPx;
+    uint photons;  // which photons the draw takes (kSplat*Photons)
+    uint discList; // 1: its instances are the density pass's list of discs (kBindingDiscList)
+    uint padding0;
+    uint padding1;
 };
 ISPM_STATIC_ASSERT_SIZE(SplatParams, 48);
 
@@ -248,11 +276,12 @@ ISPM_CONST uint kOrderStageScatter = 2u;
 
 // Parameters of photon_order.comp (std140, at kBindingPassParams).
 struct OrderParams {
-    vec4 lo;       // xyz = the scene bounds' low corner (m), w unused
-    vec4 scale;    // xyz = grid cells per metre along each axis, w unused
-    uvec4 control; // x = the counts' first uint in the density cells, y = the order's, zw unused
+    vec3 loW;       // the scene bounds' low corner
+    uint countsAt;  // the counts' first uint in the density cells
+    vec3 cellsPerM; // grid cells per metre along each axis
+    uint orderAt;   // the order's first uint in the density cells
 };
-ISPM_STATIC_ASSERT_SIZE(OrderParams, 48);
+ISPM_STATIC_ASSERT_SIZE(OrderParams, 32);
 
 // Bit i of v (i < kOrderAxisBits) at bit 3i.
 ISPM_INLINE uint spreadOrderBits(uint v) {
@@ -266,29 +295,40 @@ ISPM_INLINE uint spreadOrderBits(uint v) {
 // numbered in Morton order.
 ISPM_INLINE uint computeOrderCell(vec3 position, OrderParams params) {
     const float last = float((1u << kOrderAxisBits) - 1u);
-    vec3 at = clamp((position - vec3(params.lo)) * vec3(params.scale), vec3(0.0f), vec3(last));
+    vec3 at = clamp((position - params.loW) * params.cellsPerM, vec3(0.0f), vec3(last));
     uvec3 c = uvec3(at);
     return spreadOrderBits(c.x) | (spreadOrderBits(c.y) << 1u) | (spreadOrderBits(c.z) << 2u);
 }
 
 // Parameters of photon_density.comp (std140, at kBindingPassParams).
 struct DensityParams {
-    vec4 grid;     // x = finest cell (m), y = neighbours k, z = radius min (m), w = radius max (m)
-    vec4 scales;   // x = radius scale, y = ray offset off a surface (m), z = radius at most this
-                   // times the travel (0: off), w = merge cell / radius (splat_merge, 0: off)
-    uvec4 control; // x = stage (kDensityStage*, as the program's DENSITY_STAGE), y = table
-                   // slots - 1 (a power of two), z = 1: measure a photon against its
-                   // neighbours only, w = radius mode
-    vec4 travel;   // travel modes: radius_min, radius_max (m, times radius_scale), dist_min,
-                   // dist_max (m)
-    uvec4 slice;   // x = this slice, y = slices (computeSliceRange); z = the radius stage's
-                   // photon order's first uint in the cells (photon_order.comp), 0: index order;
-                   // w = the caustic list's first uint in the cells (its draw command)
-    vec4 view;     // surface_ends: x = the splat's squash; yzw unused
-    uvec4 discs;   // radius_mode density: x = the disc list's first uint in the cells (its count,
-                   // then 3 unused uints, then the indices); yzw unused
+    float finestCellM;        // the finest level's cell size
+    float neighbours;         // neighbours k a radius spans
+    float radiusMinM;         // radius at least
+    float radiusMaxM;         // radius at most
+    float radiusScale;        // radius_scale
+    float rayOffsetM;         // ray offset off a surface
+    float travelRadiusFactor; // radius at most this times the travel (0: off)
+    float mergeCellPerRadius; // merge cell / radius (splat_merge, 0: off)
+    uint stage;               // kDensityStage*, as the program's DENSITY_STAGE
+    uint slotMask;            // table slots - 1 (a power of two)
+    uint spreadStrong;        // 1: measure a photon against its neighbours only
+    uint radiusMode;          // kRadius*
+    TravelRadii travel;       // travel modes
+    uint slice;               // this slice (computeSliceRange)
+    uint slices;
+    // The radius stage's photon order's first uint in the cells (photon_order.comp), 0: index
+    // order.
+    uint orderAt;
+    uint causticListAt; // the caustic list's first uint in the cells (its draw command)
+    float squash;       // surface_ends: the splat's
+    // radius_mode density: the disc list's first uint in the cells (its count, then 3 unused
+    // uints, then the indices).
+    uint discListAt;
+    uint padding0;
+    uint padding1;
 };
-ISPM_STATIC_ASSERT_SIZE(DensityParams, 112);
+ISPM_STATIC_ASSERT_SIZE(DensityParams, 96);
 
 ISPM_NAMESPACE_END
 

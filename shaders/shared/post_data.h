@@ -36,15 +36,22 @@ ISPM_INLINE float computeCocRadiusPx(float apertureM, float inverseDepth, float 
 // Parameters of the post passes (std140, at kBindingPassParams; one block per draw, bound by
 // range).
 struct PostParams {
-    vec4 bloom;     // x = threshold luminance W/(m^2 sr), y = intensity (share spread, 0..1),
-                    // z = radius px, w = Gaussian sigma px
-    vec4 depthBlur; // x = aperture diameter m, y = 1 / focus distance (1/m), z = pixels per
-                    // radian, H / (2 tan(fovY / 2)), w = 1: focus at the image centre's depth
-    vec4 motion;    // x = shutter (fraction of the frame), yzw unused
-    vec4 camera;    // xyz = unit view axis (depth is measured along it), w unused
-    uvec4 control;  // x = blur axis (0: x, 1: y) of a bloom blur draw, yzw unused
+    float bloomThreshold; // luminance W/(m^2 sr)
+    float bloomIntensity; // share spread, 0..1
+    float bloomRadiusPx;
+    float bloomSigmaPx;     // the Gaussian's
+    float apertureM;        // depth blur's aperture diameter
+    float inverseFocusPerM; // 1 / focus distance
+    float pixelsPerRadian;  // H / (2 tan(fovY / 2))
+    uint focusAtCentre;     // 1: focus at the image centre's depth
+    vec3 viewAxisW;         // unit view axis (depth is measured along it)
+    float shutter;          // motion blur's, a fraction of the frame
+    uint blurAxis;          // a bloom blur draw's (0: x, 1: y)
+    uint addsSource;        // 1: the blur adds the source less the extract (the bloom's last)
+    uint padding0;
+    uint padding1;
 };
-ISPM_STATIC_ASSERT_SIZE(PostParams, 80);
+ISPM_STATIC_ASSERT_SIZE(PostParams, 64);
 
 // Storage: motion blur's scattered radiance (3 floats a pixel, added with compare-and-swap), and
 // depth blur's largest radius this frame (uint pixels, atomicMax), which bounds its gather.

@@ -111,29 +111,39 @@ struct FrameConstants {
     // so a ray through the image is exact however far the eye is from the origin and however
     // near its near plane (edge_shade.comp; the near plane can lie 1e-5 of the far plane away).
     mat4 eyeOffsetFromClip;
-    vec4 cameraPosition; // xyz, w unused
-    vec4 background;     // rgb radiance where no surface is
-    vec4 imageSize;      // x = width, y = height, z = 1/width, w = 1/height
-    uvec4 counts;        // x = light count, y = light view count, z = seed, w = tone-map operator
-                         // (kTonemap*)
-    vec4 shadow;         // x = bias in texels, y = light G-buffer resolution
-    vec4 tonemap;        // x = eye adaptation's weight this frame (1: the derived white point
-                         // at once), y = exposure scale, z = 1/gamma, w = luminance_max (<=0:
-                         // derived)
-    vec4 specularTrace;  // x = Phong exponent from which the specular pass traces a viewer pixel's
-                         // lobe as a mirror ray (the splats then shade only its diffuse lobe);
-                         // 0: nothing traced (specular_depth 0). yzw unused
+    vec3 cameraPosW;         // the eye
+    uint lightCount;         // the scene's lights
+    vec3 backgroundRadiance; // W/(m^2 sr) where no surface is
+    uint lightViewCount;     // light cameras (layers of the light G-buffer)
+    vec2 imageSizePx;        // width, height
+    vec2 inverseImageSizePx; // 1 / width, 1 / height
+    uint seed;               // this frame's random seed
+    uint tonemapOperator;    // kTonemap*
+    float shadowBiasTexels;  // shadow map depth bias
+    float lightResolutionPx; // light G-buffer size (texels a side)
+    float adaptationWeight;  // eye adaptation's weight this frame (1: the derived white point at
+                             // once)
+    float exposureScale;     // 2^exposure stops
+    float inverseGamma;      // 1 / gamma
+    float luminanceMax;      // white point W/(m^2 sr) (<= 0: derived)
+    // The Phong exponent from which the specular pass traces a viewer pixel's lobe as a mirror
+    // ray (the splats then shade only its diffuse lobe); 0: nothing traced (specular_depth 0).
+    float specularTraceMinExponent;
+    float padding0;
+    float padding1;
+    float padding2;
 };
-ISPM_STATIC_ASSERT_SIZE(FrameConstants, 304);
+ISPM_STATIC_ASSERT_SIZE(FrameConstants, 288);
 
 // Parameters of accumulate.frag (std140, at kBindingPassParams).
 struct AccumulateParams {
     mat4 previousClipFromWorld; // the last frame's camera, for reprojection
-    vec4 weights;               // x = direct light's weight (1 / frames), y = cap on a pixel's
-                                // history length (0: no history), zw unused
-    uvec4 control;              // x = 1: the view or objects moved (reproject), yzw unused
+    float directWeight;         // this frame's direct light's weight (1 / frames)
+    float historyCapFrames;     // cap on a pixel's history length (0: no history)
+    uint moved;                 // 1: the view or objects moved (reproject)
+    uint padding0;
 };
-ISPM_STATIC_ASSERT_SIZE(AccumulateParams, 96);
+ISPM_STATIC_ASSERT_SIZE(AccumulateParams, 80);
 
 // How direct light finds its shadows (setting shadows, FrameSettings::shadows): the light views'
 // shadow maps (the thesis's) or a ray to the light through the BVH from every pixel.
@@ -146,8 +156,10 @@ ISPM_CONST uint kShadowsRay = 1u;
 // a draw of its own. Only the first draw writes coverage; the others add.
 ISPM_CONST uint kDirectLightsPerDraw = 60u;
 struct DirectParams {
-    uvec4 control; // x = lights in this draw, y = 1: the first draw (alpha = coverage), z = the
-                   // ray offset floor (float bits, GpuScene::getRayEpsilon: shadows ray), w unused
+    uint lightCount; // lights in this draw
+    uint firstDraw;  // 1: the first draw (alpha = coverage)
+    float rayFloorM; // the ray offset floor (GpuScene::getRayEpsilon: shadows ray)
+    uint padding0;
     uvec4 lights[kDirectLightsPerDraw / 4u]; // indices into the scene's lights, four a uvec4
 };
 ISPM_STATIC_ASSERT_SIZE(DirectParams, 256);
@@ -185,8 +197,10 @@ ISPM_STATIC_ASSERT_SIZE(DirectEdgeHeader, 16);
 
 // Parameters of edge_shade.comp (std140, at kBindingPassParams).
 struct DirectEdgeParams {
-    uvec4 control; // x = samples per listed pixel, y = the ray offset floor (float bits,
-                   // GpuScene::getRayEpsilon), zw unused
+    uint samplesPerPixel; // samples per listed pixel (before its halvings)
+    float rayFloorM;      // the ray offset floor (GpuScene::getRayEpsilon)
+    uint padding0;
+    uint padding1;
 };
 ISPM_STATIC_ASSERT_SIZE(DirectEdgeParams, 16);
 
@@ -197,10 +211,12 @@ ISPM_CONST int kImageFilterOutput = 0;
 // Parameters of one iteration of atrous.comp, and of upsample.frag (std140, at
 // kBindingPassParams; the filter's iterations are bound by range).
 struct FilterParams {
-    ivec4 iteration; // x = step (px; upsample: unused, its variants add the caustics),
-                     // y = 1: multiply the output by the reflectance (the filter's last
-                     // iteration at the image's size), z unused, w = image pixels per buffer
-                     // pixel along an axis
+    int stepPx;   // the iteration's step (upsample: unused, its variants add the
+                  // caustics)
+    int modulate; // 1: multiply the output by the reflectance (the filter's last
+                  // iteration at the image's size)
+    int padding0;
+    int pixelsPerBufferPx; // image pixels per buffer pixel along an axis
 };
 ISPM_STATIC_ASSERT_SIZE(FilterParams, 16);
 
@@ -211,19 +227,25 @@ struct GBufferParams {
     // The last frame's camera, for the velocity channel (the viewer's; a light view passes its
     // own clipFromWorld, and has no velocity attachment anyway).
     mat4 previousClipFromWorld;
-    vec4 eye;        // w = 1: the eye's position; w = 0: the direction toward an orthographic eye
-    vec4 pixelScale; // xy = half the target's size in pixels (NDC to pixels), zw = change of the
-                     // sub-pixel offset since the last frame, px (not motion: subtracted)
-    uvec4 control;   // x = the instance drawn, yzw unused
+    vec4 eye; // w = 1: the eye's position; w = 0: the direction toward an orthographic eye
+    vec2 halfTargetSizePx; // half the target's size in pixels (NDC to pixels)
+    vec2 jitterMotionPx;   // change of the sub-pixel offset since the last frame (not motion:
+                           // subtracted)
+    uint instance;         // the instance drawn
+    uint padding0;
+    uint padding1;
+    uint padding2;
 };
 ISPM_STATIC_ASSERT_SIZE(GBufferParams, 176);
 
 // Parameters of one sample of reference.comp, the path tracer (std140, at kBindingPassParams).
 struct ReferenceParams {
-    uvec4 control; // x = sample index, y = bounces, z = seed, w unused
-    vec4 ray;      // x = ray offset off the surface a ray leaves (m), yzw unused
+    uint sampleIndex;
+    uint bounces;
+    uint seed;
+    float rayOffsetM; // ray offset off the surface a ray leaves
 };
-ISPM_STATIC_ASSERT_SIZE(ReferenceParams, 32);
+ISPM_STATIC_ASSERT_SIZE(ReferenceParams, 16);
 
 ISPM_CONST uint kTonemapThesis = 0u;
 ISPM_CONST uint kTonemapFilmic = 1u;

@@ -23,12 +23,13 @@ ISPM_CONST uint kMaxSpecularDepth = 6u;
 
 // Parameters of specular_trace.comp (std140, at kBindingPassParams).
 struct SpecularParams {
-    uvec4 control; // x = levels traced (specular_depth, at most bounces), yzw unused
-    vec4 ray;      // x = ray offset floor (m, GpuScene::getRayEpsilon), y = depth tolerance of
-                   // a hit's reprojection onto a visible pixel (relative), z = the angle one
-                   // pixel spans at the eye across the image's middle (rad), w unused
+    uint levels;     // levels traced (specular_depth, at most bounces)
+    float rayFloorM; // ray offset floor (GpuScene::getRayEpsilon)
+    // Depth tolerance of a hit's reprojection onto a visible pixel (relative).
+    float reprojectionTolerance;
+    float pixelAngleRad; // the angle one pixel spans at the eye across the image's middle
 };
-ISPM_STATIC_ASSERT_SIZE(SpecularParams, 32);
+ISPM_STATIC_ASSERT_SIZE(SpecularParams, 16);
 
 // Whether a surface's specular lobe is traced as a mirror ray.
 ISPM_INLINE bool isMirrorLobe(vec4 specularExponent) {

@@ -9,9 +9,16 @@ ISPM_NAMESPACE_BEGIN
 
 // blit.frag: one texture of the frame over the scene region (debug_view.cpp).
 struct BlitParams {
-    vec4 region;    // origin x, y and size in window pixels
-    vec4 transform; // x = scale, y = bias, z = 1/gamma (0: none), w = array layer
-    uvec4 control;  // x = 1: black where the light view's position.w marks no surface
+    vec2 regionOriginPx; // in the window
+    vec2 regionSizePx;
+    float scale;
+    float bias;
+    float inverseGamma; // 0: none
+    float layer;        // the source's array layer
+    uint masked;        // 1: black where the light view's position.w marks no surface
+    uint padding0;
+    uint padding1;
+    uint padding2;
 };
 ISPM_STATIC_ASSERT_SIZE(BlitParams, 48);
 
@@ -20,11 +27,14 @@ ISPM_CONST uint kReferenceModeReference = 0u;
 ISPM_CONST uint kReferenceModeSideBySide = 1u;
 ISPM_CONST uint kReferenceModeHeatMap = 2u;
 struct ReferenceViewParams {
-    vec4 region;   // origin x, y and size in window pixels
-    vec4 display;  // x = scale 2^stops, y = 1/gamma, z = heat map maximum, w unused
-    uvec4 control; // x = mode (kReferenceMode*)
+    vec2 regionOriginPx; // in the window
+    vec2 regionSizePx;
+    float scale; // 2^stops
+    float inverseGamma;
+    float heatMapMax; // the heat map's maximum
+    uint mode;        // kReferenceMode*
 };
-ISPM_STATIC_ASSERT_SIZE(ReferenceViewParams, 48);
+ISPM_STATIC_ASSERT_SIZE(ReferenceViewParams, 32);
 
 ISPM_NAMESPACE_END
 

@@ -25,7 +25,7 @@ void main() {
     vec4 sum = vec4(0.0);
     for (uint i = local; i < kAmbientGrid * kAmbientGrid; i += kGroupInvocations) {
         vec2 cell = (vec2(i % kAmbientGrid, i / kAmbientGrid) + 0.5) / float(kAmbientGrid);
-        ivec2 pixel = ivec2(cell * frame.imageSize.xy);
+        ivec2 pixel = ivec2(cell * frame.imageSizePx);
         if (texelFetch(uPosition, pixel, 0).w < 0.5) continue;
         if (isMirrorLobe(texelFetch(uSpecular, pixel, 0)) ||
             isTransmissive(texelFetch(uTransmissive, pixel, 0))) {

@@ -22,7 +22,7 @@ const float kMaxSpreadPx = 16.0;
 
 void main() {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-    ivec2 size = ivec2(frame.imageSize.xy);
+    ivec2 size = ivec2(frame.imageSizePx);
     if (any(greaterThanEqual(pixel, size))) return;
     vec4 own = texelFetch(uSpecularLight, pixel, 0);
     vec3 light = own.rgb;

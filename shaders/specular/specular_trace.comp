@@ -53,7 +53,7 @@ void pushRay(vec3 position, vec3 n, vec3 dir, vec3 weight, uint level, float off
 void scatterRays(vec3 position, vec3 n, bool frontFace, vec3 dir, vec3 diffuse, vec4 specular,
                  vec4 transmissive, vec3 weight, uint level) {
     float cosIn = clamp(-dot(dir, n), 0.0, 1.0);
-    float offset = computeRayOffset(position, params.ray.x);
+    float offset = computeRayOffset(position, params.rayFloorM);
     vec3 reflected = vec3(0.0);
     if (isMirrorLobe(specular)) reflected += computeMirrorWeight(diffuse, specular, cosIn);
     if (isTransmissive(transmissive)) {
@@ -80,22 +80,23 @@ vec3 lookUpIndirect(vec3 position, vec3 diffuse) {
     if (!findViewerPixel(position, pixel)) return ambient;
     vec4 visible = texelFetch(uPosition, pixel, 0);
     if (visible.w < 0.5) return ambient;
-    float hitDistance = distance(position, frame.cameraPosition.xyz);
-    float visibleDistance = distance(visible.xyz, frame.cameraPosition.xyz);
-    if (abs(hitDistance - visibleDistance) > params.ray.y * hitDistance) return ambient;
+    float hitDistance = distance(position, frame.cameraPosW);
+    float visibleDistance = distance(visible.xyz, frame.cameraPosW);
+    if (abs(hitDistance - visibleDistance) > params.reprojectionTolerance * hitDistance) return ambient;
     return texelFetch(uIndirect, pixel, 0).rgb;
 }
 
 // A glossy lobe's mirror ray, hit `t` away from a surface `eyeDistance` from the eye, stands for
 // rays spread by 1 / sqrt(e) radians per axis (cos^e ~ exp(-e a^2 / 2)): t / sqrt(e) across
-// at the hit, seen from the eye along the unfolded path, in pixels (params.ray.z: a pixel's angle).
+// at the hit, seen from the eye along the unfolded path, in pixels (params.pixelAngleRad: a
+// pixel's angle).
 float computeGlossySpread(float exponent, float t, float eyeDistance) {
-    return t * inversesqrt(exponent) / ((eyeDistance + t) * params.ray.z);
+    return t * inversesqrt(exponent) / ((eyeDistance + t) * params.pixelAngleRad);
 }
 
 void main() {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-    if (any(greaterThanEqual(pixel, ivec2(frame.imageSize.xy)))) return;
+    if (any(greaterThanEqual(pixel, ivec2(frame.imageSizePx)))) return;
     imageStore(uSpecularLight, pixel, vec4(0.0)); // what a pixel that traces nothing adds
     vec4 position = texelFetch(uPosition, pixel, 0);
     if (position.w < 0.5) return;
@@ -106,8 +107,8 @@ void main() {
     bool glossy = !isTransmissive(transmissive);
     float spread = 0.0;
     vec4 normal = texelFetch(uNormal, pixel, 0); // faces the eye; w: +1 on the front face
-    vec3 dir = normalize(position.xyz - frame.cameraPosition.xyz);
-    uint levels = params.control.x;
+    vec3 dir = normalize(position.xyz - frame.cameraPosW);
+    uint levels = params.levels;
     gTop = 0u;
     scatterRays(position.xyz, normal.xyz, normal.w > 0.0, dir, texelFetch(uDiffuse, pixel, 0).rgb,
                 specular, transmissive, vec3(1.0), 1u);
@@ -118,7 +119,7 @@ void main() {
         if (!traceRay(ray.origin, ray.dir, kNoHitDistance, hit)) continue; // the background lights nothing
         if (glossy && ray.level == 1u) {
             spread = computeGlossySpread(specular.w, hit.t,
-                                         distance(position.xyz, frame.cameraPosition.xyz));
+                                         distance(position.xyz, frame.cameraPosW));
         }
         vec3 hitPosition = ray.origin + ray.dir * hit.t;
         vec3 geometric = computeHitNormal(hit);
@@ -127,7 +128,7 @@ void main() {
         GpuMaterial m = materials[triangles[hit.triangle].w];
         // Direct light with a shadow ray per light (glass blocks them, as in the reference).
         vec3 direct = computeDirectRadiance(hitPosition, n, m.diffuse.rgb, m.specular, -ray.dir,
-                                            params.ray.x);
+                                            params.rayFloorM);
         radiance += ray.weight * (direct + lookUpIndirect(hitPosition, m.diffuse.rgb));
         if (ray.level < levels) {
             scatterRays(hitPosition, n, frontFace, ray.dir, m.diffuse.rgb, m.specular, m.transmissive,

@@ -34,7 +34,7 @@ shared vec4 sPoles[kGatherBatch][kClipRays / 2u];
 shared uvec4 sWedges[kGatherBatch][kClipRays / 4u];
 
 void stagePhoton(uint slot, uint id) {
-    SplatShape shape = loadSplatShape(id, params.tiles.w);
+    SplatShape shape = loadSplatShape(id, params.clipLines);
     vec3 n = photons[id].normalDensity.xyz;
     vec3 t;
     vec3 b;
@@ -58,14 +58,14 @@ void main() {
     uint count = tiles[tile].counts.x;
     uint first = tiles[tile].counts.y;
     ivec2 pixel = ivec2(tileXY * kGatherTilePx + gl_LocalInvocationID.xy);
-    bool inside = all(lessThan(pixel, ivec2(params.splat.xy)));
-    ivec2 g = getBlockGBufferPixel(pixel, int(params.splat.z));
+    bool inside = all(lessThan(pixel, ivec2(params.bufferSizePx)));
+    ivec2 g = getBlockGBufferPixel(pixel, int(params.pixelsPerBufferPx));
     vec4 position = inside ? texelFetch(uPosition, g, 0) : vec4(0.0);
     bool receives = inside && position.w >= 0.5;
     vec3 n = receives ? texelFetch(uNormal, g, 0).xyz : vec3(0.0);
     vec3 diffuse = receives ? texelFetch(uDiffuse, g, 0).rgb : vec3(0.0);
     vec4 specular = receives ? texelFetch(uSpecular, g, 0) : vec4(0.0);
-    vec3 wo = normalize(frame.cameraPosition.xyz - position.xyz);
+    vec3 wo = normalize(frame.cameraPosW - position.xyz);
     vec4 sum = vec4(0.0);
     uint local = gl_LocalInvocationIndex;
     for (uint base = 0u; base < count; base += kGatherBatch) {
@@ -78,7 +78,7 @@ void main() {
             // The ellipsoid lies in the sphere of radius r max(1, squash): most of a tile's
             // photons miss the pixel, and leave here.
             vec3 d = position.xyz - sCentre[j].xyz;
-            float reach = sCentre[j].w * max(1.0, params.shape.x);
+            float reach = sCentre[j].w * max(1.0, params.squash);
             if (dot(d, d) > reach * reach) continue;
             vec2 poles[kClipRays];
             uint wedges[kClipRays];
@@ -89,10 +89,10 @@ void main() {
             for (uint i = 0u; i < kClipRays; ++i) wedges[i] = sWedges[j][i / 4u][i % 4u];
             float weight = computeSplatWeight(sCentre[j], sNormal[j].xyz, sTangent[j].xyz,
                                               sBitangent[j].xyz, floatBitsToUint(sNormal[j].w),
-                                              poles, wedges, params.shape.x, position.xyz, n);
+                                              poles, wedges, params.squash, position.xyz, n);
             if (weight < 0.0) continue;
             vec3 f = evaluateSplatBrdf(diffuse, specular, n, -sIncoming[j].xyz, wo,
-                                           frame.specularTrace.x);
+                                           frame.specularTraceMinExponent);
             sum += vec4(f * sPower[j].rgb * weight, 1.0);
         }
     }

@@ -32,24 +32,24 @@ const float kMarginPx = 1.0;
 void main() {
     uint id = gl_GlobalInvocationID.x;
     if (id >= min(counters.result.x, counters.result.y)) return;
-    SplatShape shape = loadSplatShape(id, params.tiles.w);
-    if (!(shape.radius > 0.0) || !isSplatTaken(params.splat.w, photons[id].normalDensity.w)) return;
+    SplatShape shape = loadSplatShape(id, params.clipLines);
+    if (!(shape.radius > 0.0) || !isSplatTaken(params.photons, photons[id].normalDensity.w)) return;
     vec3 n = photons[id].normalDensity.xyz;
     vec3 t;
     vec3 b;
     buildSplatBasis(n, t, b);
     vec3 p = photons[id].positionDistance.xyz;
-    vec2 size = vec2(params.splat.xy);
+    vec2 size = vec2(params.bufferSizePx);
     vec2 lo = vec2(1e30);
     vec2 hi = vec2(-1e30);
     bool behind = false;
-    float thickness = shape.radius * params.shape.x;
+    float thickness = shape.radius * params.squash;
     for (int c = 0; c < 8; ++c) {
         float alongT = (c & 1) != 0 ? shape.extent.x : -shape.extent.y;
         float alongB = (c & 2) != 0 ? shape.extent.z : -shape.extent.w;
         float alongN = (c & 4) != 0 ? thickness : -thickness;
         vec3 corner = p + t * alongT + b * alongB + n * alongN;
-        vec4 clip = toBlockClip(frame.clipFromWorld * vec4(corner, 1.0), int(params.splat.z));
+        vec4 clip = toBlockClip(frame.clipFromWorld * vec4(corner, 1.0), int(params.pixelsPerBufferPx));
         if (clip.w <= 0.0) {
             behind = true;
             break;
@@ -65,7 +65,7 @@ void main() {
     lo -= kMarginPx;
     hi += kMarginPx;
     if (hi.x < 0.0 || hi.y < 0.0 || lo.x > size.x || lo.y > size.y) return;
-    ivec2 last = ivec2(params.tiles.xy) - 1;
+    ivec2 last = ivec2(params.tiles) - 1;
     ivec2 first = clamp(ivec2(floor(max(lo, vec2(0.0)) / float(kGatherTilePx))), ivec2(0), last);
     ivec2 end = clamp(ivec2(floor(min(hi, size) / float(kGatherTilePx))), ivec2(0), last);
     for (int y = first.y; y <= end.y; ++y) {

@@ -15,7 +15,7 @@ layout(std140, binding = kBindingPassParams) uniform GatherParamsBlock { GatherP
 shared uint sRunTotals[kGatherScanGroupSize];
 
 void main() {
-    uint count = params.tiles.z;
+    uint count = params.tileCount;
     uint run = (count + kGatherScanGroupSize - 1u) / kGatherScanGroupSize;
     uint begin = gl_LocalInvocationID.x * run;
     uint end = min(begin + run, count);

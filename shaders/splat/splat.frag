@@ -32,23 +32,23 @@ layout(location = 0) out vec4 outRadiance;
 void main() {
     // A buffer smaller than the image shades the G-buffer pixel at the middle of its block; the
     // target drawn may hold the buffer at an offset (SplatPass::computeTargetOffset).
-    ivec2 at = ivec2(gl_FragCoord.xy) - ivec2(params.shape.zw);
-    ivec2 pixel = getBlockGBufferPixel(at, int(params.shape.y));
+    ivec2 at = ivec2(gl_FragCoord.xy) - params.targetOffsetPx;
+    ivec2 pixel = getBlockGBufferPixel(at, params.pixelsPerBufferPx);
     vec4 position = texelFetch(uPosition, pixel, 0);
     if (position.w < 0.5) discard;
     vec3 n = texelFetch(uNormal, pixel, 0).xyz;
 #if SPLAT_CLIP_LINES
     float weight = computeSplatWeight(vCentre, vNormal, vTangent, vBitangent, vLines, vPoles,
-                                      vWedges, params.shape.x, position.xyz, n);
+                                      vWedges, params.squash, position.xyz, n);
 #else
     vec2 x;
     float weight =
-        computeSplatKernel(vCentre, vNormal, vTangent, vBitangent, params.shape.x, position.xyz, n, x);
+        computeSplatKernel(vCentre, vNormal, vTangent, vBitangent, params.squash, position.xyz, n, x);
 #endif
     if (weight < 0.0) discard;
     vec3 wi = -vIncoming;
-    vec3 wo = normalize(frame.cameraPosition.xyz - position.xyz);
+    vec3 wo = normalize(frame.cameraPosW - position.xyz);
     vec3 f = evaluateSplatBrdf(texelFetch(uDiffuse, pixel, 0).rgb, texelFetch(uSpecular, pixel, 0), n,
-                               wi, wo, frame.specularTrace.x);
+                               wi, wo, frame.specularTraceMinExponent);
     outRadiance = vec4(f * vPower * weight, 1.0);
 }

@@ -44,10 +44,10 @@ flat out uint vWedges[kClipRays];
 void main() {
     // The caustic draw's instances are the density pass's list of caustic photons in view; in
     // radius_mode density the other draws' are its list of discs, each draw a slice of it.
-    uint listed = params.photons.y != 0u ? discCount.x : counters.splatDraw.y;
-    uint first = computeSliceRange(listed, params.control.z, params.control.w).x + uint(gl_InstanceID);
-    uint id = params.photons.x == kSplatCausticPhotons ? causticPhotons[gl_InstanceID]
-              : params.photons.y != 0u                 ? discPhotons[first]
+    uint listed = params.discList != 0u ? discCount.x : counters.splatDraw.y;
+    uint first = computeSliceRange(listed, params.draw, params.drawCount).x + uint(gl_InstanceID);
+    uint id = params.photons == kSplatCausticPhotons ? causticPhotons[gl_InstanceID]
+              : params.discList != 0u                 ? discPhotons[first]
                                                        : first;
     ResultPhoton photon = photons[id];
     vec3 n = photon.normalDensity.xyz;
@@ -58,9 +58,9 @@ void main() {
     // the view: it collapses to a point and draws nothing. With splat_clip discs come with clip lines:
     // the box or square shrinks to the lines across the basis axes (a box scene's walls), and
     // the fragment stage drops what lies beyond any line.
-    SplatShape shape = loadSplatShape(id, params.control.x);
+    SplatShape shape = loadSplatShape(id, params.clipLines);
     // A photon this draw does not take (the caustic photons are drawn apart) collapses too.
-    if (!isSplatTaken(params.photons.x, photon.normalDensity.w)) {
+    if (!isSplatTaken(params.photons, photon.normalDensity.w)) {
         shape.radius = 0.0;
         shape.extent = vec4(0.0);
     }
@@ -75,7 +75,7 @@ void main() {
                   (gl_VertexID & 4) != 0 ? 1.0 : -1.0);
     float alongT = c.x > 0.0 ? extent.x : extent.y;
     float alongB = c.y > 0.0 ? extent.z : extent.w;
-    float thickness = params.control.y == kSplatShapeBox ? radius * params.shape.x : 0.0;
+    float thickness = params.shape == kSplatShapeBox ? radius * params.squash : 0.0;
     vec3 world = photon.positionDistance.xyz + t * (c.x * alongT) + b * (c.y * alongB) + n * (c.z * thickness);
     vCentre = vec4(photon.positionDistance.xyz, radius);
     vNormal = n;
@@ -83,5 +83,5 @@ void main() {
     vBitangent = b;
     vPower = photon.power.rgb;
     vIncoming = photon.incoming.xyz;
-    gl_Position = toBlockClip(frame.clipFromWorld * vec4(world, 1.0), int(params.shape.y));
+    gl_Position = toBlockClip(frame.clipFromWorld * vec4(world, 1.0), params.pixelsPerBufferPx);
 }

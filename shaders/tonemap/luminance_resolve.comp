@@ -1,6 +1,6 @@
 // Picks the white point: the luminance below which kWhitePercentile of the lit pixels lie, and
 // moves the adapted white point towards it in log luminance by this frame's weight
-// (frame.tonemap.x = 1 - exp(-dt / eye_adaptation_s), or 1: at once).
+// (frame.adaptationWeight = 1 - exp(-dt / eye_adaptation_s), or 1: at once).
 #include "lib/frame_constants.glsl"
 #include "shared/tonemap_data.h"
 
@@ -27,7 +27,7 @@ void main() {
     }
     float target = exp2(log2White);
     float previous = exposure.luminanceMax.x;
-    float weight = frame.tonemap.x;
+    float weight = frame.adaptationWeight;
     float white = target;
     if (weight < 1.0 && previous > 0.0) white = exp2(mix(log2(previous), log2White, weight));
     exposure.luminanceMax = vec4(white, target, 0.0, 0.0);

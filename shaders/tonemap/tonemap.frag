@@ -18,9 +18,9 @@ vec3 applyAcesFit(vec3 x) {
 }
 
 void main() {
-    vec3 c = texelFetch(uHdr, ivec2(gl_FragCoord.xy), 0).rgb * frame.tonemap.y;
-    float white = frame.tonemap.w > 0.0 ? frame.tonemap.w : exposure.luminanceMax.x;
-    uint op = frame.counts.w;
+    vec3 c = texelFetch(uHdr, ivec2(gl_FragCoord.xy), 0).rgb * frame.exposureScale;
+    float white = frame.luminanceMax > 0.0 ? frame.luminanceMax : exposure.luminanceMax.x;
+    uint op = frame.tonemapOperator;
     vec3 display;
     if (op == kTonemapThesis) {
         float y = dot(c, vec3(0.3, 0.6, 0.1));
@@ -31,5 +31,5 @@ void main() {
     } else {
         display = clamp(c / white, 0.0, 1.0);
     }
-    outColor = vec4(pow(display, vec3(frame.tonemap.z)), 1.0);
+    outColor = vec4(pow(display, vec3(frame.inverseGamma)), 1.0);
 }

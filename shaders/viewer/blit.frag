@@ -6,7 +6,8 @@
 #ifdef TEXTURE_ARRAY
 layout(binding = 0) uniform sampler2DArray uSource;
 // A light view's channels other than position hold values only where position.w marks a surface
-// (the light views clear position and depth alone): control.x = 1 shows black elsewhere.
+// (the light views clear position and depth alone): params.masked = 1 shows black
+// elsewhere.
 layout(binding = 1) uniform sampler2DArray uPosition;
 #else
 layout(binding = 0) uniform sampler2D uSource;
@@ -17,14 +18,14 @@ layout(std140, binding = kBindingPassParams) uniform BlitParamsBlock { BlitParam
 layout(location = 0) out vec4 outColor;
 
 void main() {
-    vec2 uv = (gl_FragCoord.xy - params.region.xy) / params.region.zw;
+    vec2 uv = (gl_FragCoord.xy - params.regionOriginPx) / params.regionSizePx;
 #ifdef TEXTURE_ARRAY
-    vec3 c = textureLod(uSource, vec3(uv, params.transform.w), 0.0).rgb;
-    if (params.control.x != 0u && textureLod(uPosition, vec3(uv, params.transform.w), 0.0).w < 0.5) c = vec3(0.0);
+    vec3 c = textureLod(uSource, vec3(uv, params.layer), 0.0).rgb;
+    if (params.masked != 0u && textureLod(uPosition, vec3(uv, params.layer), 0.0).w < 0.5) c = vec3(0.0);
 #else
     vec3 c = textureLod(uSource, uv, 0.0).rgb;
 #endif
-    c = c * params.transform.x + params.transform.y;
-    if (params.transform.z > 0.0) c = pow(max(c, vec3(0.0)), vec3(params.transform.z));
+    c = c * params.scale + params.bias;
+    if (params.inverseGamma > 0.0) c = pow(max(c, vec3(0.0)), vec3(params.inverseGamma));
     outColor = vec4(c, 1.0);
 }

@@ -32,18 +32,18 @@ vec3 readReference(vec2 uv) {
 }
 
 vec3 encode(vec3 linear) {
-    return pow(max(linear * params.display.x, vec3(0.0)), vec3(params.display.y));
+    return pow(max(linear * params.scale, vec3(0.0)), vec3(params.inverseGamma));
 }
 
 void main() {
-    vec2 local = gl_FragCoord.xy - params.region.xy;
-    vec2 uv = local / params.region.zw;
-    uint mode = params.control.x;
+    vec2 local = gl_FragCoord.xy - params.regionOriginPx;
+    vec2 uv = local / params.regionSizePx;
+    uint mode = params.mode;
     vec3 c;
     if (mode == kReferenceModeReference) {
         c = encode(readReference(uv));
     } else if (mode == kReferenceModeSideBySide) {
-        float middle = 0.5 * params.region.z;
+        float middle = 0.5 * params.regionSizePx.x;
         if (abs(local.x - middle) < kDividerPx) {
             c = vec3(1.0);
         } else {
@@ -55,7 +55,7 @@ void main() {
         vec3 x = textureLod(uTotal, uv, 0.0).rgb;
         vec3 r = readReference(uv);
         float error = dot(abs(x - r), vec3(1.0)) / (dot(r, vec3(1.0)) + kErrorEpsilon);
-        c = computeFalseColour(error / params.display.z);
+        c = computeFalseColour(error / params.heatMapMax);
     }
     outColor = vec4(c, 1.0);
 }

@@ -66,7 +66,7 @@ std::vector<GpuHit> traceOnGpu(const GpuScene& scene, std::span<const Ray> rays)
     resultBuffer.bindBase(gl::BufferTarget::Storage, gpu::kBindingDebugResults);
     program.use();
     const auto rayCount = static_cast<GLuint>(rays.size());
-    const gpu::TraceRaysParams params{.control = {rayCount, 0, 0, 0}};
+    const gpu::TraceRaysParams params{.rayCount = rayCount};
     const gl::Buffer paramBuffer("debug trace rays parameters", sizeof(params));
     paramBuffer.upload(0, sizeof(params), &params);
     paramBuffer.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);

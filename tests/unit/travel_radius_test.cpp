@@ -9,7 +9,8 @@ namespace ispm {
 namespace {
 
 // radius_min 0.02 m, radius_max 0.08 m, dist_min 1 m, dist_max 5 m.
-const gpu::vec4 kRadii(0.02f, 0.08f, 1.0f, 5.0f);
+constexpr gpu::TravelRadii kRadii{
+    .radiusMinM = 0.02f, .radiusMaxM = 0.08f, .distMinM = 1.0f, .distMaxM = 5.0f};
 
 TEST(TravelRadius, GrowsLinearlyBetweenDistMinAndDistMax) {
     EXPECT_FLOAT_EQ(gpu::computeTravelRadius(0.0f, 1.0f, kRadii, gpu::kRadiusTravel), 0.02f);
