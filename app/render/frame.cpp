@@ -18,9 +18,6 @@
 namespace ispm {
 namespace {
 
-// frame_ms_target: frames measured at one budget before it changes (their median).
-constexpr size_t kBudgetFrames = 3;
-
 // Whether a and b set every setting alike but the seed.
 bool isSameButSeed(const Settings& a, const Settings& b) {
     const auto sameIn = [](const Settings& from, const Settings& other) {
@@ -48,8 +45,9 @@ Aov parseAov(const std::string& text, const std::string& where) {
 
 FrameRunner::FrameRunner(const Scene& scene, const Settings& settings, gl::TimingMethod timing)
     : mScene(scene), mSettings(settings), mFrameSettings(resolveFrameSettings(settings)),
-      mWidth(mFrameSettings.width), mHeight(mFrameSettings.height), mTimer(timing),
-      mGpuScene(scene, mFrameSettings.shadowMapSize),
+      mWidth(mFrameSettings.width), mHeight(mFrameSettings.height),
+      mBudget({"emit", "trace", "density", "splat"}, int(findSetting("photons")->maxValue)),
+      mTimer(timing), mGpuScene(scene, mFrameSettings.shadowMapSize),
       mFrameConstants("frame constants", sizeof(gpu::FrameConstants)) {
     mGBuffer = std::make_unique<GBufferPass>();
     mLightViews = std::make_unique<LightViewPass>();
@@ -75,6 +73,7 @@ FrameRunner::FrameRunner(const Scene& scene, const Settings& settings, gl::Timin
     mBloom = std::make_unique<BloomPass>();
     mTotal = &mCompose->getOutput();
     mTonemap = std::make_unique<TonemapPass>(*mTotal);
+    mBudget.restart(mFrameSettings.photons);
     resizePasses();
 }
 
@@ -113,17 +112,17 @@ void FrameRunner::applySettings(const Settings& settings) {
     // A new seed alone (bench's timed frames, accumulation) keeps the importance maps'
     // history: any map is an unbiased pdf.
     if (!isSameButSeed(mSettings, settings)) mImportanceFresh = true;
+    // A budget starts from the photons set; other edits keep the one adapted so far.
+    if (settings.get("photons") != mSettings.get("photons") ||
+        settings.get("frame_ms_target") != mSettings.get("frame_ms_target")) {
+        mBudget.restart(settings.getInt("photons"));
+    }
+    mBudget.dropMeasurements(); // measured at the old settings
     mSettings = settings;
     mImportanceStale = true;
     mFrameSettings = resolveFrameSettings(settings);
     resetHistory();
-    mBudgetCosts.clear(); // measured at the old settings
-    const int lightResolution = mFrameSettings.shadowMapSize;
-    if (lightResolution != mGpuScene.getLightResolution()) {
-        // The light cameras' resolution is baked into the uploaded scene; the light G-buffer
-        // follows it on its next execute.
-        mGpuScene = GpuScene(mScene, lightResolution);
-    }
+    applyBudget();
     if (mFrameSettings.width != mWidth || mFrameSettings.height != mHeight) {
         mWidth = mFrameSettings.width;
         mHeight = mFrameSettings.height;
@@ -432,36 +431,22 @@ const gl::Texture& FrameRunner::runPostPasses(const FrameInputs& inputs) {
 }
 
 void FrameRunner::adaptPhotonBudget() {
-    const double target = mFrameSettings.frameMsTarget;
-    // A still view that accumulates is converging: a new budget would restart it (and once its
-    // history is full, frames cost nothing).
-    if (target <= 0.0 || (mFrameSettings.accumulate > 0 && mHistoryFrames > 1)) {
-        mBudgetCosts.clear();
+    // A still view that accumulates is converging (once its history is full, frames cost
+    // nothing).
+    const bool converging = mFrameSettings.accumulate > 0 && mHistoryFrames > 1;
+    if (!mBudget.recordFrame(mTimings, mFrameSettings.frameMsTarget, converging,
+                             uint32_t(mTimer.getFramesInFlight()))) {
         return;
     }
-    if (mBudgetSettle > 0) {
-        --mBudgetSettle;
-        return;
-    }
-    const std::vector<std::string> photonPasses = {mEmit->getName(), mTrace->getName(),
-                                                   mDensity->getName(), mSplat->getName()};
-    mBudgetCosts.push_back(splitFrameCost(mTimings, photonPasses));
-    if (mBudgetCosts.size() < kBudgetFrames) return;
-    // The median frame of the window: one slow frame (another process, a first use of a
-    // program) does not move the budget.
-    std::sort(mBudgetCosts.begin(), mBudgetCosts.end(), [](const FrameCost& a, const FrameCost& b) {
-        return a.fixedMs + a.photonMs < b.fixedMs + b.photonMs;
-    });
-    const FrameCost median = mBudgetCosts[mBudgetCosts.size() / 2];
-    mBudgetCosts.clear();
-    const int photons = ispm::adaptPhotonBudget(mFrameSettings.photons, median, target,
-                                                int(findSetting("photons")->maxValue));
-    if (photons == mFrameSettings.photons) return;
-    Settings next = mSettings;
-    next.set("photons", photons, "frame_ms_target");
-    setSettings(next);
-    // Timer queries answer frames late: the frames still in flight measure the old budget.
-    mBudgetSettle = int(mTimer.getFramesInFlight());
+    // Only the photon count changes: the accumulated and importance histories stay (any count
+    // estimates the same light), and a moving view keeps its reprojected light.
+    applyBudget();
+}
+
+void FrameRunner::applyBudget() {
+    ispm::applyPhotonBudget(mFrameSettings, mSettings, mBudget.getPhotons());
+    // The light G-buffer follows the light views' resolution on its next execute.
+    mGpuScene.setLightResolution(mScene, mFrameSettings.shadowMapSize);
 }
 
 void FrameRunner::waitForTimings() {

@@ -42,11 +42,6 @@ double computeAdaptationWeight(double timeStepS, double timeConstantS);
 // Parses "direct|indirect|total"; throws InputError naming `where` otherwise.
 Aov parseAov(const std::string& text, const std::string& where);
 
-struct PassTiming {
-    std::string name;
-    double ms = 0.0;
-};
-
 class FrameRunner {
   public:
     // `settings` are the effective settings (scene overrides with the command line on top).
@@ -181,12 +176,12 @@ class FrameRunner {
     int mWidth;
     int mHeight;
     void setTimings(const std::vector<gl::PassTimer::Sample>& samples);
-    // frame_ms_target: records the newest timings and, once enough frames measured the present
-    // budget, sets the adapted one (a settings change: the history starts anew).
+    // frame_ms_target: hands the newest timings to the budget and applies a new one.
     void adaptPhotonBudget();
-    std::vector<FrameCost> mBudgetCosts; // frames measured at the present budget
-    int mBudgetSettle = 0;               // frames whose timings may predate the last change
-    uint32_t getFrameSeed() const;       // FrameInputs::seed
+    // The budget's photons over the settings as resolved, and the light views' resolution that
+    // may follow them (shadows ray): the light views are re-made, the BVH stays.
+    void applyBudget();
+    uint32_t getFrameSeed() const; // FrameInputs::seed
 
     // The frame in progress (beginFrame/continueFrame): its steps, the next one, its inputs.
     std::vector<FrameStep> mSteps;
@@ -198,6 +193,7 @@ class FrameRunner {
     std::unordered_map<std::string, double> mStepCostMs; // each step's time when it last ran
     std::unordered_map<std::string, double> mLastPassMs; // each pass's time, last timed frame
 
+    FrameBudget mBudget; // frame_ms_target's photons (mFrameSettings.photons)
     gl::PassTimer mTimer;
     std::vector<PassTiming> mTimings;
     GpuScene mGpuScene;
