@@ -86,8 +86,6 @@ std::array<Pass*, 17> FrameRunner::getPasses() const {
 }
 
 void FrameRunner::resizePasses() {
-    mImportanceStale = true;
-    mImportanceFresh = true;
     for (Pass* pass : getPasses())
         pass->resize(mWidth, mHeight);
 }
@@ -111,7 +109,11 @@ void FrameRunner::applySettings(const Settings& settings) {
     mPendingSettings.reset();
     // A new seed alone (bench's timed frames, accumulation) keeps the importance maps'
     // history: any map is an unbiased pdf.
-    if (!isSameButSeed(mSettings, settings)) mImportanceFresh = true;
+    if (isSameButSeed(mSettings, settings)) {
+        mImportance->invalidateMaps();
+    } else {
+        mImportance->restartHistory();
+    }
     // A budget starts from the photons set; other edits keep the one adapted so far.
     if (settings.get("photons") != mSettings.get("photons") ||
         settings.get("frame_ms_target") != mSettings.get("frame_ms_target")) {
@@ -119,9 +121,8 @@ void FrameRunner::applySettings(const Settings& settings) {
     }
     mBudget.dropMeasurements(); // measured at the old settings
     mSettings = settings;
-    mImportanceStale = true;
     mFrameSettings = resolveFrameSettings(settings);
-    resetHistory();
+    mAccumulate->restartHistory();
     applyBudget();
     if (mFrameSettings.width != mWidth || mFrameSettings.height != mHeight) {
         mWidth = mFrameSettings.width;
@@ -132,9 +133,10 @@ void FrameRunner::applySettings(const Settings& settings) {
 
 void FrameRunner::updateFrameConstants() {
     // Accumulated frames look through new sub-pixel offsets: the average is anti-aliased.
-    const glm::vec2 jitter = computeFrameJitter(mFrameSettings, mHistoryFrames);
-    gpu::FrameConstants fc = computeFrameConstants(mScene, mGpuScene, mFrameSettings, mWidth,
-                                                   mHeight, getFrameSeed(), jitter);
+    const glm::vec2 jitter = computeFrameJitter(mFrameSettings, getHistoryFrames());
+    const uint32_t seed = mAccumulate->getHistory().computeSeed(mFrameSettings);
+    gpu::FrameConstants fc =
+        computeFrameConstants(mScene, mGpuScene, mFrameSettings, mWidth, mHeight, seed, jitter);
     mClipFromWorld = fc.clipFromWorld;
     fc.tonemap.x =
         static_cast<float>(computeAdaptationWeight(mTimeStepS, mFrameSettings.eyeAdaptationS));
@@ -149,6 +151,7 @@ void FrameRunner::runPass(Pass& pass, const FrameInputs& inputs) {
 }
 
 FrameInputs FrameRunner::getFrameInputs() const {
+    const AccumulationHistory& history = mAccumulate->getHistory();
     return {mScene,
             mGpuScene,
             mFrameSettings,
@@ -157,28 +160,14 @@ FrameInputs FrameRunner::getFrameInputs() const {
             mScene.camera.position,
             mWidth,
             mHeight,
-            mHistoryFrames,
-            mHistoryReset,
-            mMoved,
-            mPreviousClipFromWorld,
-            getFrameSeed(),
-            computeProgressiveStep(mFrameSettings.accumulate, mHistoryFrames,
+            history.getFrames(),
+            history.isReset(),
+            history.isMoved(),
+            history.getPreviousClipFromWorld(),
+            history.computeSeed(mFrameSettings),
+            computeProgressiveStep(mFrameSettings.accumulate, history.getFrames(),
                                    mFrameSettings.denoiseIterations),
             mSplatDraws};
-}
-
-uint32_t FrameRunner::getFrameSeed() const {
-    // per_frame: new numbers every frame drawn (the thesis's prototype); the others keep them
-    // while the view holds, and move on only to add frames to an accumulation.
-    if (mFrameSettings.rngMode == gpu::kRngPerFrame) return mFrameSettings.seed + mFramesDrawn;
-    return mFrameSettings.accumulate > 0 ? mFrameSettings.seed + mSequenceFrames
-                                         : mFrameSettings.seed;
-}
-
-void FrameRunner::resetHistory() {
-    mHistoryReset = true;
-    mHistoryFrames = 0;
-    mSequenceFrames = 0;
 }
 
 void FrameRunner::updateScene() {
@@ -192,23 +181,17 @@ void FrameRunner::updateScene() {
 void FrameRunner::applySceneUpdate() {
     mPendingSceneUpdate = false;
     mGpuScene.updateDynamic(mScene);
-    if (mGpuScene.getLightsVersion() != mHistoryLightsVersion) {
-        resetHistory(); // the light itself changed: everything drawn before is stale
-        return;
-    }
-    // Objects moved: the direct light starts anew, the indirect history is reprojected.
-    mHistoryFrames = 0;
-    mMoved = true;
+    // Moved objects keep the importance maps (AccumulatePass reprojects; see ImportancePass).
+    mAccumulate->setSceneUpdated(mGpuScene.getLightsVersion());
 }
 
 void FrameRunner::rebuildScene() {
     // Lights or instances were added or removed: the frame in progress has the old ones.
     dropFrameInProgress();
     mPendingSceneUpdate = false; // the new upload holds every edit
-    mImportanceStale = true;
-    mImportanceFresh = true;
+    mImportance->restartHistory();
     mGpuScene = GpuScene(mScene, mGpuScene.getLightResolution());
-    resetHistory();
+    mAccumulate->restartHistory();
 }
 
 void FrameRunner::dropFrameInProgress() {
@@ -218,11 +201,6 @@ void FrameRunner::dropFrameInProgress() {
     mNextStep = 0;
     mTimer.discardFrame();
     if (mPendingSettings) applySettings(*mPendingSettings);
-}
-
-uint32_t FrameRunner::getAccumulatedFrames() const {
-    const auto window = static_cast<uint32_t>(std::max(mFrameSettings.accumulate, 1));
-    return std::min(mHistoryFrames, window);
 }
 
 void FrameRunner::renderFrame() {
@@ -236,22 +214,17 @@ void FrameRunner::beginFrame(double sliceMs) {
     if (mPendingSceneUpdate) applySceneUpdate();
     mSteps.clear();
     mNextStep = 0;
-    if (!isSameCamera(mScene.camera, mHistoryCamera)) {
-        mHistoryFrames = 0;
-        mMoved = true;
-        mImportanceStale = true;
-    }
-    mHistoryCamera = mScene.camera;
+    if (mAccumulate->setCamera(mScene.camera)) mImportance->invalidateMaps();
     // A full history of a still view is the image: nothing changed, so nothing is drawn (a
     // resting camera costs nothing), and the image stands still.
     const auto window = static_cast<uint32_t>(mFrameSettings.accumulate);
-    if (window > 0 && mHistoryFrames >= window) {
+    if (window > 0 && getHistoryFrames() >= window) {
         mTimings.clear(); // no pass ran
         return;
     }
     mGpuScene.setViewer(mScene, mScene.camera, float(mWidth) / float(mHeight));
     // Accumulated frames also move the light cameras inside a texel: shadow edges anti-aliased.
-    mGpuScene.setLightJitter(mFrameSettings.accumulate > 0 ? computeShadowJitter(mHistoryFrames)
+    mGpuScene.setLightJitter(mFrameSettings.accumulate > 0 ? computeShadowJitter(getHistoryFrames())
                                                            : glm::vec2(0.0f));
     updateFrameConstants();
     const auto splatPasses = static_cast<uint32_t>(mFrameSettings.splatPasses);
@@ -303,25 +276,7 @@ void FrameRunner::addFrameSteps(double sliceMs) {
         addPassStep(*mLightViews);
     }
     if (hasIndirect()) {
-        // The maps are rebuilt when the view, the seed, a light view or a setting changed, not
-        // when only objects moved: any map is an unbiased pdf, and a kept one keeps the photons'
-        // first hits (and with rng fixed or object_space their paths) where nothing moved.
-        // Else new samples are blended into the maps (importance_frames) unless their history
-        // is void; a moved camera keeps it: its aim lags a few frames.
-        const bool sameAim = !mImportanceStale && inputs.seed == mImportanceSeed &&
-                             mGpuScene.getLightViewsVersion() == mImportanceLightViews;
-        const bool keepHistory =
-            !mImportanceFresh && mGpuScene.getEmittingViewsVersion() == mImportanceEmittingViews;
-        mSteps.push_back({mImportance->getName(), [this, sameAim, keepHistory] {
-                              mImportance->setKeepMaps(sameAim); // its timer row reads ~0 ms
-                              mImportance->setKeepHistory(keepHistory);
-                              runPass(*mImportance, *mInputs);
-                              mImportanceStale = false;
-                              mImportanceFresh = false;
-                              mImportanceSeed = mInputs->seed;
-                              mImportanceLightViews = mGpuScene.getLightViewsVersion();
-                              mImportanceEmittingViews = mGpuScene.getEmittingViewsVersion();
-                          }});
+        addPassStep(*mImportance); // builds, blends or keeps its maps itself
         addPassStep(*mEmit);
     }
     addPassStep(*mDirect);
@@ -358,15 +313,8 @@ void FrameRunner::addFrameSteps(double sliceMs) {
     addPassStep(*mDenoise);
     addPassStep(*mUpsample);
     mSteps.push_back({mAccumulate->getName(), [this] {
-                          runPass(*mAccumulate, *mInputs);
+                          runPass(*mAccumulate, *mInputs); // moves its history on
                           mGpuScene.keepTransformsAsPrevious();
-                          mPreviousClipFromWorld = mClipFromWorld;
-                          mHistoryLightsVersion = mGpuScene.getLightsVersion();
-                          mHistoryReset = false;
-                          mMoved = false;
-                          ++mHistoryFrames;
-                          ++mSequenceFrames;
-                          ++mFramesDrawn;
                       }});
     addPassStep(*mCompose);
     // Off (specular_depth 0, or nothing in the scene to trace), the composed image is left
@@ -433,7 +381,7 @@ const gl::Texture& FrameRunner::runPostPasses(const FrameInputs& inputs) {
 void FrameRunner::adaptPhotonBudget() {
     // A still view that accumulates is converging (once its history is full, frames cost
     // nothing).
-    const bool converging = mFrameSettings.accumulate > 0 && mHistoryFrames > 1;
+    const bool converging = mFrameSettings.accumulate > 0 && getHistoryFrames() > 1;
     if (!mBudget.recordFrame(mTimings, mFrameSettings.frameMsTarget, converging,
                              uint32_t(mTimer.getFramesInFlight()))) {
         return;

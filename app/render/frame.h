@@ -73,7 +73,7 @@ class FrameRunner {
     void setSettings(const Settings& settings);
     // Frames of the still view averaged into the light shown: at most `accumulate` (1 without
     // accumulation, once a frame ran). The indirect light may hold more (getHistoryLength).
-    uint32_t getAccumulatedFrames() const;
+    uint32_t getAccumulatedFrames() const { return mAccumulate->getAccumulatedFrames(); }
     // Frames each pixel's indirect light averages (R32F), with `accumulate` > 0.
     const gl::Texture& getHistoryLength() const { return mAccumulate->getHistoryLength(); }
     // setSettings and rebuildScene restart the accumulated history (`accumulate`), as does
@@ -141,7 +141,8 @@ class FrameRunner {
     uint32_t chooseSlices(const char* pass, double sliceMs, uint32_t fewest, uint32_t most) const;
     void resizePasses();
     void updateFrameConstants();
-    void resetHistory();
+    // The still view's frames so far (AccumulatePass's history).
+    uint32_t getHistoryFrames() const { return mAccumulate->getHistory().getFrames(); }
     // Every pass in frame order, for resize and shader reload.
     std::array<Pass*, 17> getPasses() const;
     void runPass(Pass& pass, const FrameInputs& inputs);
@@ -152,27 +153,7 @@ class FrameRunner {
     const Scene& mScene;
     Settings mSettings;
     FrameSettings mFrameSettings; // mSettings resolved
-    // The accumulated history (AccumulatePass): frames of the still view in it, whether it must
-    // start anew (a light, a setting or the scene changed) or be reprojected (the camera or an
-    // object moved), the last frame's camera, and frames drawn since it started (the seed).
-    uint32_t mHistoryFrames = 0;
-    bool mHistoryReset = true;
-    bool mMoved = false;
-    glm::mat4 mPreviousClipFromWorld{1.0f};
-    uint32_t mSequenceFrames = 0;
-    uint64_t mHistoryLightsVersion = 0; // GpuScene::getLightsVersion of the history's lights
-    Camera mHistoryCamera;              // the camera of the last frame
-    uint32_t mFramesDrawn = 0;          // since the runner was made (rng = per_frame)
-    double mTimeStepS = -1.0;           // setTimeStep; < 0: not set
-    // What the importance maps were last built for (renderFrame): stale after a camera move, a
-    // settings change or a rebuilt scene; else rebuilt when the seed or a light view changed.
-    bool mImportanceStale = true;
-    // The maps' history (importance_frames) is void: settings, size or scene changed since the
-    // last build; also void when GpuScene::getEmittingViewsVersion moved from this.
-    bool mImportanceFresh = true;
-    uint64_t mImportanceEmittingViews = 0;
-    uint32_t mImportanceSeed = 0;
-    uint64_t mImportanceLightViews = 0;
+    double mTimeStepS = -1.0;     // setTimeStep; < 0: not set
     int mWidth;
     int mHeight;
     void setTimings(const std::vector<gl::PassTimer::Sample>& samples);
@@ -181,7 +162,6 @@ class FrameRunner {
     // The budget's photons over the settings as resolved, and the light views' resolution that
     // may follow them (shadows ray): the light views are re-made, the BVH stays.
     void applyBudget();
-    uint32_t getFrameSeed() const; // FrameInputs::seed
 
     // The frame in progress (beginFrame/continueFrame): its steps, the next one, its inputs.
     std::vector<FrameStep> mSteps;
