@@ -74,10 +74,11 @@ FrameRunner::FrameRunner(const Scene& scene, const Settings& settings, gl::Timin
     mTotal = &mCompose->getOutput();
     mTonemap = std::make_unique<TonemapPass>(*mTotal);
     mBudget.restart(mFrameSettings.photons);
+    mTimings.method = mTimer.getMethod();
     resizePasses();
 }
 
-std::array<Pass*, 17> FrameRunner::getPasses() const {
+std::array<Pass*, 17> FrameRunner::listPasses() const {
     return {mGBuffer.get(),  mLightViews.get(), mImportance.get(), mEmit.get(),
             mDirect.get(),   mTrace.get(),      mDensity.get(),    mSplat.get(),
             mDenoise.get(),  mUpsample.get(),   mAccumulate.get(), mCompose.get(),
@@ -86,13 +87,13 @@ std::array<Pass*, 17> FrameRunner::getPasses() const {
 }
 
 void FrameRunner::resizePasses() {
-    for (Pass* pass : getPasses())
+    for (Pass* pass : listPasses())
         pass->resize(mWidth, mHeight);
 }
 
 ShaderReloadReport FrameRunner::reloadShaders() {
     ShaderReloadReport report;
-    for (Pass* pass : getPasses())
+    for (Pass* pass : listPasses())
         pass->reloadPrograms(report);
     return report;
 }
@@ -170,7 +171,23 @@ FrameInputs FrameRunner::getFrameInputs() const {
             mSplatDraws};
 }
 
-void FrameRunner::updateScene() {
+void FrameRunner::setPresentation(const Presentation& presentation) {
+    mTimeStepS = presentation.timeStepS;
+    mGBuffer->setKeepMotion(presentation.keepVelocity);
+}
+
+FramePasses FrameRunner::getPasses() const {
+    return {mScene,       mGpuScene,    mPhotonBuffers, *mGBuffer, *mLightViews,
+            *mImportance, *mEmit,       *mTrace,        *mDensity, *mSplat,
+            *mDenoise,    *mUpsample,   *mAccumulate,   *mDirect,  *mCompose,
+            *mSpecular,   *mMotionBlur, *mDepthBlur,    *mBloom,   *mTonemap};
+}
+
+void FrameRunner::updateScene(SceneChange change) {
+    if (change == SceneChange::AddedOrRemoved) {
+        rebuildScene();
+        return;
+    }
     if (isFrameInProgress()) {
         mPendingSceneUpdate = true; // uploaded before the next frame
         return;
@@ -219,7 +236,7 @@ void FrameRunner::beginFrame(double sliceMs) {
     // resting camera costs nothing), and the image stands still.
     const auto window = static_cast<uint32_t>(mFrameSettings.accumulate);
     if (window > 0 && getHistoryFrames() >= window) {
-        mTimings.clear(); // no pass ran
+        mTimings.passes.clear(); // no pass ran
         return;
     }
     mGpuScene.setViewer(mScene, mScene.camera, float(mWidth) / float(mHeight));
@@ -275,12 +292,12 @@ void FrameRunner::addFrameSteps(double sliceMs) {
     } else {
         addPassStep(*mLightViews);
     }
-    if (hasIndirect()) {
+    if (mFrameSettings.hasIndirect()) {
         addPassStep(*mImportance); // builds, blends or keeps its maps itself
         addPassStep(*mEmit);
     }
     addPassStep(*mDirect);
-    if (hasIndirect()) {
+    if (mFrameSettings.hasIndirect()) {
         const uint32_t traceSlices =
             chooseSlices(mTrace->getName(), sliceMs, 1, gpu::kMaxComputeSlices);
         for (uint32_t slice = 0; slice < traceSlices; ++slice) {
@@ -382,7 +399,7 @@ void FrameRunner::adaptPhotonBudget() {
     // A still view that accumulates is converging (once its history is full, frames cost
     // nothing).
     const bool converging = mFrameSettings.accumulate > 0 && getHistoryFrames() > 1;
-    if (!mBudget.recordFrame(mTimings, mFrameSettings.frameMsTarget, converging,
+    if (!mBudget.recordFrame(mTimings.passes, mFrameSettings.frameMsTarget, converging,
                              uint32_t(mTimer.getFramesInFlight()))) {
         return;
     }
@@ -408,31 +425,25 @@ void FrameRunner::waitForTimings() {
 
 void FrameRunner::setTimings(const std::vector<gl::PassTimer::Sample>& samples) {
     // A pass drawn in several slices (the splat's draws) is one row: their sum.
-    mTimings.clear();
+    std::vector<PassTiming>& passes = mTimings.passes;
+    passes.clear();
     for (const gl::PassTimer::Sample& s : samples) {
-        auto same = std::find_if(mTimings.begin(), mTimings.end(),
+        auto same = std::find_if(passes.begin(), passes.end(),
                                  [&](const PassTiming& t) { return t.name == s.name; });
-        if (same == mTimings.end()) {
-            mTimings.push_back({s.name, s.ms});
+        if (same == passes.end()) {
+            passes.push_back({s.name, s.ms});
         } else {
             same->ms += s.ms;
         }
     }
-    for (const PassTiming& t : mTimings)
+    for (const PassTiming& t : passes)
         mLastPassMs[t.name] = t.ms;
 }
 
-bool FrameRunner::hasIndirect() const {
-    return mFrameSettings.hasIndirect();
-}
-
-PhotonCounts FrameRunner::readPhotonCounts() const {
-    if (!hasIndirect()) return {};
-    return mPhotonBuffers.readCounts(mEmit->getEmittedPerLight());
-}
-
-const gl::Texture& FrameRunner::getFrameLight(Aov aov) const {
-    return aov == Aov::Direct ? mDirect->getOutput() : mUpsample->getOutput();
+PhotonCounts readPhotonCounts(const FrameRunner& runner) {
+    if (!runner.getFrameSettings().hasIndirect()) return {};
+    const FramePasses passes = runner.getPasses();
+    return passes.photons.readCounts(passes.emit.getEmittedPerLight());
 }
 
 const gl::Texture& FrameRunner::getAov(Aov aov) const {
@@ -449,19 +460,22 @@ const gl::Texture& FrameRunner::getAov(Aov aov) const {
     return mCompose->getOutput();
 }
 
-size_t FrameRunner::getGpuBytes() const {
+size_t computeGpuBytes(const FrameRunner& runner) {
     constexpr size_t kBytesRgba32F = 16;
     constexpr size_t kBytesRgba8 = 4;
     // direct, indirect, total, and both lights' average and history
     constexpr size_t kFullResolutionRgba32F = 7;
     // Splat buffer and the filter's two targets, at splat_resolution.
     constexpr size_t kSplatResolutionRgba32F = 3;
-    const glm::ivec2 splat = mFrameSettings.splatSize;
-    const size_t pixels = static_cast<size_t>(mWidth) * static_cast<size_t>(mHeight);
-    return mGpuScene.getGpuBytes() + mPhotonBuffers.getGpuBytes() + mImportance->getGpuBytes() +
-           mDensity->getGpuBytes() + mSplat->getGpuBytes() + mGBuffer->getGBuffer().getGpuBytes() +
-           mLightViews->getGBuffer().getGpuBytes() + mMotionBlur->getGpuBytes() +
-           mDepthBlur->getGpuBytes() + mBloom->getGpuBytes() +
+    const FrameSettings& settings = runner.getFrameSettings();
+    const FramePasses p = runner.getPasses();
+    const glm::ivec2 splat = settings.splatSize;
+    const size_t pixels =
+        static_cast<size_t>(settings.width) * static_cast<size_t>(settings.height);
+    return p.scene.getGpuBytes() + p.photons.getGpuBytes() + p.importance.getGpuBytes() +
+           p.density.getGpuBytes() + p.splat.getGpuBytes() + p.gbuffer.getGBuffer().getGpuBytes() +
+           p.lightViews.getGBuffer().getGpuBytes() + p.motionBlur.getGpuBytes() +
+           p.depthBlur.getGpuBytes() + p.bloom.getGpuBytes() +
            pixels * (kFullResolutionRgba32F * kBytesRgba32F + kBytesRgba8) +
            size_t(splat.x) * size_t(splat.y) * kSplatResolutionRgba32F * kBytesRgba32F;
 }

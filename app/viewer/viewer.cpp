@@ -191,8 +191,8 @@ void Viewer::switchScene(const std::string& path) {
         return;
     }
     next.settings.merge(mOptions.commandLine);
-    next.settings.set("width", mRunner->getWidth(), "viewer window");
-    next.settings.set("height", mRunner->getHeight(), "viewer window");
+    next.settings.set("width", mRunner->getFrameSettings().width, "viewer window");
+    next.settings.set("height", mRunner->getFrameSettings().height, "viewer window");
     mReference.restart(); // its path tracer holds a reference to mScene too
     mRunner.reset();      // holds a reference to mScene
     mScene = std::move(next);
@@ -209,15 +209,17 @@ void Viewer::drawFrame() {
     gl::clearDefaultFramebuffer(glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
     const DebugView& view = mViews[static_cast<size_t>(mViewIndex)];
     if (view.source == DebugView::Source::Reference) {
-        mReference.draw(*mRunner, view.referenceMode, mTransform.exposureStops, mRunner->getWidth(),
-                        mRunner->getHeight());
+        mReference.draw(*mRunner, view.referenceMode, mTransform.exposureStops,
+                        mRunner->getFrameSettings().width, mRunner->getFrameSettings().height);
     } else {
-        mDrawer.draw(*mRunner, view, mTransform, mRunner->getWidth(), mRunner->getHeight());
+        mDrawer.draw(*mRunner, view, mTransform, mRunner->getFrameSettings().width,
+                     mRunner->getFrameSettings().height);
     }
     // Points are placed with the viewer camera: not over a light camera's image.
     const DebugView::Source source = mViews[static_cast<size_t>(mViewIndex)].source;
     if (source != DebugView::Source::LightGBuffer && source != DebugView::Source::LightImportance) {
-        gl::bindDefaultFramebuffer(mRunner->getWidth(), mRunner->getHeight());
+        gl::bindDefaultFramebuffer(mRunner->getFrameSettings().width,
+                                   mRunner->getFrameSettings().height);
         mPointsDrawer.draw(*mRunner, mPoints, mPointsColour);
     }
     gl::bindDefaultFramebuffer(mWindowWidth, mWindowHeight);
@@ -225,8 +227,9 @@ void Viewer::drawFrame() {
     if (mShowFrameRate) drawFrameRateOverlay();
     if (mShowHelp) drawHelp();
     if (view.referenceMode == ReferenceMode::HeatMap &&
-        mReference.hasReference(mRunner->getWidth(), mRunner->getHeight())) {
-        mReference.drawLegendLabels(mRunner->getHeight());
+        mReference.hasReference(mRunner->getFrameSettings().width,
+                                mRunner->getFrameSettings().height)) {
+        mReference.drawLegendLabels(mRunner->getFrameSettings().height);
     }
     mImGui.endFrame();
 }
@@ -312,7 +315,8 @@ int Viewer::run() {
         // Edits wait for the next rendered frame (the runner keeps them until then), but lights
         // added or removed drop the frame in progress.
         if (mLightEdit == LightEdit::Values) mRunner->updateScene();
-        if (mLightEdit == LightEdit::AddedOrRemoved) mRunner->rebuildScene();
+        if (mLightEdit == LightEdit::AddedOrRemoved)
+            mRunner->updateScene(SceneChange::AddedOrRemoved);
         mLightEdit = LightEdit::None;
         if (mScene.isAnimated() && advanceAnimationClock(mClock, seconds)) {
             mScene.update(mClock.timeS);
@@ -321,12 +325,13 @@ int Viewer::run() {
         }
 
         if (!mRunner->isFrameInProgress() && !renderedQuietly) {
-            mRunner->setTimeStep(sinceFrameBeganS); // eye adaptation follows the wall clock
+            const DebugView& shown = mViews[static_cast<size_t>(mViewIndex)];
+            mRunner->setPresentation(
+                {.timeStepS = sinceFrameBeganS, // eye adaptation follows the wall clock
+                 .keepVelocity = shown.source == DebugView::Source::ViewerGBuffer &&
+                                 getGBufferChannels()[shown.channel].name == "velocity"});
             sinceFrameBeganS = 0.0;
             renderFrameStart = Clock::now();
-            const DebugView& shown = mViews[static_cast<size_t>(mViewIndex)];
-            mRunner->setKeepVelocity(shown.source == DebugView::Source::ViewerGBuffer &&
-                                     getGBufferChannels()[shown.channel].name == "velocity");
             mRunner->beginFrame(mPacer.getRenderBudgetMs());
         }
         const Clock::time_point sliceStart = Clock::now();
@@ -339,12 +344,12 @@ int Viewer::run() {
             // Counts and the white point are read back for the Stats panel only, every few
             // frames: a read-back waits for the GPU to finish the frame.
             if (mFrameIndex++ % kStatsReadbackFrames == 0) {
-                mCounts = mRunner->readPhotonCounts();
-                mLuminanceMax = mRunner->readLuminanceMax();
+                mCounts = readPhotonCounts(*mRunner);
+                mLuminanceMax = mRunner->getPasses().tonemap.readLuminanceMax();
             }
             mReference.update(mScene, *mRunner);
             // The frame row counts the in-viewer path tracer too, when it ran this frame.
-            std::vector<PassTiming> timings = mRunner->getLastTimings();
+            std::vector<PassTiming> timings = mRunner->getTimings().passes;
             if (const std::optional<PassTiming> traced = mReference.getFrameTiming()) {
                 timings.push_back(*traced);
             }

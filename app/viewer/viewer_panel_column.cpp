@@ -47,7 +47,7 @@ const ImVec4 kOkColour(0.6f, 0.9f, 0.6f, 1.0f);
 std::optional<double> findDerivedValue(const FrameRunner& runner, float luminanceMax,
                                        std::string_view name) {
     const FrameSettings& s = runner.getFrameSettings();
-    const GpuScene& scene = runner.getGpuScene();
+    const GpuScene& scene = runner.getPasses().scene;
     if (name == "splat_neighbours") return s.splatNeighbours;
     if (name == "denoise") return s.denoiseIterations;
     if (name == "shadow_map_size") return s.shadowMapSize;
@@ -87,7 +87,7 @@ bool usesViewStops(const DebugView& view) {
 }
 
 void Viewer::drawPanels() {
-    const int renderWidth = mRunner->getWidth();
+    const int renderWidth = mRunner->getFrameSettings().width;
     ImGui::SetNextWindowPos(ImVec2(static_cast<float>(renderWidth), 0.0f));
     ImGui::SetNextWindowSize(
         ImVec2(static_cast<float>(kPanelWidthPx), static_cast<float>(mWindowHeight)));
@@ -130,8 +130,8 @@ void Viewer::drawPanels() {
         if (current.source == DebugView::Source::Reference) {
             // The region stays black without a reference: say why here, not only under the
             // (collapsed) Reference header.
-            const std::string missing =
-                mReference.describeMissing(mRunner->getWidth(), mRunner->getHeight());
+            const std::string missing = mReference.describeMissing(
+                mRunner->getFrameSettings().width, mRunner->getFrameSettings().height);
             if (!missing.empty()) {
                 ImGui::PushStyleColor(ImGuiCol_Text, kErrorColour);
                 ImGui::TextWrapped("%s", missing.c_str());
@@ -153,7 +153,7 @@ void Viewer::drawPanels() {
         }
         if (current.source == DebugView::Source::LightGBuffer ||
             current.source == DebugView::Source::LightImportance) {
-            const int layers = mRunner->getLightGBuffer().getLayers();
+            const int layers = mRunner->getPasses().lightViews.getGBuffer().getLayers();
             ImGui::SliderInt("light camera", &mTransform.lightLayer, 0, std::max(0, layers - 1));
         }
         ImGui::Checkbox("frame rate overlay (F2)", &mShowFrameRate);
@@ -199,8 +199,8 @@ void Viewer::drawPanels() {
     if (mScene.isAnimated() && ImGui::CollapsingHeader("Animation")) drawAnimationPanel(mClock);
     if (ImGui::CollapsingHeader("Stats", ImGuiTreeNodeFlags_DefaultOpen)) {
         drawStatsPanel(mTimings, mCounts, mContext.getInfo().renderer,
-                       gl::getTimingMethodName(mRunner->getTimingMethod()), mLuminanceMax,
-                       mRunner->getAccumulatedFrames());
+                       gl::getTimingMethodName(mRunner->getTimings().method), mLuminanceMax,
+                       mRunner->getPasses().accumulate.getAccumulatedFrames());
     }
     ImGui::PopItemWidth();
     ImGui::EndChild();
@@ -242,8 +242,9 @@ void Viewer::drawFrameRateOverlay() {
     std::snprintf(text.data(), text.size(), "%.1f fps (%.0f ms)\nUI %.0f Hz", 1000.0 / frameMs,
                   frameMs, 1000.0 / uiMs);
     ImDrawList* list = ImGui::GetForegroundDrawList();
-    list->PushClipRect(ImVec2(0.0f, 0.0f), ImVec2(static_cast<float>(mRunner->getWidth()),
-                                                  static_cast<float>(mWindowHeight)));
+    list->PushClipRect(ImVec2(0.0f, 0.0f),
+                       ImVec2(static_cast<float>(mRunner->getFrameSettings().width),
+                              static_cast<float>(mWindowHeight)));
     const ImVec2 at(kOverlayMarginPx, kOverlayMarginPx);
     const ImVec2 size = ImGui::CalcTextSize(text.data());
     list->AddRectFilled(ImVec2(0.0f, 0.0f),

@@ -68,8 +68,8 @@ TEST_F(FrameBudgetTest, BudgetMovesTheDerivedLightViewsNotTheBvh) {
     FrameRunner runner(scene, s, gl::TimingMethod::CpuFinish);
     runner.renderFrame();
     // 8,000 photons: twice sqrt(photons) texels a side, 256 at least.
-    EXPECT_EQ(runner.getGpuScene().getLightResolution(), 256);
-    const void* nodes = runner.getGpuScene().getBvh().blasNodes.data();
+    EXPECT_EQ(runner.getPasses().scene.getLightResolution(), 256);
+    const void* nodes = runner.getPasses().scene.getBvh().blasNodes.data();
     for (int f = 0; f < 6; ++f)
         runner.renderFrame();
     // 8,000 -> 16,000 -> 32,000 photons: 358 texels, rounded up to 512.
@@ -78,9 +78,9 @@ TEST_F(FrameBudgetTest, BudgetMovesTheDerivedLightViewsNotTheBvh) {
     EXPECT_EQ(frame.shadowMapSize, 512);
     EXPECT_EQ(frame.splatNeighbours, computeSplatNeighbours(s, 32000));
     EXPECT_EQ(runner.getSettings().getInt("photons"), 8000); // as set
-    EXPECT_EQ(runner.getGpuScene().getLightResolution(), 512);
-    EXPECT_EQ(runner.getGpuScene().getBvh().blasNodes.data(), nodes);
-    EXPECT_EQ(runner.getLightGBuffer().getWidth(), 512);
+    EXPECT_EQ(runner.getPasses().scene.getLightResolution(), 512);
+    EXPECT_EQ(runner.getPasses().scene.getBvh().blasNodes.data(), nodes);
+    EXPECT_EQ(runner.getPasses().lightViews.getGBuffer().getWidth(), 512);
 }
 
 TEST_F(FrameBudgetTest, TimerQueriesReadAfterEveryFrameStillSetTheBudget) {
