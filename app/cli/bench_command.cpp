@@ -93,7 +93,7 @@ PresetResult applyThesisPreset() {
 // Photon counts of the last timed frame; none when the frame has no indirect light (bounces = 0
 // or photons = 0), rather than zeros that would read as measured.
 std::optional<PhotonCounts> readReportedPhotonCounts(const FrameRunner& runner) {
-    const PhotonCounts counts = runner.readPhotonCounts();
+    const PhotonCounts counts = readPhotonCounts(runner);
     if (counts.emitted == 0) return std::nullopt;
     return counts;
 }
@@ -403,27 +403,28 @@ int runBench(const BenchOptions& options) {
         addFrameTimes(runner, times);
         if (options.animate) addSceneUpdateTime(updateMs, times);
         if (flicker) {
-            flicker->addFrame(readTextureImage(runner.getAov(Aov::Indirect)),
-                              readTextureTopDown(runner.getViewerGBuffer().getChannel("position")),
-                              scene);
+            flicker->addFrame(
+                readTextureImage(runner.getAov(Aov::Indirect)),
+                readTextureTopDown(runner.getPasses().gbuffer.getGBuffer().getChannel("position")),
+                scene);
         }
     }
     if (flicker) report.flicker = flicker->getResult();
 
-    report.width = runner.getWidth();
-    report.height = runner.getHeight();
+    report.width = runner.getFrameSettings().width;
+    report.height = runner.getFrameSettings().height;
     report.frames = frames;
     report.warmup = options.warmup;
     report.renderer = info.renderer;
     report.contextPath = gl::getContextPathName(info.path);
-    report.timingMethod = gl::getTimingMethodName(runner.getTimingMethod());
+    report.timingMethod = gl::getTimingMethodName(runner.getTimings().method);
     report.animate = options.animate;
     for (const std::string& name : times.passOrder) {
         report.passes.push_back(computeStats(name, times.samplesMs[name]));
     }
     report.total = computeStats("total", times.totalsMs);
     report.peakRssMib = readPeakRssMib();
-    report.glBytes = runner.getGpuBytes();
+    report.glBytes = computeGpuBytes(runner);
     report.photons = readReportedPhotonCounts(runner);
 
     if (options.json) {

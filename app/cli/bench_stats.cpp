@@ -15,7 +15,7 @@ constexpr double kKibPerMib = 1024.0;
 
 void addFrameTimes(const FrameRunner& runner, FrameTimes& times) {
     double frameMs = 0.0;
-    for (const PassTiming& t : runner.getLastTimings()) {
+    for (const PassTiming& t : runner.getTimings().passes) {
         auto [it, inserted] = times.samplesMs.try_emplace(t.name);
         if (inserted) times.passOrder.push_back(t.name);
         it->second.push_back(t.ms);

@@ -263,7 +263,7 @@ void measureConfiguration(FrameRunner& runner, const Configuration& config, int 
         r.ssim += computeSsim(total, reference) / frames;
         progress.advance(step);
     }
-    if (result) result->photons = runner.readPhotonCounts();
+    if (result) result->photons = readPhotonCounts(runner);
 }
 
 // The path tracer with the sweep's light (bounces) and size: rows at 1, 2, 4, ... spp and at the
@@ -567,7 +567,7 @@ int runBenchSweep(const BenchOptions& options, const std::string& scenePath, con
             measureConfiguration(runner, config, options.warmup, options.frames, plan.reference,
                                  referenceIndirect, progress, step, times[size_t(i)],
                                  round == 0 ? &results[size_t(i)] : nullptr);
-            for (const PassTiming& t : runner.getLastTimings()) {
+            for (const PassTiming& t : runner.getTimings().passes) {
                 if (std::find(passOrder.begin(), passOrder.end(), t.name) == passOrder.end()) {
                     passOrder.push_back(t.name);
                 }

@@ -63,27 +63,27 @@ Settings makeCommandLineSettings(const std::vector<std::string>& sets, std::opti
 }
 
 void warnIfLightFades(const FrameRunner& runner) {
-    const GpuScene& scene = runner.getGpuScene();
+    const GpuScene& scene = runner.getPasses().scene;
     const std::string warning =
         describeOversizedSplats(scene.getSurfaceArea(), glm::length(scene.getBounds().getExtent()),
                                 runner.getFrameSettings());
     if (!warning.empty()) std::fprintf(stderr, "ispm: warning: %s\n", warning.c_str());
-    const std::string near = describeRaisedNearPlane(runner.getScene().camera, scene.getBounds(),
-                                                     scene.getInstanceBounds());
+    const std::string near = describeRaisedNearPlane(runner.getPasses().model.camera,
+                                                     scene.getBounds(), scene.getInstanceBounds());
     if (!near.empty()) std::fprintf(stderr, "ispm: warning: %s\n", near.c_str());
 }
 
 void printTimings(const FrameRunner& runner, const gl::ContextInfo& info) {
     std::printf("renderer: %s (%s); pass times by %s\n", info.renderer.c_str(),
                 gl::getContextPathName(info.path),
-                gl::getTimingMethodName(runner.getTimingMethod()));
+                gl::getTimingMethodName(runner.getTimings().method));
     double total = 0.0;
-    for (const PassTiming& t : runner.getLastTimings()) {
+    for (const PassTiming& t : runner.getTimings().passes) {
         std::printf("  %-12s %9.2f ms\n", t.name.c_str(), t.ms);
         total += t.ms;
     }
     std::printf("  %-12s %9.2f ms\n", "frame", total);
-    const PhotonCounts c = runner.readPhotonCounts();
+    const PhotonCounts c = readPhotonCounts(runner);
     if (c.emitted > 0) {
         std::printf("photons: %u emitted, %u after the first bounce, %u stored (%u in view), %u "
                     "overflow\n",
@@ -92,8 +92,8 @@ void printTimings(const FrameRunner& runner, const gl::ContextInfo& info) {
             const LightCounts& l = c.perLight[i];
             std::printf("  light %zu (%s): %u emitted, %u after the first bounce, %u stored (%u in "
                         "view)\n",
-                        i, getLightTypeName(runner.getScene().lights[i].type), l.emitted, l.bounced,
-                        l.stored, l.inView);
+                        i, getLightTypeName(runner.getPasses().model.lights[i].type), l.emitted,
+                        l.bounced, l.stored, l.inView);
         }
     }
 }

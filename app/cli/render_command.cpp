@@ -207,7 +207,7 @@ int runSequence(const RenderOptions& options, Scene& scene, FrameRunner& runner,
             runner.updateScene();
         }
         // The first frame has no predecessor: its white point is its own.
-        runner.setTimeStep(i == 0 ? -1.0 : 1.0 / options.fps);
+        runner.setPresentation({.timeStepS = i == 0 ? -1.0 : 1.0 / options.fps});
         runner.renderFrame();
         writeImage(formatFramePath(options.outputPath, i, "--output"), output.read(runner));
         frameMs.push_back(
@@ -225,7 +225,8 @@ int runSequence(const RenderOptions& options, Scene& scene, FrameRunner& runner,
         std::printf("wrote %d frames, %s to %s (%dx%d, %s; %g s to %g s at %g frames/s)\n",
                     options.frames, formatFramePath(options.outputPath, 0, "--output").c_str(),
                     formatFramePath(options.outputPath, options.frames - 1, "--output").c_str(),
-                    runner.getWidth(), runner.getHeight(), output.describe(), options.timeS,
+                    runner.getFrameSettings().width, runner.getFrameSettings().height,
+                    output.describe(), options.timeS,
                     options.timeS + double(options.frames - 1) / options.fps, options.fps);
         // The first frame builds the shaders: the median of the others is what a frame costs.
         std::vector<double> later(frameMs.begin() + (frameMs.size() > 1 ? 1 : 0), frameMs.end());
@@ -302,7 +303,7 @@ int runRender(const RenderOptions& options) {
     auto context = gl::createHeadlessContext();
     const gl::TimingMethod timing = gl::chooseTimingMethod(context->getInfo());
     FrameRunner runner(scene, settings, timing);
-    if (photonAov && !runner.hasIndirect()) {
+    if (photonAov && !runner.getFrameSettings().hasIndirect()) {
         throw InputError(strCat("--aov: '", options.aov,
                                 "' draws photons, and this frame has none (bounces and photons "
                                 "must be > 0)"));
@@ -336,11 +337,13 @@ int runRender(const RenderOptions& options) {
         const double totalMs =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                 .count();
-        std::printf("wrote %s (%dx%d, %s)\n", options.outputPath.c_str(), runner.getWidth(),
-                    runner.getHeight(), output.describe());
+        std::printf("wrote %s (%dx%d, %s)\n", options.outputPath.c_str(),
+                    runner.getFrameSettings().width, runner.getFrameSettings().height,
+                    output.describe());
         if (accumulate > 0) {
             std::printf("indirect light: %u frames accumulated (seeds %u to %u)\n",
-                        runner.getAccumulatedFrames(), runner.getFrameSettings().seed,
+                        runner.getPasses().accumulate.getAccumulatedFrames(),
+                        runner.getFrameSettings().seed,
                         runner.getFrameSettings().seed + uint32_t(frames) - 1);
         }
         printTimings(runner, context->getInfo());

@@ -7,6 +7,7 @@
 #include "render/fullscreen.h"
 #include "render/gpu_scene.h"
 
+#include <shared/photon_scatter.h> // kRngPerFrame
 #include <shared/scene_data.h>
 
 #include <algorithm>
@@ -70,6 +71,48 @@ ProgressiveStep computeProgressiveStep(int accumulate, uint32_t historyFrames,
     return step;
 }
 
+void AccumulationHistory::restart() {
+    mReset = true;
+    mFrames = 0;
+    mSequenceFrames = 0;
+}
+
+bool AccumulationHistory::setCamera(const Camera& camera) {
+    const bool moved = !isSameCamera(camera, mCamera);
+    if (moved) {
+        mFrames = 0;
+        mMoved = true;
+    }
+    mCamera = camera;
+    return moved;
+}
+
+void AccumulationHistory::setSceneUpdated(uint64_t lightsVersion) {
+    if (lightsVersion != mLightsVersion) {
+        restart(); // the light itself changed: everything drawn before is stale
+        return;
+    }
+    mFrames = 0;
+    mMoved = true;
+}
+
+void AccumulationHistory::addFrame(const glm::mat4& clipFromWorld, uint64_t lightsVersion) {
+    mPreviousClipFromWorld = clipFromWorld;
+    mLightsVersion = lightsVersion;
+    mReset = false;
+    mMoved = false;
+    ++mFrames;
+    ++mSequenceFrames;
+    ++mFramesDrawn;
+}
+
+uint32_t AccumulationHistory::computeSeed(const FrameSettings& settings) const {
+    // per_frame: new numbers every frame drawn (the thesis's prototype); the others keep them
+    // while the view holds, and move on only to add frames to an accumulation.
+    if (settings.rngMode == gpu::kRngPerFrame) return settings.seed + mFramesDrawn;
+    return settings.accumulate > 0 ? settings.seed + mSequenceFrames : settings.seed;
+}
+
 AccumulatePass::AccumulatePass(const GBuffer& viewer, const gl::Texture& direct,
                                const gl::Texture& indirect)
     : mViewer(viewer), mDirect(direct), mIndirect(indirect),
@@ -104,8 +147,15 @@ void AccumulatePass::execute(const FrameInputs& inputs) {
     if (accumulate <= 0) {
         mOutputs[kDirect].copyFrom(mDirect); // no history to mix with
         mOutputs[kIndirect].copyFrom(mIndirect);
-        return;
+    } else {
+        mixIntoHistory(inputs);
     }
+    mWindow = uint32_t(std::max(accumulate, 1));
+    mState.addFrame(inputs.clipFromWorld, inputs.scene.getLightsVersion());
+}
+
+void AccumulatePass::mixIntoHistory(const FrameInputs& inputs) {
+    const int accumulate = inputs.settings.accumulate;
     mFramebuffer.bind();
     gl::applyState({});
     mProgram.use();

@@ -16,9 +16,11 @@
 
 #include "render/gbuffer.h"
 #include "render/pass.h"
+#include "scene/scene.h"
 
 #include <shared/scene_data.h>
 
+#include <algorithm>
 #include <array>
 
 namespace ispm {
@@ -50,12 +52,60 @@ float computeHistoryCap(const FrameInputs& inputs);
 ProgressiveStep computeProgressiveStep(int accumulate, uint32_t historyFrames,
                                        int denoiseIterations);
 
+// What the accumulated history holds: frames of the still view in it, whether it must start anew
+// (a light, a setting or the scene changed) or be reprojected (the camera or an object moved),
+// the camera and lights of its last frame, and the frames drawn since it started (the seed).
+// AccumulatePass keeps it and moves it on with every frame it accumulates.
+class AccumulationHistory {
+  public:
+    // A light, a setting or the scene changed: everything drawn before is stale.
+    void restart();
+    // The camera of the next frame; when it moved since the last frame, the still view starts
+    // anew while the indirect light is reprojected. Returns whether it moved.
+    bool setCamera(const Camera& camera);
+    // Instances and lights were re-uploaded (GpuScene::updateDynamic): a light that changed
+    // (`lightsVersion`, GpuScene::getLightsVersion) restarts the history; objects that moved only
+    // end the still view (the direct light starts anew, the indirect is reprojected).
+    void setSceneUpdated(uint64_t lightsVersion);
+    // A frame seen through `clipFromWorld` with lights `lightsVersion` was accumulated.
+    void addFrame(const glm::mat4& clipFromWorld, uint64_t lightsVersion);
+
+    uint32_t getFrames() const { return mFrames; } // FrameInputs::historyFrames
+    bool isReset() const { return mReset; }        // FrameInputs::historyReset
+    bool isMoved() const { return mMoved; }        // FrameInputs::moved
+    const glm::mat4& getPreviousClipFromWorld() const { return mPreviousClipFromWorld; }
+    // FrameInputs::seed: per_frame moves on with every frame drawn, the others while
+    // accumulating only (with each frame added since the last restart).
+    uint32_t computeSeed(const FrameSettings& settings) const;
+
+  private:
+    uint32_t mFrames = 0;
+    bool mReset = true;
+    bool mMoved = false;
+    glm::mat4 mPreviousClipFromWorld{1.0f};
+    uint32_t mSequenceFrames = 0;
+    uint64_t mLightsVersion = 0; // GpuScene::getLightsVersion of the history's lights
+    Camera mCamera;              // the camera of the last frame
+    uint32_t mFramesDrawn = 0;   // never restarted (rng per_frame)
+};
+
 class AccumulatePass final : public Pass {
   public:
     AccumulatePass(const GBuffer& viewer, const gl::Texture& direct, const gl::Texture& indirect);
     const char* getName() const override { return "accumulate"; }
     void resize(int width, int height) override;
+    // Mixes the frame's light into the history and moves the history on (AccumulationHistory).
     void execute(const FrameInputs& inputs) override;
+    // The history's bookkeeping, which the frame runner hands the passes (FrameInputs).
+    const AccumulationHistory& getHistory() const { return mState; }
+    // See AccumulationHistory: the runner says what changed, the history decides what it keeps.
+    void restartHistory() { mState.restart(); }
+    bool setCamera(const Camera& camera) { return mState.setCamera(camera); }
+    void setSceneUpdated(uint64_t lightsVersion) { mState.setSceneUpdated(lightsVersion); }
+    // Frames of the still view averaged into the light shown: at most `accumulate` (1 without
+    // accumulation once a frame ran, 0 before). The indirect light may hold more
+    // (getHistoryLength).
+    uint32_t getAccumulatedFrames() const { return std::min(mState.getFrames(), mWindow); }
     void reloadPrograms(ShaderReloadReport& report) override { mProgram.reloadIfChanged(report); }
     const gl::Texture& getDirect() const { return mOutputs[kDirect]; }
     const gl::Texture& getIndirect() const { return mOutputs[kIndirect]; }
@@ -63,6 +113,8 @@ class AccumulatePass final : public Pass {
     const gl::Texture& getHistoryLength() const { return mOutputs[kLength]; }
 
   private:
+    void mixIntoHistory(const FrameInputs& inputs);
+
     static constexpr size_t kDirect = 0;
     static constexpr size_t kIndirect = 1;
     static constexpr size_t kLength = 2;
@@ -77,6 +129,8 @@ class AccumulatePass final : public Pass {
     gl::Texture mHistoryPosition;        // the last frame's viewer G-buffer position and normal
     gl::Texture mHistoryNormal;
     gl::Framebuffer mFramebuffer;
+    AccumulationHistory mState;
+    uint32_t mWindow = 1; // accumulate of the last frame, at least 1
 };
 
 } // namespace ispm

@@ -18,9 +18,6 @@
 namespace ispm {
 namespace {
 
-// frame_ms_target: frames measured at one budget before it changes (their median).
-constexpr size_t kBudgetFrames = 3;
-
 // Whether a and b set every setting alike but the seed.
 bool isSameButSeed(const Settings& a, const Settings& b) {
     const auto sameIn = [](const Settings& from, const Settings& other) {
@@ -48,8 +45,9 @@ Aov parseAov(const std::string& text, const std::string& where) {
 
 FrameRunner::FrameRunner(const Scene& scene, const Settings& settings, gl::TimingMethod timing)
     : mScene(scene), mSettings(settings), mFrameSettings(resolveFrameSettings(settings)),
-      mWidth(mFrameSettings.width), mHeight(mFrameSettings.height), mTimer(timing),
-      mGpuScene(scene, mFrameSettings.shadowMapSize),
+      mWidth(mFrameSettings.width), mHeight(mFrameSettings.height),
+      mBudget({"emit", "trace", "density", "splat"}, int(findSetting("photons")->maxValue)),
+      mTimer(timing), mGpuScene(scene, mFrameSettings.shadowMapSize),
       mFrameConstants("frame constants", sizeof(gpu::FrameConstants)) {
     mGBuffer = std::make_unique<GBufferPass>();
     mLightViews = std::make_unique<LightViewPass>();
@@ -75,10 +73,12 @@ FrameRunner::FrameRunner(const Scene& scene, const Settings& settings, gl::Timin
     mBloom = std::make_unique<BloomPass>();
     mTotal = &mCompose->getOutput();
     mTonemap = std::make_unique<TonemapPass>(*mTotal);
+    mBudget.restart(mFrameSettings.photons);
+    mTimings.method = mTimer.getMethod();
     resizePasses();
 }
 
-std::array<Pass*, 17> FrameRunner::getPasses() const {
+std::array<Pass*, 17> FrameRunner::listPasses() const {
     return {mGBuffer.get(),  mLightViews.get(), mImportance.get(), mEmit.get(),
             mDirect.get(),   mTrace.get(),      mDensity.get(),    mSplat.get(),
             mDenoise.get(),  mUpsample.get(),   mAccumulate.get(), mCompose.get(),
@@ -87,15 +87,13 @@ std::array<Pass*, 17> FrameRunner::getPasses() const {
 }
 
 void FrameRunner::resizePasses() {
-    mImportanceStale = true;
-    mImportanceFresh = true;
-    for (Pass* pass : getPasses())
+    for (Pass* pass : listPasses())
         pass->resize(mWidth, mHeight);
 }
 
 ShaderReloadReport FrameRunner::reloadShaders() {
     ShaderReloadReport report;
-    for (Pass* pass : getPasses())
+    for (Pass* pass : listPasses())
         pass->reloadPrograms(report);
     return report;
 }
@@ -112,18 +110,21 @@ void FrameRunner::applySettings(const Settings& settings) {
     mPendingSettings.reset();
     // A new seed alone (bench's timed frames, accumulation) keeps the importance maps'
     // history: any map is an unbiased pdf.
-    if (!isSameButSeed(mSettings, settings)) mImportanceFresh = true;
-    mSettings = settings;
-    mImportanceStale = true;
-    mFrameSettings = resolveFrameSettings(settings);
-    resetHistory();
-    mBudgetCosts.clear(); // measured at the old settings
-    const int lightResolution = mFrameSettings.shadowMapSize;
-    if (lightResolution != mGpuScene.getLightResolution()) {
-        // The light cameras' resolution is baked into the uploaded scene; the light G-buffer
-        // follows it on its next execute.
-        mGpuScene = GpuScene(mScene, lightResolution);
+    if (isSameButSeed(mSettings, settings)) {
+        mImportance->invalidateMaps();
+    } else {
+        mImportance->restartHistory();
     }
+    // A budget starts from the photons set; other edits keep the one adapted so far.
+    if (settings.get("photons") != mSettings.get("photons") ||
+        settings.get("frame_ms_target") != mSettings.get("frame_ms_target")) {
+        mBudget.restart(settings.getInt("photons"));
+    }
+    mBudget.dropMeasurements(); // measured at the old settings
+    mSettings = settings;
+    mFrameSettings = resolveFrameSettings(settings);
+    mAccumulate->restartHistory();
+    applyBudget();
     if (mFrameSettings.width != mWidth || mFrameSettings.height != mHeight) {
         mWidth = mFrameSettings.width;
         mHeight = mFrameSettings.height;
@@ -133,9 +134,10 @@ void FrameRunner::applySettings(const Settings& settings) {
 
 void FrameRunner::updateFrameConstants() {
     // Accumulated frames look through new sub-pixel offsets: the average is anti-aliased.
-    const glm::vec2 jitter = computeFrameJitter(mFrameSettings, mHistoryFrames);
-    gpu::FrameConstants fc = computeFrameConstants(mScene, mGpuScene, mFrameSettings, mWidth,
-                                                   mHeight, getFrameSeed(), jitter);
+    const glm::vec2 jitter = computeFrameJitter(mFrameSettings, getHistoryFrames());
+    const uint32_t seed = mAccumulate->getHistory().computeSeed(mFrameSettings);
+    gpu::FrameConstants fc =
+        computeFrameConstants(mScene, mGpuScene, mFrameSettings, mWidth, mHeight, seed, jitter);
     mClipFromWorld = fc.clipFromWorld;
     fc.adaptationWeight =
         static_cast<float>(computeAdaptationWeight(mTimeStepS, mFrameSettings.eyeAdaptationS));
@@ -150,6 +152,7 @@ void FrameRunner::runPass(Pass& pass, const FrameInputs& inputs) {
 }
 
 FrameInputs FrameRunner::getFrameInputs() const {
+    const AccumulationHistory& history = mAccumulate->getHistory();
     return {mScene,
             mGpuScene,
             mFrameSettings,
@@ -158,31 +161,33 @@ FrameInputs FrameRunner::getFrameInputs() const {
             mScene.camera.position,
             mWidth,
             mHeight,
-            mHistoryFrames,
-            mHistoryReset,
-            mMoved,
-            mPreviousClipFromWorld,
-            getFrameSeed(),
-            computeProgressiveStep(mFrameSettings.accumulate, mHistoryFrames,
+            history.getFrames(),
+            history.isReset(),
+            history.isMoved(),
+            history.getPreviousClipFromWorld(),
+            history.computeSeed(mFrameSettings),
+            computeProgressiveStep(mFrameSettings.accumulate, history.getFrames(),
                                    mFrameSettings.denoiseIterations),
             mSplatDraws};
 }
 
-uint32_t FrameRunner::getFrameSeed() const {
-    // per_frame: new numbers every frame drawn (the thesis's prototype); the others keep them
-    // while the view holds, and move on only to add frames to an accumulation.
-    if (mFrameSettings.rngMode == gpu::kRngPerFrame) return mFrameSettings.seed + mFramesDrawn;
-    return mFrameSettings.accumulate > 0 ? mFrameSettings.seed + mSequenceFrames
-                                         : mFrameSettings.seed;
+void FrameRunner::setPresentation(const Presentation& presentation) {
+    mTimeStepS = presentation.timeStepS;
+    mGBuffer->setKeepMotion(presentation.keepVelocity);
 }
 
-void FrameRunner::resetHistory() {
-    mHistoryReset = true;
-    mHistoryFrames = 0;
-    mSequenceFrames = 0;
+FramePasses FrameRunner::getPasses() const {
+    return {mScene,       mGpuScene,    mPhotonBuffers, *mGBuffer, *mLightViews,
+            *mImportance, *mEmit,       *mTrace,        *mDensity, *mSplat,
+            *mDenoise,    *mUpsample,   *mAccumulate,   *mDirect,  *mCompose,
+            *mSpecular,   *mMotionBlur, *mDepthBlur,    *mBloom,   *mTonemap};
 }
 
-void FrameRunner::updateScene() {
+void FrameRunner::updateScene(SceneChange change) {
+    if (change == SceneChange::AddedOrRemoved) {
+        rebuildScene();
+        return;
+    }
     if (isFrameInProgress()) {
         mPendingSceneUpdate = true; // uploaded before the next frame
         return;
@@ -193,23 +198,17 @@ void FrameRunner::updateScene() {
 void FrameRunner::applySceneUpdate() {
     mPendingSceneUpdate = false;
     mGpuScene.updateDynamic(mScene);
-    if (mGpuScene.getLightsVersion() != mHistoryLightsVersion) {
-        resetHistory(); // the light itself changed: everything drawn before is stale
-        return;
-    }
-    // Objects moved: the direct light starts anew, the indirect history is reprojected.
-    mHistoryFrames = 0;
-    mMoved = true;
+    // Moved objects keep the importance maps (AccumulatePass reprojects; see ImportancePass).
+    mAccumulate->setSceneUpdated(mGpuScene.getLightsVersion());
 }
 
 void FrameRunner::rebuildScene() {
     // Lights or instances were added or removed: the frame in progress has the old ones.
     dropFrameInProgress();
     mPendingSceneUpdate = false; // the new upload holds every edit
-    mImportanceStale = true;
-    mImportanceFresh = true;
+    mImportance->restartHistory();
     mGpuScene = GpuScene(mScene, mGpuScene.getLightResolution());
-    resetHistory();
+    mAccumulate->restartHistory();
 }
 
 void FrameRunner::dropFrameInProgress() {
@@ -219,11 +218,6 @@ void FrameRunner::dropFrameInProgress() {
     mNextStep = 0;
     mTimer.discardFrame();
     if (mPendingSettings) applySettings(*mPendingSettings);
-}
-
-uint32_t FrameRunner::getAccumulatedFrames() const {
-    const auto window = static_cast<uint32_t>(std::max(mFrameSettings.accumulate, 1));
-    return std::min(mHistoryFrames, window);
 }
 
 void FrameRunner::renderFrame() {
@@ -237,22 +231,17 @@ void FrameRunner::beginFrame(double sliceMs) {
     if (mPendingSceneUpdate) applySceneUpdate();
     mSteps.clear();
     mNextStep = 0;
-    if (!isSameCamera(mScene.camera, mHistoryCamera)) {
-        mHistoryFrames = 0;
-        mMoved = true;
-        mImportanceStale = true;
-    }
-    mHistoryCamera = mScene.camera;
+    if (mAccumulate->setCamera(mScene.camera)) mImportance->invalidateMaps();
     // A full history of a still view is the image: nothing changed, so nothing is drawn (a
     // resting camera costs nothing), and the image stands still.
     const auto window = static_cast<uint32_t>(mFrameSettings.accumulate);
-    if (window > 0 && mHistoryFrames >= window) {
-        mTimings.clear(); // no pass ran
+    if (window > 0 && getHistoryFrames() >= window) {
+        mTimings.passes.clear(); // no pass ran
         return;
     }
     mGpuScene.setViewer(mScene, mScene.camera, float(mWidth) / float(mHeight));
     // Accumulated frames also move the light cameras inside a texel: shadow edges anti-aliased.
-    mGpuScene.setLightJitter(mFrameSettings.accumulate > 0 ? computeShadowJitter(mHistoryFrames)
+    mGpuScene.setLightJitter(mFrameSettings.accumulate > 0 ? computeShadowJitter(getHistoryFrames())
                                                            : glm::vec2(0.0f));
     updateFrameConstants();
     const auto splatPasses = static_cast<uint32_t>(mFrameSettings.splatPasses);
@@ -303,30 +292,12 @@ void FrameRunner::addFrameSteps(double sliceMs) {
     } else {
         addPassStep(*mLightViews);
     }
-    if (hasIndirect()) {
-        // The maps are rebuilt when the view, the seed, a light view or a setting changed, not
-        // when only objects moved: any map is an unbiased pdf, and a kept one keeps the photons'
-        // first hits (and with rng fixed or object_space their paths) where nothing moved.
-        // Else new samples are blended into the maps (importance_frames) unless their history
-        // is void; a moved camera keeps it: its aim lags a few frames.
-        const bool sameAim = !mImportanceStale && inputs.seed == mImportanceSeed &&
-                             mGpuScene.getLightViewsVersion() == mImportanceLightViews;
-        const bool keepHistory =
-            !mImportanceFresh && mGpuScene.getEmittingViewsVersion() == mImportanceEmittingViews;
-        mSteps.push_back({mImportance->getName(), [this, sameAim, keepHistory] {
-                              mImportance->setKeepMaps(sameAim); // its timer row reads ~0 ms
-                              mImportance->setKeepHistory(keepHistory);
-                              runPass(*mImportance, *mInputs);
-                              mImportanceStale = false;
-                              mImportanceFresh = false;
-                              mImportanceSeed = mInputs->seed;
-                              mImportanceLightViews = mGpuScene.getLightViewsVersion();
-                              mImportanceEmittingViews = mGpuScene.getEmittingViewsVersion();
-                          }});
+    if (mFrameSettings.hasIndirect()) {
+        addPassStep(*mImportance); // builds, blends or keeps its maps itself
         addPassStep(*mEmit);
     }
     addPassStep(*mDirect);
-    if (hasIndirect()) {
+    if (mFrameSettings.hasIndirect()) {
         const uint32_t traceSlices =
             chooseSlices(mTrace->getName(), sliceMs, 1, gpu::kMaxComputeSlices);
         for (uint32_t slice = 0; slice < traceSlices; ++slice) {
@@ -359,15 +330,8 @@ void FrameRunner::addFrameSteps(double sliceMs) {
     addPassStep(*mDenoise);
     addPassStep(*mUpsample);
     mSteps.push_back({mAccumulate->getName(), [this] {
-                          runPass(*mAccumulate, *mInputs);
+                          runPass(*mAccumulate, *mInputs); // moves its history on
                           mGpuScene.keepTransformsAsPrevious();
-                          mPreviousClipFromWorld = mClipFromWorld;
-                          mHistoryLightsVersion = mGpuScene.getLightsVersion();
-                          mHistoryReset = false;
-                          mMoved = false;
-                          ++mHistoryFrames;
-                          ++mSequenceFrames;
-                          ++mFramesDrawn;
                       }});
     addPassStep(*mCompose);
     // Off (specular_depth 0, or nothing in the scene to trace), the composed image is left
@@ -432,36 +396,22 @@ const gl::Texture& FrameRunner::runPostPasses(const FrameInputs& inputs) {
 }
 
 void FrameRunner::adaptPhotonBudget() {
-    const double target = mFrameSettings.frameMsTarget;
-    // A still view that accumulates is converging: a new budget would restart it (and once its
-    // history is full, frames cost nothing).
-    if (target <= 0.0 || (mFrameSettings.accumulate > 0 && mHistoryFrames > 1)) {
-        mBudgetCosts.clear();
+    // A still view that accumulates is converging (once its history is full, frames cost
+    // nothing).
+    const bool converging = mFrameSettings.accumulate > 0 && getHistoryFrames() > 1;
+    if (!mBudget.recordFrame(mTimings.passes, mFrameSettings.frameMsTarget, converging,
+                             uint32_t(mTimer.getFramesInFlight()))) {
         return;
     }
-    if (mBudgetSettle > 0) {
-        --mBudgetSettle;
-        return;
-    }
-    const std::vector<std::string> photonPasses = {mEmit->getName(), mTrace->getName(),
-                                                   mDensity->getName(), mSplat->getName()};
-    mBudgetCosts.push_back(splitFrameCost(mTimings, photonPasses));
-    if (mBudgetCosts.size() < kBudgetFrames) return;
-    // The median frame of the window: one slow frame (another process, a first use of a
-    // program) does not move the budget.
-    std::sort(mBudgetCosts.begin(), mBudgetCosts.end(), [](const FrameCost& a, const FrameCost& b) {
-        return a.fixedMs + a.photonMs < b.fixedMs + b.photonMs;
-    });
-    const FrameCost median = mBudgetCosts[mBudgetCosts.size() / 2];
-    mBudgetCosts.clear();
-    const int photons = ispm::adaptPhotonBudget(mFrameSettings.photons, median, target,
-                                                int(findSetting("photons")->maxValue));
-    if (photons == mFrameSettings.photons) return;
-    Settings next = mSettings;
-    next.set("photons", photons, "frame_ms_target");
-    setSettings(next);
-    // Timer queries answer frames late: the frames still in flight measure the old budget.
-    mBudgetSettle = int(mTimer.getFramesInFlight());
+    // Only the photon count changes: the accumulated and importance histories stay (any count
+    // estimates the same light), and a moving view keeps its reprojected light.
+    applyBudget();
+}
+
+void FrameRunner::applyBudget() {
+    ispm::applyPhotonBudget(mFrameSettings, mSettings, mBudget.getPhotons());
+    // The light G-buffer follows the light views' resolution on its next execute.
+    mGpuScene.setLightResolution(mScene, mFrameSettings.shadowMapSize);
 }
 
 void FrameRunner::waitForTimings() {
@@ -475,31 +425,25 @@ void FrameRunner::waitForTimings() {
 
 void FrameRunner::setTimings(const std::vector<gl::PassTimer::Sample>& samples) {
     // A pass drawn in several slices (the splat's draws) is one row: their sum.
-    mTimings.clear();
+    std::vector<PassTiming>& passes = mTimings.passes;
+    passes.clear();
     for (const gl::PassTimer::Sample& s : samples) {
-        auto same = std::find_if(mTimings.begin(), mTimings.end(),
+        auto same = std::find_if(passes.begin(), passes.end(),
                                  [&](const PassTiming& t) { return t.name == s.name; });
-        if (same == mTimings.end()) {
-            mTimings.push_back({s.name, s.ms});
+        if (same == passes.end()) {
+            passes.push_back({s.name, s.ms});
         } else {
             same->ms += s.ms;
         }
     }
-    for (const PassTiming& t : mTimings)
+    for (const PassTiming& t : passes)
         mLastPassMs[t.name] = t.ms;
 }
 
-bool FrameRunner::hasIndirect() const {
-    return mFrameSettings.hasIndirect();
-}
-
-PhotonCounts FrameRunner::readPhotonCounts() const {
-    if (!hasIndirect()) return {};
-    return mPhotonBuffers.readCounts(mEmit->getEmittedPerLight());
-}
-
-const gl::Texture& FrameRunner::getFrameLight(Aov aov) const {
-    return aov == Aov::Direct ? mDirect->getOutput() : mUpsample->getOutput();
+PhotonCounts readPhotonCounts(const FrameRunner& runner) {
+    if (!runner.getFrameSettings().hasIndirect()) return {};
+    const FramePasses passes = runner.getPasses();
+    return passes.photons.readCounts(passes.emit.getEmittedPerLight());
 }
 
 const gl::Texture& FrameRunner::getAov(Aov aov) const {
@@ -516,19 +460,22 @@ const gl::Texture& FrameRunner::getAov(Aov aov) const {
     return mCompose->getOutput();
 }
 
-size_t FrameRunner::getGpuBytes() const {
+size_t computeGpuBytes(const FrameRunner& runner) {
     constexpr size_t kBytesRgba32F = 16;
     constexpr size_t kBytesRgba8 = 4;
     // direct, indirect, total, and both lights' average and history
     constexpr size_t kFullResolutionRgba32F = 7;
     // Splat buffer and the filter's two targets, at splat_resolution.
     constexpr size_t kSplatResolutionRgba32F = 3;
-    const glm::ivec2 splat = mFrameSettings.splatSize;
-    const size_t pixels = static_cast<size_t>(mWidth) * static_cast<size_t>(mHeight);
-    return mGpuScene.getGpuBytes() + mPhotonBuffers.getGpuBytes() + mImportance->getGpuBytes() +
-           mDensity->getGpuBytes() + mSplat->getGpuBytes() + mGBuffer->getGBuffer().getGpuBytes() +
-           mLightViews->getGBuffer().getGpuBytes() + mMotionBlur->getGpuBytes() +
-           mDepthBlur->getGpuBytes() + mBloom->getGpuBytes() +
+    const FrameSettings& settings = runner.getFrameSettings();
+    const FramePasses p = runner.getPasses();
+    const glm::ivec2 splat = settings.splatSize;
+    const size_t pixels =
+        static_cast<size_t>(settings.width) * static_cast<size_t>(settings.height);
+    return p.scene.getGpuBytes() + p.photons.getGpuBytes() + p.importance.getGpuBytes() +
+           p.density.getGpuBytes() + p.splat.getGpuBytes() + p.gbuffer.getGBuffer().getGpuBytes() +
+           p.lightViews.getGBuffer().getGpuBytes() + p.motionBlur.getGpuBytes() +
+           p.depthBlur.getGpuBytes() + p.bloom.getGpuBytes() +
            pixels * (kFullResolutionRgba32F * kBytesRgba32F + kBytesRgba8) +
            size_t(splat.x) * size_t(splat.y) * kSplatResolutionRgba32F * kBytesRgba32F;
 }

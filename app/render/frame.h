@@ -42,11 +42,56 @@ double computeAdaptationWeight(double timeStepS, double timeConstantS);
 // Parses "direct|indirect|total"; throws InputError naming `where` otherwise.
 Aov parseAov(const std::string& text, const std::string& where);
 
-struct PassTiming {
-    std::string name;
-    double ms = 0.0;
+// Pass times of one frame (getTimings), and how they were measured.
+struct FrameTimings {
+    std::vector<PassTiming> passes; // in frame order; a pass drawn in slices is one row
+    gl::TimingMethod method = gl::TimingMethod::CpuFinish;
 };
 
+// The runner's passes and the resources they share, read-only (getPasses): their outputs for
+// debug views, reports and tests that run a pass on its own. Each pass owns its state.
+struct FramePasses {
+    const Scene& model; // the Scene the runner was built on
+    const GpuScene& scene;
+    const PhotonBuffers& photons;
+    const GBufferPass& gbuffer;       // the viewer G-buffer
+    const LightViewPass& lightViews;  // the light G-buffer
+    const ImportancePass& importance; // its pdf map: the viewer's "light importance" view
+    const PhotonEmitPass& emit;       // its emission grids
+    const PhotonTracePass& trace;
+    const PhotonDensityPass& density;
+    const SplatPass& splat;
+    const DenoisePass& denoise;
+    const UpsamplePass& upsample;     // the last frame's own indirect light, at full resolution
+    const AccumulatePass& accumulate; // the history: its frames and per-pixel lengths
+    const DirectPass& direct;         // the last frame's own direct light
+    const ComposePass& compose;
+    const SpecularPass& specular;
+    const MotionBlurPass& motionBlur;
+    const DepthBlurPass& depthBlur;
+    const BloomPass& bloom;
+    const TonemapPass& tonemap; // the display image and its white point
+};
+
+// What the caller knows of how frames are shown, kept until set again (setPresentation).
+struct Presentation {
+    // Seconds since the previous frame, for eye adaptation (eye_adaptation_s); < 0: unknown,
+    // the frame adapts at once (a still render).
+    double timeStepS = -1.0;
+    // The viewer G-buffer's velocity channel is drawn with motion blur on, or when kept (the
+    // viewer's debug view showing it); otherwise it holds zero.
+    bool keepVelocity = false;
+};
+
+// What the caller changed in the Scene the runner was built on (updateScene).
+enum class SceneChange {
+    Edited,         // instance transforms or lights moved or changed: re-uploaded
+    AddedOrRemoved, // lights or instances added or removed: uploaded anew, BVH included
+};
+
+// Orders the passes, hands them typed inputs, and wraps each in a debug group and a timer. The
+// passes keep their own state (AccumulatePass its history, ImportancePass its maps' history);
+// the runner keeps the frame's: settings, the frame budget, the steps of a sliced frame.
 class FrameRunner {
   public:
     // `settings` are the effective settings (scene overrides with the command line on top).
@@ -60,72 +105,45 @@ class FrameRunner {
     // `sliceMs` each (from their last timed frame; at most kMaxComputeSlices, kMaxSplatDraws).
     // continueFrame(budgetMs) runs steps until the next would pass `budgetMs` by the time it took
     // last (at least one step) and says whether the frame is done. While a frame is in progress,
-    // setSettings and updateScene wait for the next beginFrame (getSettings says what comes);
-    // rebuildScene drops it. The images are those of renderFrame() up to the order in which photons
-    // are stored and added (float rounding).
+    // setSettings and updateScene(Edited) wait for the next beginFrame (getSettings says what
+    // comes); updateScene(AddedOrRemoved) drops it. The images are those of renderFrame() up to
+    // the order in which photons are stored and added (float rounding).
     static constexpr double kWholeFrameMs = std::numeric_limits<double>::infinity();
     void beginFrame(double sliceMs = kWholeFrameMs);
     bool continueFrame(double budgetMs);
     bool isFrameInProgress() const { return mNextStep < mSteps.size(); }
-    // Seconds since the previous frame, for eye adaptation (eye_adaptation_s); until set, every
-    // frame adapts at once (a still render).
-    void setTimeStep(double seconds) { mTimeStepS = seconds; }
-    // Viewer edits (both cheap when nothing relevant changed). setSettings resizes the passes when
-    // width/height change and re-uploads the scene when shadow_map_size changes; every other
-    // setting is read by the passes each frame. updateScene re-uploads instance transforms and
-    // lights after the caller edited the Scene this runner was built on; rebuildScene uploads it
-    // anew (BVH included) when lights or instances were added or removed.
+
+    // Viewer edits (cheap when nothing relevant changed). setSettings resizes the passes when
+    // width/height change and re-makes the light views when shadow_map_size changes; every other
+    // setting is read by the passes each frame. It restarts the accumulated history, as does
+    // updateScene when a light changed or was added or removed; when only objects moved, and
+    // when the camera moved, the indirect history is reprojected and the direct light's restarts.
     void setSettings(const Settings& settings);
-    // Frames of the still view averaged into the light shown: at most `accumulate` (1 without
-    // accumulation, once a frame ran). The indirect light may hold more (getHistoryLength).
-    uint32_t getAccumulatedFrames() const;
-    // Frames each pixel's indirect light averages (R32F), with `accumulate` > 0.
-    const gl::Texture& getHistoryLength() const { return mAccumulate->getHistoryLength(); }
-    // setSettings and rebuildScene restart the accumulated history (`accumulate`), as does
-    // updateScene when a light changed; when only objects moved, and when the camera moved, the
-    // indirect history is reprojected and the direct light's restarts.
-    void updateScene();
-    void rebuildScene();
-    // The settings of the next frame (those set while a frame was in progress included).
-    const Settings& getSettings() const { return mPendingSettings ? *mPendingSettings : mSettings; }
-    const FrameSettings& getFrameSettings() const { return mFrameSettings; }
-    const Scene& getScene() const { return mScene; }
+    void updateScene(SceneChange change = SceneChange::Edited);
+    void setPresentation(const Presentation& presentation);
     // F5: rebuilds the passes' programs whose source files changed; failures keep the old ones.
     ShaderReloadReport reloadShaders();
+    // Waits for the last frame's pass times (bench, render); see getTimings.
+    void waitForTimings();
+
+    // The settings of the next frame as set (those set while a frame was in progress included).
+    const Settings& getSettings() const { return mPendingSettings ? *mPendingSettings : mSettings; }
+    // The settings resolved as the passes read them (the frame in progress keeps its own): with
+    // frame_ms_target, `photons` and what derives from it are the adapted budget's.
+    const FrameSettings& getFrameSettings() const { return mFrameSettings; }
     // Pass times of the newest frame whose timer results are in, read without waiting: with
     // timer queries (a GPU) a frame or a few behind the last renderFrame(); with the CPU clock
-    // (llvmpipe) the last frame's. waitForTimings() waits for the last frame's (bench, render).
-    const std::vector<PassTiming>& getLastTimings() const { return mTimings; }
-    void waitForTimings();
-    gl::TimingMethod getTimingMethod() const { return mTimer.getMethod(); }
-
+    // (llvmpipe) the last frame's.
+    const FrameTimings& getTimings() const { return mTimings; }
     // Linear radiance (Direct, Indirect, Total) or display values (Display), row 0 at the bottom.
     // Total is after the post passes (motion blur, depth blur, bloom) when any is on; Direct and
     // Indirect are the lights as composed, never post-processed.
     const gl::Texture& getAov(Aov aov) const;
-    // The last frame's own direct or indirect light, before accumulation (tests, debug views).
-    const gl::Texture& getFrameLight(Aov aov) const;
-    // Whether the photon passes run (bounces > 0 and photons > 0).
-    bool hasIndirect() const;
-    // Photon counts of the last frame, read back from the GPU (for reports; waits for the GPU).
-    PhotonCounts readPhotonCounts() const;
-    const PhotonBuffers& getPhotonBuffers() const { return mPhotonBuffers; }
-    // The emission grids of the last frame (light view, size, first photon index).
-    const std::vector<EmissionGrid>& getEmissionGrids() const { return mEmit->getGrids(); }
-    const GpuScene& getGpuScene() const { return mGpuScene; }
+    // The passes and what they share, read-only (FramePasses).
+    FramePasses getPasses() const;
     // What the passes were given in the last frame (valid after renderFrame), so a pass can be
     // run on its own against the same frame: tests and debug views.
     FrameInputs getFrameInputs() const;
-    const GBuffer& getViewerGBuffer() const { return mGBuffer->getGBuffer(); }
-    // The viewer G-buffer's velocity channel is drawn with motion blur on, or when kept (the
-    // viewer's debug view showing it); otherwise it holds zero.
-    void setKeepVelocity(bool keep) { mGBuffer->setKeepMotion(keep); }
-    const GBuffer& getLightGBuffer() const { return mLightViews->getGBuffer(); }
-    const ImportancePass& getImportance() const { return *mImportance; }
-    float readLuminanceMax() const { return mTonemap->readLuminanceMax(); }
-    int getWidth() const { return mWidth; }
-    int getHeight() const { return mHeight; }
-    size_t getGpuBytes() const;
 
   private:
     // One step of a frame in progress; `costKey` names its measured time (mStepCostMs).
@@ -138,17 +156,19 @@ class FrameRunner {
     void addTimedStep(const char* costKey, const Pass& pass, std::function<void()> run);
     void addFrameSteps(double sliceMs);
     void finishFrame();         // the frame's timings, the adapted photon budget
-    void dropFrameInProgress(); // rebuildScene while a frame is in progress
+    void dropFrameInProgress(); // AddedOrRemoved while a frame is in progress
     void applySettings(const Settings& settings);
+    void rebuildScene();
     void applySceneUpdate();
     // Slices of `pass` so each takes about half of `sliceMs` (from its last timed frame), in
     // [fewest, most]; `fewest` for a whole frame at once.
     uint32_t chooseSlices(const char* pass, double sliceMs, uint32_t fewest, uint32_t most) const;
     void resizePasses();
     void updateFrameConstants();
-    void resetHistory();
+    // The still view's frames so far (AccumulatePass's history).
+    uint32_t getHistoryFrames() const { return mAccumulate->getHistory().getFrames(); }
     // Every pass in frame order, for resize and shader reload.
-    std::array<Pass*, 17> getPasses() const;
+    std::array<Pass*, 17> listPasses() const;
     void runPass(Pass& pass, const FrameInputs& inputs);
     // The post passes that are on, chained from the composed image; returns their output (the
     // composed image when none is on).
@@ -157,36 +177,15 @@ class FrameRunner {
     const Scene& mScene;
     Settings mSettings;
     FrameSettings mFrameSettings; // mSettings resolved
-    // The accumulated history (AccumulatePass): frames of the still view in it, whether it must
-    // start anew (a light, a setting or the scene changed) or be reprojected (the camera or an
-    // object moved), the last frame's camera, and frames drawn since it started (the seed).
-    uint32_t mHistoryFrames = 0;
-    bool mHistoryReset = true;
-    bool mMoved = false;
-    glm::mat4 mPreviousClipFromWorld{1.0f};
-    uint32_t mSequenceFrames = 0;
-    uint64_t mHistoryLightsVersion = 0; // GpuScene::getLightsVersion of the history's lights
-    Camera mHistoryCamera;              // the camera of the last frame
-    uint32_t mFramesDrawn = 0;          // since the runner was made (rng = per_frame)
-    double mTimeStepS = -1.0;           // setTimeStep; < 0: not set
-    // What the importance maps were last built for (renderFrame): stale after a camera move, a
-    // settings change or a rebuilt scene; else rebuilt when the seed or a light view changed.
-    bool mImportanceStale = true;
-    // The maps' history (importance_frames) is void: settings, size or scene changed since the
-    // last build; also void when GpuScene::getEmittingViewsVersion moved from this.
-    bool mImportanceFresh = true;
-    uint64_t mImportanceEmittingViews = 0;
-    uint32_t mImportanceSeed = 0;
-    uint64_t mImportanceLightViews = 0;
+    double mTimeStepS = -1.0;     // Presentation::timeStepS
     int mWidth;
     int mHeight;
     void setTimings(const std::vector<gl::PassTimer::Sample>& samples);
-    // frame_ms_target: records the newest timings and, once enough frames measured the present
-    // budget, sets the adapted one (a settings change: the history starts anew).
+    // frame_ms_target: hands the newest timings to the budget and applies a new one.
     void adaptPhotonBudget();
-    std::vector<FrameCost> mBudgetCosts; // frames measured at the present budget
-    int mBudgetSettle = 0;               // frames whose timings may predate the last change
-    uint32_t getFrameSeed() const;       // FrameInputs::seed
+    // The budget's photons over the settings as resolved, and the light views' resolution that
+    // may follow them (shadows ray): the light views are re-made, the BVH stays.
+    void applyBudget();
 
     // The frame in progress (beginFrame/continueFrame): its steps, the next one, its inputs.
     std::vector<FrameStep> mSteps;
@@ -198,8 +197,9 @@ class FrameRunner {
     std::unordered_map<std::string, double> mStepCostMs; // each step's time when it last ran
     std::unordered_map<std::string, double> mLastPassMs; // each pass's time, last timed frame
 
+    FrameBudget mBudget; // frame_ms_target's photons (mFrameSettings.photons)
     gl::PassTimer mTimer;
-    std::vector<PassTiming> mTimings;
+    FrameTimings mTimings;
     GpuScene mGpuScene;
     gl::Buffer mFrameConstants;
     glm::mat4 mClipFromWorld{1.0f};
@@ -223,5 +223,10 @@ class FrameRunner {
     const gl::Texture* mTotal = nullptr; // the last frame's total: compose's or the post passes'
     std::unique_ptr<TonemapPass> mTonemap;
 };
+
+// Photon counts of the last frame, read back from the GPU (for reports; waits for the GPU).
+PhotonCounts readPhotonCounts(const FrameRunner& runner);
+// GPU memory the runner's scene, buffers and targets hold (bench's report).
+size_t computeGpuBytes(const FrameRunner& runner);
 
 } // namespace ispm

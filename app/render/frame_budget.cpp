@@ -1,10 +1,9 @@
 // frame_ms_target's controller (see frame_budget.h).
 #include "render/frame_budget.h"
 
-#include "render/frame.h"
-
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace ispm {
 namespace {
@@ -38,6 +37,41 @@ int adaptPhotonBudget(int photons, const FrameCost& cost, double targetMs, int m
     const double next = std::round(double(photons) * step / kRounding) * kRounding;
     return int(
         std::clamp(next, double(std::min(kMinAdaptedPhotons, maxPhotons)), double(maxPhotons)));
+}
+
+FrameBudget::FrameBudget(std::vector<std::string> photonPasses, int maxPhotons)
+    : mPhotonPasses(std::move(photonPasses)), mMaxPhotons(maxPhotons) {}
+
+void FrameBudget::restart(int photons) {
+    mPhotons = photons;
+    mCosts.clear();
+}
+
+bool FrameBudget::recordFrame(const std::vector<PassTiming>& timings, double targetMs,
+                              bool converging, uint32_t framesInFlight) {
+    if (targetMs <= 0.0 || converging) {
+        mCosts.clear();
+        return false;
+    }
+    if (mSettle > 0) {
+        --mSettle;
+        return false;
+    }
+    mCosts.push_back(splitFrameCost(timings, mPhotonPasses));
+    if (mCosts.size() < kMeasuredFrames) return false;
+    // The median frame of the window: one slow frame (another process, a first use of a
+    // program) does not move the budget.
+    std::sort(mCosts.begin(), mCosts.end(), [](const FrameCost& a, const FrameCost& b) {
+        return a.fixedMs + a.photonMs < b.fixedMs + b.photonMs;
+    });
+    const FrameCost median = mCosts[mCosts.size() / 2];
+    mCosts.clear();
+    const int photons = adaptPhotonBudget(mPhotons, median, targetMs, mMaxPhotons);
+    if (photons == mPhotons) return false;
+    mPhotons = photons;
+    // Timer queries answer frames late: the frames still in flight measure the old budget.
+    mSettle = framesInFlight;
+    return true;
 }
 
 } // namespace ispm

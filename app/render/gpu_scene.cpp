@@ -261,6 +261,12 @@ void GpuScene::setViewer(const Scene& scene, const Camera& camera, float aspect)
     uploadLights(scene);
 }
 
+void GpuScene::setLightResolution(const Scene& scene, int resolution) {
+    if (resolution == mLightResolution) return;
+    mLightResolution = resolution;
+    uploadLights(scene); // the cameras' texel sizes and the sun's fitted view follow it
+}
+
 void GpuScene::setLightJitter(glm::vec2 texels) {
     if (texels == mLightJitter) return;
     mLightJitter = texels;

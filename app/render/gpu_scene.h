@@ -71,6 +71,9 @@ class GpuScene {
     // what the importance maps' texels stand for.
     uint64_t getEmittingViewsVersion() const { return mEmittingViewsVersion; }
     int getLightResolution() const { return mLightResolution; }
+    // Re-makes the light cameras and views at `resolution` (shadow_map_size, set or derived from
+    // a photon budget) from `scene` as last uploaded; geometry, instances and the BVH stay.
+    void setLightResolution(const Scene& scene, int resolution);
     const Aabb& getBounds() const { return mBounds; }
     // Each instance's world box (Scene::computeInstanceBounds), kept with getBounds.
     const std::vector<Aabb>& getInstanceBounds() const { return mInstanceBounds; }

@@ -48,15 +48,34 @@ ImportancePass::ImportancePass(const GBuffer& viewer, const GBuffer& lights)
            .defines = getGBufferDefines()})),
       mParams("importance parameters", sizeof(gpu::ImportanceParams)) {}
 
+void ImportancePass::resize(int width, int height) {
+    (void)width;
+    (void)height;
+    restartHistory();
+}
+
 void ImportancePass::execute(const FrameInputs& inputs) {
+    const GpuScene& scene = inputs.scene;
+    const bool sameAim =
+        !mStale && inputs.seed == mSeed && scene.getLightViewsVersion() == mLightViews;
+    const bool keepHistory = !mFresh && scene.getEmittingViewsVersion() == mEmittingViews;
+    buildMaps(inputs, sameAim, keepHistory); // its timer row reads ~0 ms when kept
+    mStale = false;
+    mFresh = false;
+    mSeed = inputs.seed;
+    mLightViews = scene.getLightViewsVersion();
+    mEmittingViews = scene.getEmittingViewsVersion();
+}
+
+void ImportancePass::buildMaps(const FrameInputs& inputs, bool keepMaps, bool keepHistory) {
     const std::vector<LightCamera>& cameras = inputs.scene.getLightCameras();
     const size_t views = cameras.size();
     if (views == 0) return;
-    if (mKeepMaps && views == mViewCount) return;
+    if (keepMaps && views == mViewCount) return;
     if (views != mViewCount) {
         mHits = gl::Buffer("importance hits", views * gpu::kImportanceTexels * sizeof(uint32_t));
         mHistory = gl::Buffer("importance history", views * gpu::kImportanceTexels * sizeof(float));
-        mKeepHistory = false; // nothing in it yet
+        keepHistory = false; // nothing in it yet
         mCdfTables = gl::Buffer("importance tables", computeCdfFloats(views) * sizeof(float));
         mFilteredRows = gl::Buffer("importance filtered rows",
                                    views * gpu::kImportanceTexels * 2 * sizeof(float));
@@ -71,7 +90,7 @@ void ImportancePass::execute(const FrameInputs& inputs) {
     // importance_samples on a first frame, 1 / importance_frames of them when blended into the
     // maps' history with that weight.
     const int frames = inputs.settings.importanceFrames;
-    const bool blend = mKeepHistory && frames > 1;
+    const bool blend = keepHistory && frames > 1;
     const double samples = std::max(inputs.settings.importanceSamples / (blend ? frames : 1), 1);
     const double aspect = double(inputs.width) / double(inputs.height);
     const auto across =

@@ -17,14 +17,24 @@ class ImportancePass final : public Pass {
   public:
     ImportancePass(const GBuffer& viewer, const GBuffer& lights);
     const char* getName() const override { return "importance"; }
+    // A new size voids the maps and their history (restartHistory).
+    void resize(int width, int height) override;
+    // Builds the maps, or keeps last frame's when nothing they depend on changed since (the
+    // view, the seed, a light view, a setting): any map is an unbiased pdf, and a kept one keeps
+    // the photons' first hits (and with rng fixed or object_space their paths) where nothing
+    // moved; objects that moved alone keep them. A new build blends this frame's samples into
+    // the maps of earlier frames (importance_frames), gathering importance_samples /
+    // importance_frames of them, unless their history is void (restartHistory, or an emitting
+    // light view moved); a moved camera keeps it: its aim lags a few frames.
     void execute(const FrameInputs& inputs) override;
-    // Keep last frame's maps instead of building new ones (FrameRunner: nothing they depend on
-    // changed); the next execute does nothing.
-    void setKeepMaps(bool keep) { mKeepMaps = keep; }
-    // Blend this frame's samples into the maps of earlier frames (importance_frames), gathering
-    // importance_samples / importance_frames of them; else build the maps from all of them anew
-    // (FrameRunner: settings, size, scene or an emitting light view changed since).
-    void setKeepHistory(bool keep) { mKeepHistory = keep; }
+    // The camera moved or the seed alone changed: the next execute builds new maps, blended into
+    // the history.
+    void invalidateMaps() { mStale = true; }
+    // Settings or the scene changed: the next execute builds the maps from its own samples alone.
+    void restartHistory() {
+        mStale = true;
+        mFresh = true;
+    }
     void reloadPrograms(ShaderReloadReport& report) override {
         mGather.reloadIfChanged(report);
         mCdf.reloadIfChanged(report);
@@ -42,8 +52,17 @@ class ImportancePass final : public Pass {
     }
 
   private:
-    bool mKeepMaps = false;
-    bool mKeepHistory = false;
+    void buildMaps(const FrameInputs& inputs, bool keepMaps, bool keepHistory);
+
+    // What the maps were last built for: stale after a camera move, a settings change or a
+    // rebuilt scene; else rebuilt when the seed or a light view changed.
+    bool mStale = true;
+    // The maps' history is void: settings, size or scene changed since the last build; also void
+    // when GpuScene::getEmittingViewsVersion moved from mEmittingViews.
+    bool mFresh = true;
+    uint64_t mEmittingViews = 0;
+    uint32_t mSeed = 0;
+    uint64_t mLightViews = 0;
     uint32_t mBlends = 0; // frames blended into the history since it was built anew
     const GBuffer& mViewer;
     const GBuffer& mLights;

@@ -73,14 +73,14 @@ std::optional<PhotonAov> findPhotonAov(const std::string& name) {
 }
 
 double computePhotonPowerScale(const FrameRunner& runner) {
-    const GpuScene& scene = runner.getGpuScene();
-    const std::vector<Light>& lights = runner.getScene().lights;
+    const GpuScene& scene = runner.getPasses().scene;
+    const std::vector<Light>& lights = runner.getPasses().model.lights;
     double power = 0.0;
     for (size_t i = 0; i < lights.size(); ++i) {
         power += computeLightViewPower(lights[i], scene.getLightCameras(), uint32_t(i),
                                        scene.getLightResolution());
     }
-    const uint32_t photons = countPhotons(runner.getEmissionGrids());
+    const uint32_t photons = countPhotons(runner.getPasses().emit.getGrids());
     return power > 0.0 && photons > 0 ? double(photons) / power : 0.0;
 }
 
@@ -95,14 +95,14 @@ PhotonPointsDrawer::PhotonPointsDrawer()
 
 void PhotonPointsDrawer::draw(const FrameRunner& runner, PhotonPoints which,
                               PhotonColour colour) const {
-    const PhotonBuffers& buffers = runner.getPhotonBuffers();
+    const PhotonBuffers& buffers = runner.getPasses().photons;
     // No photons this frame (bounces = 0, photons = 0): the buffers may not even exist.
-    if (which == PhotonPoints::None || !runner.hasIndirect()) return;
+    if (which == PhotonPoints::None || !runner.getFrameSettings().hasIndirect()) return;
     gl::applyState({.programPointSize = true});
     runner.getFrameInputs().frameConstants.bindBase(gl::BufferTarget::Uniform,
                                                     gpu::kBindingFrameConstants);
     buffers.bind();
-    runner.getViewerGBuffer().getChannel("position").bindUnit(kUnitPosition);
+    runner.getPasses().gbuffer.getGBuffer().getChannel("position").bindUnit(kUnitPosition);
     mVertexArray.bind();
     const auto powerScale =
         colour == PhotonColour::Power
@@ -121,7 +121,7 @@ void PhotonPointsDrawer::draw(const FrameRunner& runner, PhotonPoints which,
 Image PhotonPointsDrawer::renderAov(const FrameRunner& runner, const PhotonAov& aov,
                                     bool backdrop) const {
     ColorTarget target("photon points image", gl::Format::RGBA8);
-    target.resize(runner.getWidth(), runner.getHeight());
+    target.resize(runner.getFrameSettings().width, runner.getFrameSettings().height);
     target.bind();
     gl::applyState({});
     if (backdrop) {

@@ -101,8 +101,12 @@ uint32_t getChoice(const Settings& settings, std::string_view name) {
 } // namespace
 
 int computeSplatNeighbours(const Settings& settings) {
+    return computeSplatNeighbours(settings, settings.get("photons"));
+}
+
+int computeSplatNeighbours(const Settings& settings, double photons) {
     if (settings.isSet("splat_neighbours")) return settings.getInt("splat_neighbours");
-    const double k = kNeighboursPerSqrtPhoton * std::sqrt(std::max(settings.get("photons"), 0.0));
+    const double k = kNeighboursPerSqrtPhoton * std::sqrt(std::max(photons, 0.0));
     return std::clamp(int(std::lround(k)), kMinNeighbours, kMaxNeighbours);
 }
 
@@ -134,10 +138,14 @@ bool computeSurfaceEnds(const Settings& settings) {
 }
 
 int computeShadowMapSize(const Settings& settings) {
+    return computeShadowMapSize(settings, settings.get("photons"));
+}
+
+int computeShadowMapSize(const Settings& settings, double photons) {
     if (settings.isSet("shadow_map_size")) return settings.getInt("shadow_map_size");
     if (getChoice(settings, "shadows") != gpu::kShadowsRay) return kShadowMapTexels;
     const auto wanted = static_cast<unsigned>(
-        std::ceil(kEmissionTexelsPerGridCell * std::sqrt(std::max(settings.get("photons"), 0.0))));
+        std::ceil(kEmissionTexelsPerGridCell * std::sqrt(std::max(photons, 0.0))));
     return std::clamp(static_cast<int>(std::bit_ceil(wanted)), kMinEmissionTexels,
                       kShadowMapTexels);
 }
@@ -201,6 +209,12 @@ FrameSettings resolveFrameSettings(const Settings& settings) {
     f.bloomThreshold = settings.getFloat("bloom_threshold");
     f.bloomRadiusPx = settings.getFloat("bloom_radius_px");
     return f;
+}
+
+void applyPhotonBudget(FrameSettings& frame, const Settings& settings, int photons) {
+    frame.photons = photons;
+    frame.splatNeighbours = computeSplatNeighbours(settings, photons);
+    frame.shadowMapSize = computeShadowMapSize(settings, photons);
 }
 
 } // namespace ispm

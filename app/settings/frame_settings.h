@@ -82,13 +82,19 @@ struct FrameSettings {
 };
 
 FrameSettings resolveFrameSettings(const Settings& settings);
+// frame_ms_target's adapted budget (FrameBudget) over the settings' photons: `photons` and the
+// values derived from them (splat neighbours, the derived shadow_map_size), the rest as resolved.
+void applyPhotonBudget(FrameSettings& frame, const Settings& settings, int photons);
 
 // The derivations, also for the viewer's "auto" labels.
 int computeSplatNeighbours(const Settings& settings);
+// With `photons` in place of the setting's (applyPhotonBudget).
+int computeSplatNeighbours(const Settings& settings, double photons);
 int computeSplatDivisor(const Settings& settings, int width, int height);
 glm::ivec2 computeSplatSize(const Settings& settings, int width, int height);
 int computeDenoiseIterations(const Settings& settings, int width, int height);
 int computeShadowMapSize(const Settings& settings);
+int computeShadowMapSize(const Settings& settings, double photons);
 bool computeSplatClip(const Settings& settings);
 // surface_ends as it applies: never with clip lines (they renormalise per pixel instead).
 bool computeSurfaceEnds(const Settings& settings);

@@ -45,11 +45,11 @@ void getChannelTransform(std::string_view channel, float& scale, float& bias) {
 const gl::Texture& selectTexture(const FrameRunner& runner, const DebugView& view) {
     switch (view.source) {
     case DebugView::Source::ViewerGBuffer:
-        return runner.getViewerGBuffer().getChannel(view.channel);
+        return runner.getPasses().gbuffer.getGBuffer().getChannel(view.channel);
     case DebugView::Source::LightGBuffer:
-        return runner.getLightGBuffer().getChannel(view.channel);
+        return runner.getPasses().lightViews.getGBuffer().getChannel(view.channel);
     case DebugView::Source::LightImportance:
-        return runner.getImportance().getPdfMap();
+        return runner.getPasses().importance.getPdfMap();
     case DebugView::Source::Aov:
     case DebugView::Source::Reference: // ReferenceView draws these; `aov` is their total
         break;
@@ -154,7 +154,7 @@ void DebugViewDrawer::draw(const FrameRunner& runner, const DebugView& view,
     texture.bindUnit(kUnitSource);
     mSampler.bindUnit(kUnitSource);
     if (texture.isArray()) {
-        runner.getLightGBuffer().getChannel("position").bindUnit(kUnitMask);
+        runner.getPasses().lightViews.getGBuffer().getChannel("position").bindUnit(kUnitMask);
         mSampler.bindUnit(kUnitMask);
     }
     mVertexArray.bind();

@@ -98,7 +98,7 @@ void ReferenceView::update(const Scene& scene, const FrameRunner& runner) {
     if (mRendering && (mPass || ++mStillFrames >= kStillFramesBeforeRestart)) {
         if (!mPass) {
             try {
-                mPass = std::make_unique<ReferencePass>(scene, runner.getGpuScene(),
+                mPass = std::make_unique<ReferencePass>(scene, runner.getPasses().scene,
                                                         runner.getSettings());
             } catch (const gl::Error& e) {
                 // Its shader is read anew at every restart: an edit in progress must not end
@@ -118,7 +118,8 @@ void ReferenceView::update(const Scene& scene, const FrameRunner& runner) {
         }
         mFrameTiming = PassTiming{kTracerTimingName, mLastTracedMs};
     }
-    if (mAutoMetrics && hasReference(runner.getWidth(), runner.getHeight()) &&
+    if (mAutoMetrics &&
+        hasReference(runner.getFrameSettings().width, runner.getFrameSettings().height) &&
         ++mFramesSinceMetrics >= kAutoMetricsFrames) {
         computeMetrics(runner);
     }
@@ -146,7 +147,8 @@ std::string ReferenceView::describeSizeMismatch(int width, int height) const {
 
 std::string ReferenceView::computeMetrics(const FrameRunner& runner) {
     mFramesSinceMetrics = 0;
-    const std::string missing = describeMissing(runner.getWidth(), runner.getHeight());
+    const std::string missing =
+        describeMissing(runner.getFrameSettings().width, runner.getFrameSettings().height);
     if (!missing.empty()) {
         mMetricsText = missing;
     } else {
@@ -218,7 +220,8 @@ void ReferenceView::drawPanel(const FrameRunner& runner) {
                     mPass ? "" : " (waiting for the camera to stop)");
     } else if (!mLoadedPath.empty()) {
         ImGui::TextWrapped("file: %s", mLoadedPath.c_str());
-        const std::string mismatch = describeSizeMismatch(runner.getWidth(), runner.getHeight());
+        const std::string mismatch =
+            describeSizeMismatch(runner.getFrameSettings().width, runner.getFrameSettings().height);
         if (!mismatch.empty()) {
             ImGui::PushStyleColor(ImGuiCol_Text, kWarningColour);
             ImGui::TextWrapped("%s", mismatch.c_str());

@@ -105,8 +105,8 @@ void Viewer::switchScene(const std::string& path) {
         return;
     }
     next.settings.merge(mOptions.commandLine);
-    next.settings.set("width", mRunner->getWidth(), "viewer window");
-    next.settings.set("height", mRunner->getHeight(), "viewer window");
+    next.settings.set("width", mRunner->getFrameSettings().width, "viewer window");
+    next.settings.set("height", mRunner->getFrameSettings().height, "viewer window");
     mReference.restart(); // its path tracer holds a reference to mScene too
     mRunner.reset();      // holds a reference to mScene
     mScene = std::move(next);
@@ -138,15 +138,15 @@ void Viewer::drawFrame() {
     const DebugView& view = mPanels.getView();
     if (view.source == DebugView::Source::Reference) {
         mReference.draw(*mRunner, view.referenceMode, mPanels.getTransform().exposureStops,
-                        mRunner->getWidth(), mRunner->getHeight());
+                        mRunner->getFrameSettings().width, mRunner->getFrameSettings().height);
     } else {
-        mDrawer.draw(*mRunner, view, mPanels.getTransform(), mRunner->getWidth(),
-                     mRunner->getHeight());
+        mDrawer.draw(*mRunner, view, mPanels.getTransform(), mRunner->getFrameSettings().width,
+                     mRunner->getFrameSettings().height);
     }
     // Points are placed with the viewer camera: not over a light camera's image.
     if (view.source != DebugView::Source::LightGBuffer &&
         view.source != DebugView::Source::LightImportance) {
-        gl::bindDefaultFramebuffer(mRunner->getWidth(), mRunner->getHeight());
+        gl::bindDefaultFramebuffer(mRunner->getFrameSettings().width, mRunner->getFrameSettings().height);
         mPointsDrawer.draw(*mRunner, mPanels.getPoints(), mPanels.getPointsColour());
     }
     gl::bindDefaultFramebuffer(mWindowWidth, mWindowHeight);
@@ -154,8 +154,9 @@ void Viewer::drawFrame() {
     mLightEdit = requests.lightEdit; // the last frame's was applied before this draw
     if (!requests.scenePath.empty()) mPendingScenePath = requests.scenePath;
     if (view.referenceMode == ReferenceMode::HeatMap &&
-        mReference.hasReference(mRunner->getWidth(), mRunner->getHeight())) {
-        mReference.drawLegendLabels(mRunner->getHeight());
+        mReference.hasReference(mRunner->getFrameSettings().width,
+                                mRunner->getFrameSettings().height)) {
+        mReference.drawLegendLabels(mRunner->getFrameSettings().height);
     }
     mImGui.endFrame();
 }
@@ -180,7 +181,7 @@ void Viewer::updateCameraAndScene(const CameraInput& scripted, const FrameInput&
     // Edits wait for the next rendered frame (the runner keeps them until then), but lights
     // added or removed drop the frame in progress.
     if (mLightEdit == LightEdit::Values) mRunner->updateScene();
-    if (mLightEdit == LightEdit::AddedOrRemoved) mRunner->rebuildScene();
+    if (mLightEdit == LightEdit::AddedOrRemoved) mRunner->updateScene(SceneChange::AddedOrRemoved);
     mLightEdit = LightEdit::None;
     if (mScene.isAnimated() && advanceAnimationClock(mClock, seconds)) {
         mScene.update(mClock.timeS);
@@ -241,12 +242,13 @@ int Viewer::run() {
         updateCameraAndScene(scripted, input, seconds);
 
         if (!mRunner->isFrameInProgress() && !renderedQuietly) {
-            mRunner->setTimeStep(sinceFrameBeganS); // eye adaptation follows the wall clock
+            const DebugView& shown = mPanels.getView();
+            mRunner->setPresentation(
+                {.timeStepS = sinceFrameBeganS, // eye adaptation follows the wall clock
+                 .keepVelocity = shown.source == DebugView::Source::ViewerGBuffer &&
+                                 getGBufferChannels()[shown.channel].name == "velocity"});
             sinceFrameBeganS = 0.0;
             renderFrameStart = Clock::now();
-            const DebugView& shown = mPanels.getView();
-            mRunner->setKeepVelocity(shown.source == DebugView::Source::ViewerGBuffer &&
-                                     getGBufferChannels()[shown.channel].name == "velocity");
             mRunner->beginFrame(mPacer.getRenderBudgetMs());
         }
         const Clock::time_point sliceStart = Clock::now();

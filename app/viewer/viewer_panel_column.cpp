@@ -27,7 +27,7 @@ constexpr uint64_t kStatsReadbackFrames = 8;
 std::optional<double> findDerivedValue(const FrameRunner& runner, float luminanceMax,
                                        std::string_view name) {
     const FrameSettings& s = runner.getFrameSettings();
-    const GpuScene& scene = runner.getGpuScene();
+    const GpuScene& scene = runner.getPasses().scene;
     if (name == "splat_neighbours") return s.splatNeighbours;
     if (name == "denoise") return s.denoiseIterations;
     if (name == "shadow_map_size") return s.shadowMapSize;
@@ -72,7 +72,7 @@ PanelRequests PanelColumn::draw(const PanelContext& context) {
     PanelRequests requests;
     FrameRunner& runner = context.runner;
     Scene& scene = context.scene;
-    ImGui::SetNextWindowPos(ImVec2(static_cast<float>(runner.getWidth()), 0.0f));
+    ImGui::SetNextWindowPos(ImVec2(static_cast<float>(runner.getFrameSettings().width), 0.0f));
     ImGui::SetNextWindowSize(
         ImVec2(static_cast<float>(kPanelWidthPx), static_cast<float>(context.windowHeight)));
     ImGui::Begin("ispm", nullptr,
@@ -120,15 +120,15 @@ PanelRequests PanelColumn::draw(const PanelContext& context) {
     }
     if (ImGui::CollapsingHeader("Stats", ImGuiTreeNodeFlags_DefaultOpen)) {
         drawStatsPanel(mTimings, mCounts, context.window.getInfo().renderer,
-                       gl::getTimingMethodName(runner.getTimingMethod()), mLuminanceMax,
-                       runner.getAccumulatedFrames());
+                       gl::getTimingMethodName(runner.getTimings().method), mLuminanceMax,
+                       runner.getPasses().accumulate.getAccumulatedFrames());
     }
     ImGui::PopItemWidth();
     ImGui::EndChild();
     context.output.drawFooter();
     ImGui::End();
     if (mShowFrameRate)
-        drawFrameRateOverlay(context.pacer, runner.getWidth(), context.windowHeight);
+        drawFrameRateOverlay(context.pacer, runner.getFrameSettings().width, context.windowHeight);
     if (mShowHelp) drawHelpWindow(mShowHelp, context.windowWidth, context.windowHeight);
     return requests;
 }
@@ -164,7 +164,7 @@ void PanelColumn::drawViewSection(const PanelContext& context) {
         // The region stays black without a reference: say why here, not only under the
         // (collapsed) Reference header.
         const std::string missing =
-            context.reference.describeMissing(runner.getWidth(), runner.getHeight());
+            context.reference.describeMissing(runner.getFrameSettings().width, runner.getFrameSettings().height);
         if (!missing.empty()) drawMessageText(missing, true);
     }
     int points = static_cast<int>(mPoints);
@@ -182,7 +182,7 @@ void PanelColumn::drawViewSection(const PanelContext& context) {
     }
     if (current.source == DebugView::Source::LightGBuffer ||
         current.source == DebugView::Source::LightImportance) {
-        const int layers = runner.getLightGBuffer().getLayers();
+        const int layers = runner.getPasses().lightViews.getGBuffer().getLayers();
         ImGui::SliderInt("light camera", &mTransform.lightLayer, 0, std::max(0, layers - 1));
     }
     ImGui::Checkbox("frame rate overlay (F2)", &mShowFrameRate);
@@ -217,13 +217,13 @@ void PanelColumn::selectPoints(const std::string& points, const std::string& col
 // read-back waits for the GPU to finish the frame.
 void PanelColumn::readStats(const FrameRunner& runner) {
     if (mFrameIndex++ % kStatsReadbackFrames != 0) return;
-    mCounts = runner.readPhotonCounts();
-    mLuminanceMax = runner.readLuminanceMax();
+    mCounts = readPhotonCounts(runner);
+    mLuminanceMax = runner.getPasses().tonemap.readLuminanceMax();
 }
 
 // The frame row counts the in-viewer path tracer too, when it ran this frame.
 void PanelColumn::recordTimings(const FrameRunner& runner, const ReferenceView& reference) {
-    std::vector<PassTiming> timings = runner.getLastTimings();
+    std::vector<PassTiming> timings = runner.getTimings().passes;
     if (const std::optional<PassTiming> traced = reference.getFrameTiming()) {
         timings.push_back(*traced);
     }

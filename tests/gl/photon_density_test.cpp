@@ -94,7 +94,7 @@ DensityRun runDensity(const Scene& scene, std::vector<gpu::ResultPhoton> photons
     counters.densityDispatch =
         glm::uvec4((count + gpu::kTraceGroupSize - 1) / gpu::kTraceGroupSize, 1, 1, 0);
     buffers.getCounters().upload(0, sizeof(counters), &counters);
-    PhotonDensityPass density(buffers, runner.getViewerGBuffer());
+    PhotonDensityPass density(buffers, runner.getPasses().gbuffer.getGBuffer());
     FrameInputs inputs = runner.getFrameInputs();
     inputs.progressive = progressive;
     density.execute(inputs);
@@ -120,7 +120,7 @@ DensityRun runDensity(const Scene& scene, std::vector<gpu::ResultPhoton> photons
     return {buffers.getResult().read<gpu::ResultPhoton>(count),
             clip,
             order,
-            runner.getGpuScene().getBounds(),
+            runner.getPasses().scene.getBounds(),
             density.getCausticOffset(),
             discs,
             discDraw};

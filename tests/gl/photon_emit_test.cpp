@@ -510,16 +510,16 @@ bool isScatterMarginal(const glm::dvec3& dir, const glm::dvec3& n, const glm::dv
 Reference computeReference(const FrameRunner& runner, const Scene& scene, uint32_t seed,
                            uint32_t rngMode, uint32_t firstBounce = gpu::kFirstBounceRoulette) {
     Reference ref;
-    const std::vector<LightCamera>& cameras = runner.getGpuScene().getLightCameras();
-    const int res = runner.getGpuScene().getLightResolution();
+    const std::vector<LightCamera>& cameras = runner.getPasses().scene.getLightCameras();
+    const int res = runner.getPasses().scene.getLightResolution();
     const size_t views = cameras.size();
-    const std::vector<float> cdf = runner.getImportance().getCdf().read<float>(
+    const std::vector<float> cdf = runner.getPasses().importance.getCdf().read<float>(
         views * (gpu::kImportanceTexels + gpu::kImportanceSize));
-    for (const EmissionGrid& grid : runner.getEmissionGrids()) {
+    for (const EmissionGrid& grid : runner.getPasses().emit.getGrids()) {
         const LightCamera& cam = cameras[grid.viewIndex];
         const Light& light = scene.lights[cam.lightIndex];
-        const LightTexels texels =
-            readLightTexels(runner.getLightGBuffer(), static_cast<int>(grid.viewIndex));
+        const LightTexels texels = readLightTexels(runner.getPasses().lightViews.getGBuffer(),
+                                                   static_cast<int>(grid.viewIndex));
         const glm::dvec2 gridSize(grid.width, grid.height);
         for (uint32_t index = 0; index < grid.getCount(); ++index) {
             const uint32_t photon = grid.firstPhoton + index;
@@ -674,10 +674,10 @@ struct Comparison {
 Comparison compareBounceBuffer(const FrameRunner& runner, const Reference& ref,
                                const std::string& what) {
     Comparison result;
-    const PhotonCounts counts = runner.readPhotonCounts();
+    const PhotonCounts counts = readPhotonCounts(runner);
     result.gpuCount = counts.bounced;
-    EXPECT_EQ(counts.emitted, countPhotons(runner.getEmissionGrids())) << what;
-    const gl::Buffer& bounce = runner.getPhotonBuffers().getBounce();
+    EXPECT_EQ(counts.emitted, countPhotons(runner.getPasses().emit.getGrids())) << what;
+    const gl::Buffer& bounce = runner.getPasses().photons.getBounce();
     const std::vector<gpu::BouncePhoton> gpuPhotons =
         counts.bounced ? bounce.read<gpu::BouncePhoton>(counts.bounced)
                        : std::vector<gpu::BouncePhoton>{};
@@ -755,7 +755,7 @@ class PhotonEmitTest : public GlTest {
             const Comparison c = compareBounceBuffer(runner, ref, what);
             std::printf("[ emit     ] %s: emitted %u, bounced %u (oracle %zu), tolerated flips "
                         "%u, max power error %.2e\n",
-                        what.c_str(), countPhotons(runner.getEmissionGrids()), c.gpuCount,
+                        what.c_str(), countPhotons(runner.getPasses().emit.getGrids()), c.gpuCount,
                         ref.photons.size(), c.tolerated, c.maxPowerError);
             for (size_t i = 0; i < events.size(); ++i)
                 events[i] += ref.eventCounts[i];
@@ -817,13 +817,13 @@ TEST_F(PhotonEmitTest, SunTravelStartsAtTheFirstHit) {
     const Scene scene = makeRoomScene(makeSun());
     FrameRunner runner(scene, makeSettings(12345), gl::TimingMethod::CpuFinish);
     runner.renderFrame();
-    const uint32_t bounced = runner.readPhotonCounts().bounced;
+    const uint32_t bounced = readPhotonCounts(runner).bounced;
     ASSERT_GT(bounced, 1000u);
     const glm::vec3 axis = glm::normalize(scene.lights[0].direction);
     float nearest = FLT_MAX;
     float farthest = -FLT_MAX;
     for (const gpu::BouncePhoton& p :
-         runner.getPhotonBuffers().getBounce().read<gpu::BouncePhoton>(bounced)) {
+         runner.getPasses().photons.getBounce().read<gpu::BouncePhoton>(bounced)) {
         EXPECT_EQ(p.positionDistance.w, 0.0f);
         const float depth = glm::dot(glm::vec3(p.positionDistance), axis);
         nearest = std::min(nearest, depth);
@@ -842,18 +842,18 @@ glm::dvec3 sumClosedBoxPower(float intensity, uint32_t photons, float importance
     settings.set("seed", seed, "test");
     FrameRunner runner(scene, settings, gl::TimingMethod::CpuFinish);
     runner.renderFrame();
-    const uint32_t emitted = countPhotons(runner.getEmissionGrids());
+    const uint32_t emitted = countPhotons(runner.getPasses().emit.getGrids());
     if (reference) {
         *reference = computeReference(runner, scene, seed, gpu::kRngSobol); // the default
         EXPECT_EQ(reference->photons.size(), emitted) << "every texel sees the box";
         const Comparison c = compareBounceBuffer(runner, *reference, "closed box");
         EXPECT_EQ(c.gpuCount, emitted);
     }
-    const uint32_t bounced = runner.readPhotonCounts().bounced;
+    const uint32_t bounced = readPhotonCounts(runner).bounced;
     EXPECT_EQ(bounced, emitted);
     glm::dvec3 sum(0.0);
     for (const gpu::BouncePhoton& p :
-         runner.getPhotonBuffers().getBounce().read<gpu::BouncePhoton>(bounced)) {
+         runner.getPasses().photons.getBounce().read<gpu::BouncePhoton>(bounced)) {
         sum += glm::dvec3(p.power);
     }
     return sum;
@@ -903,8 +903,8 @@ TEST_F(PhotonEmitTest, ImportanceKeepsEmittedPowerInExpectation) {
 // Per light view and map texel, the probability the frame's tables give it (marginal times
 // conditional; each view's sum to 1).
 std::vector<double> readTexelProbabilities(const FrameRunner& runner) {
-    const size_t views = runner.getGpuScene().getLightCameras().size();
-    const std::vector<float> cdf = runner.getImportance().getCdf().read<float>(
+    const size_t views = runner.getPasses().scene.getLightCameras().size();
+    const std::vector<float> cdf = runner.getPasses().importance.getCdf().read<float>(
         views * (gpu::kImportanceTexels + gpu::kImportanceSize));
     std::vector<double> p(views * gpu::kImportanceTexels);
     const auto step = [&cdf](size_t at, bool first) {
@@ -1030,7 +1030,7 @@ TEST_F(PhotonEmitTest, UnlitViewAimsPhotonsTwoBouncesBack) {
     // View 0 is the sun's scene-wide view, the one that emits, looking straight down: a texel's
     // centre taken back through it gives the x of the ground it aims at.
     const glm::mat4 worldFromClip =
-        glm::inverse(runner.getGpuScene().getLightCameras()[0].getClipFromWorld());
+        glm::inverse(runner.getPasses().scene.getLightCameras()[0].getClipFromWorld());
     size_t nonzero = 0;
     double largest = 0.0;
     double beside = 0.0; // the mass on texels beyond the table's edge (x 2.2), where the ground is

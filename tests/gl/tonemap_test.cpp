@@ -71,10 +71,10 @@ TEST_F(TonemapTest, ThesisOperatorKeepsTheHueOfSaturatedColours) {
 // rendered by `runner` after the plane's emission changed.
 float renderWhite(FrameRunner& runner, Scene& scene, float radiance, double timeStepS) {
     scene.materials[0].emission = glm::vec3(radiance);
-    runner.rebuildScene();
-    runner.setTimeStep(timeStepS);
+    runner.updateScene(SceneChange::AddedOrRemoved);
+    runner.setPresentation({.timeStepS = timeStepS});
     runner.renderFrame();
-    return runner.readLuminanceMax();
+    return runner.getPasses().tonemap.readLuminanceMax();
 }
 
 Scene makeGlowingPlane() {

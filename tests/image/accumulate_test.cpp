@@ -63,10 +63,10 @@ TEST_F(AccumulateTest, StillFramesAverageTheirSeedsAndOffsets) {
     Image firstDirect;
     for (int f = 0; f < kFrames; ++f) {
         accumulating.renderFrame();
-        const Image frame = readTextureImage(accumulating.getFrameLight(Aov::Indirect));
-        const Image direct = readTextureImage(accumulating.getFrameLight(Aov::Direct));
+        const Image frame = readTextureImage(accumulating.getPasses().upsample.getOutput());
+        const Image direct = readTextureImage(accumulating.getPasses().direct.getOutput());
         const std::vector<glm::vec4> coverage =
-            readTextureTopDown(accumulating.getFrameLight(Aov::Direct));
+            readTextureTopDown(accumulating.getPasses().direct.getOutput());
         if (f == 0) {
             first = frame;
             firstDirect = direct;
@@ -88,7 +88,7 @@ TEST_F(AccumulateTest, StillFramesAverageTheirSeedsAndOffsets) {
     EXPECT_GT(partlySeen, 5);
     const Image accumulated = readTextureImage(accumulating.getAov(Aov::Indirect));
     const Image accumulatedDirect = readTextureImage(accumulating.getAov(Aov::Direct));
-    EXPECT_EQ(accumulating.getAccumulatedFrames(), uint32_t(kFrames));
+    EXPECT_EQ(accumulating.getPasses().accumulate.getAccumulatedFrames(), uint32_t(kFrames));
     // Only float rounding of the running mean differs from the plain mean.
     EXPECT_LT(computeMaxRelativeDifference(accumulated, mean), 1e-4);
     EXPECT_LT(computeMaxRelativeDifference(accumulatedDirect, meanDirect), 1e-4);
@@ -103,7 +103,7 @@ TEST_F(AccumulateTest, StillFramesAverageTheirSeedsAndOffsets) {
     // The history is full: the image holds, to the last bit, and stays at kFrames frames.
     const Image held = renderIndirect(accumulating, 2);
     EXPECT_EQ(held.pixels, accumulated.pixels);
-    EXPECT_EQ(accumulating.getAccumulatedFrames(), uint32_t(kFrames));
+    EXPECT_EQ(accumulating.getPasses().accumulate.getAccumulatedFrames(), uint32_t(kFrames));
 }
 
 // The moving cube's room at kSize: the cube in front of the back wall, so that a move uncovers
@@ -120,9 +120,10 @@ struct HistoryPixels {
 
 HistoryPixels readHistory(const FrameRunner& runner) {
     HistoryPixels h;
-    for (const glm::vec4& t : readTextureTopDown(runner.getHistoryLength()))
+    for (const glm::vec4& t : readTextureTopDown(runner.getPasses().accumulate.getHistoryLength()))
         h.length.push_back(t.x);
-    for (const glm::vec4& t : readTextureTopDown(runner.getViewerGBuffer().getChannel("position")))
+    for (const glm::vec4& t :
+         readTextureTopDown(runner.getPasses().gbuffer.getGBuffer().getChannel("position")))
         h.surface.push_back(int(t.w + 0.5f));
     return h;
 }
@@ -138,12 +139,13 @@ TEST_F(AccumulateTest, CameraMoveReprojectsTheIndirectHistory) {
     scene.camera.position += step;
     scene.camera.target += step;
     const Image moved = renderIndirect(runner, 1);
-    const Image own = readTextureImage(runner.getFrameLight(Aov::Indirect));
+    const Image own = readTextureImage(runner.getPasses().upsample.getOutput());
     const HistoryPixels history = readHistory(runner);
-    EXPECT_EQ(runner.getAccumulatedFrames(), 1u); // the still view's count starts anew
+    EXPECT_EQ(runner.getPasses().accumulate.getAccumulatedFrames(),
+              1u); // the still view's count starts anew
     // The direct light starts anew too (shadows move with objects; a still camera refines it).
     EXPECT_EQ(readTextureImage(runner.getAov(Aov::Direct)).pixels,
-              readTextureImage(runner.getFrameLight(Aov::Direct)).pixels);
+              readTextureImage(runner.getPasses().direct.getOutput()).pixels);
     int kept = 0;
     int uncovered = 0;
     int surfaces = 0;
@@ -198,7 +200,7 @@ TEST_F(AccumulateTest, MovingObjectKeepsItsHistoryWhereItsReprojectionHolds) {
         scene.instances[cube].worldFromObject;
     runner.updateScene();
     const Image moved = renderIndirect(runner, 1);
-    const Image own = readTextureImage(runner.getFrameLight(Aov::Indirect));
+    const Image own = readTextureImage(runner.getPasses().upsample.getOutput());
     const HistoryPixels after = readHistory(runner);
     const int cubeSurface = int(cube) + 1;
     // Hidden by the cube in the last frame, it and its neighbours (the history's four pixels
@@ -265,8 +267,10 @@ TEST_F(AccumulateTest, LightSwitchLeavesNoStaleLight) {
     scene.lights[0].position.x += 0.05f;
     runner.updateScene();
     renderIndirect(runner, 1);
-    const std::vector<glm::vec4> lengths = readTextureTopDown(runner.getHistoryLength());
-    const std::vector<glm::vec4> coverage = readTextureTopDown(runner.getFrameLight(Aov::Direct));
+    const std::vector<glm::vec4> lengths =
+        readTextureTopDown(runner.getPasses().accumulate.getHistoryLength());
+    const std::vector<glm::vec4> coverage =
+        readTextureTopDown(runner.getPasses().direct.getOutput());
     int surfaces = 0;
     for (size_t i = 0; i < lengths.size(); ++i) {
         const bool surface = coverage[i].w > 0.5f;
@@ -368,7 +372,7 @@ TEST_F(AccumulateTest, LightCamerasMoveInsideATexelSoShadowEdgesConverge) {
         FrameRunner runner(scene, s, gl::TimingMethod::CpuFinish);
         for (int f = 0; f < frames; ++f) {
             runner.renderFrame();
-            if (f == 0 && first) *first = readTextureImage(runner.getFrameLight(Aov::Direct));
+            if (f == 0 && first) *first = readTextureImage(runner.getPasses().direct.getOutput());
         }
         return readTextureImage(runner.getAov(Aov::Direct));
     };

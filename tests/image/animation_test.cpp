@@ -134,11 +134,11 @@ TEST_F(AnimationRenderTest, PhotonTraceUsesTheMovedBvh) {
     Scene scene = parseScene(doc, "lid.json", ".");
     FrameRunner runner(scene, makeSettings(32, 32, 4000, 1), gl::TimingMethod::CpuFinish);
     runner.renderFrame();
-    const PhotonCounts below = runner.readPhotonCounts();
+    const PhotonCounts below = readPhotonCounts(runner);
     scene.update(1.0); // the lid at y = 2
     runner.updateScene();
     runner.renderFrame();
-    const PhotonCounts above = runner.readPhotonCounts();
+    const PhotonCounts above = readPhotonCounts(runner);
 
     ASSERT_GT(below.bounced, 0u);
     EXPECT_EQ(below.stored, 0u); // nothing above the floor to land on

@@ -36,7 +36,7 @@ CausticsFrame renderCaustics(const std::string& resolution, int denoise) {
     FrameRunner runner(scene, s, gl::TimingMethod::CpuFinish);
     runner.renderFrame();
     return {readTextureImage(runner.getAov(Aov::Indirect)),
-            readTextureImage(runner.getViewerGBuffer().getChannel("normal"))};
+            readTextureImage(runner.getPasses().gbuffer.getGBuffer().getChannel("normal"))};
 }
 
 float sumChannels(const glm::vec3& c) {

@@ -69,7 +69,7 @@ TEST_F(CourtyardTest, SunShadowsAreFittedToWhatTheRoomViewSees) {
         s.set("shadow_map_size", shadowMap, "test");
         FrameRunner runner(scene, s, gl::TimingMethod::CpuFinish);
         runner.renderFrame();
-        const std::vector<LightCamera>& cams = runner.getGpuScene().getLightCameras();
+        const std::vector<LightCamera>& cams = runner.getPasses().scene.getLightCameras();
         EXPECT_EQ(cams.size(), 3u); // sun, spot, the sun's fitted view
         if (cams.size() == 3u) {
             EXPECT_TRUE(cams[2].isShadowOnly);
@@ -96,7 +96,7 @@ TEST_F(CourtyardTest, ImportanceAimsPhotonsIntoTheRoom) {
     for (int k = 0; k < 2; ++k) {
         FrameRunner runner(scene, makeSettings(scene, shares[k]), gl::TimingMethod::CpuFinish);
         runner.renderFrame();
-        const PhotonCounts counts = runner.readPhotonCounts();
+        const PhotonCounts counts = readPhotonCounts(runner);
         inView[k] = counts.inView;
         // The per-light counts (sun, spot) add up to the totals the GPU counted on its own.
         ASSERT_EQ(counts.perLight.size(), 2u);

@@ -36,7 +36,7 @@ struct FrameImages {
 FrameImages renderFrameImages(const Scene& scene, const Settings& settings) {
     FrameRunner runner(scene, settings, gl::TimingMethod::CpuFinish);
     runner.renderFrame();
-    const GBuffer& g = runner.getViewerGBuffer();
+    const GBuffer& g = runner.getPasses().gbuffer.getGBuffer();
     return {readTextureImage(runner.getAov(Aov::Direct)),
             readTextureImage(runner.getAov(Aov::Indirect)),
             readTextureImage(runner.getAov(Aov::Total)),

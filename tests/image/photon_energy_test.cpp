@@ -71,11 +71,11 @@ TEST_F(PhotonEnergyTest, StoredPowerIsLightPowerTimesGeometricSeries) {
             settings.set("seed", 3, "test");
             FrameRunner runner(scene, settings, gl::TimingMethod::CpuFinish);
             runner.renderFrame();
-            const PhotonCounts counts = runner.readPhotonCounts();
+            const PhotonCounts counts = readPhotonCounts(runner);
             ASSERT_EQ(counts.overflow, 0u);
             ASSERT_GT(counts.stored, 0u);
             const auto photons =
-                runner.getPhotonBuffers().getResult().read<gpu::ResultPhoton>(counts.stored);
+                runner.getPasses().photons.getResult().read<gpu::ResultPhoton>(counts.stored);
             glm::dvec3 stored(0.0);
             for (const gpu::ResultPhoton& p : photons)
                 stored += glm::dvec3(glm::vec3(p.power));
@@ -162,8 +162,9 @@ TEST_P(SplatShapeEnergyTest, OneSplatOnAPlaneIntegratesToBrdfTimesPower) {
     buffers.getSplatDraws().upload(0, sizeof(draw), draw);
 
     const PhotonDensityPass density(
-        buffers, runner.getViewerGBuffer()); // travel radii: the splat reads none of its buffers
-    SplatPass splat(runner.getViewerGBuffer(), buffers, density);
+        buffers, runner.getPasses()
+                     .gbuffer.getGBuffer()); // travel radii: the splat reads none of its buffers
+    SplatPass splat(runner.getPasses().gbuffer.getGBuffer(), buffers, density);
     splat.resize(kSize, kSize);
     splat.execute(runner.getFrameInputs());
     const std::vector<glm::vec4> radiance = splat.getOutput().readRgba();

@@ -155,8 +155,8 @@ TEST_F(PostTest, OffIsBitIdenticalAndRunsNoPass) {
             << "AOV " << int(aov);
     }
     b.waitForTimings();
-    ASSERT_FALSE(b.getLastTimings().empty());
-    for (const PassTiming& t : b.getLastTimings()) {
+    ASSERT_FALSE(b.getTimings().passes.empty());
+    for (const PassTiming& t : b.getTimings().passes) {
         EXPECT_NE(t.name, "motion_blur");
         EXPECT_NE(t.name, "depth_blur");
         EXPECT_NE(t.name, "bloom");
@@ -168,7 +168,8 @@ TEST_F(PostTest, OffIsBitIdenticalAndRunsNoPass) {
     c.renderFrame();
     const Image direct = readTextureImage(c.getAov(Aov::Direct));
     const Image indirect = readTextureImage(c.getAov(Aov::Indirect));
-    const Image emission = readTextureImage(c.getViewerGBuffer().getChannel("emission"));
+    const Image emission =
+        readTextureImage(c.getPasses().gbuffer.getGBuffer().getChannel("emission"));
     Image composed(direct.width, direct.height);
     for (size_t i = 0; i < composed.pixels.size(); ++i)
         composed.pixels[i] = (direct.pixels[i] + indirect.pixels[i]) + emission.pixels[i];
@@ -195,7 +196,7 @@ TEST_F(PostTest, EachOnChangesTheTotalOnlyAndIsTimed) {
         FrameRunner runner(scene, s, gl::TimingMethod::CpuFinish);
         runner.renderFrame();
         runner.waitForTimings();
-        const auto& timings = runner.getLastTimings();
+        const auto& timings = runner.getTimings().passes;
         EXPECT_TRUE(std::any_of(timings.begin(), timings.end(), [&](const PassTiming& t) {
             return t.name == e.pass;
         })) << e.pass;
@@ -331,7 +332,8 @@ TEST_F(PostTest, MotionBlurSmearsAlongTheMotionOnlyAndKeepsEnergy) {
     EXPECT_NEAR(computeEnergyRatio(after, before), 1.0, kEnergyTolerance);
     // The velocity channel: the square's motion in pixels, x right, y up.
     const double expectedPx = kMoveM / kDepthM * getPixelsPerRadian();
-    const Image velocity = readTextureImage(runner.getViewerGBuffer().getChannel("velocity"));
+    const Image velocity =
+        readTextureImage(runner.getPasses().gbuffer.getGBuffer().getChannel("velocity"));
     const glm::vec3 v = velocity.at(kSize / 2 + 2, kSize / 2);
     std::printf("motion blur: velocity %.3f %.3f px (expected %.3f 0)\n", double(v.x), double(v.y),
                 expectedPx);
@@ -382,7 +384,8 @@ TEST_F(PostTest, VelocityIsDrawnOnlyForItsReaders) {
             glm::translate(glm::mat4(1.0f), glm::vec3(xM, 0.0f, -2.0f));
         runner.updateScene();
         runner.renderFrame();
-        const Image velocity = readTextureImage(runner.getViewerGBuffer().getChannel("velocity"));
+        const Image velocity =
+            readTextureImage(runner.getPasses().gbuffer.getGBuffer().getChannel("velocity"));
         float largest = 0.0f;
         for (const glm::vec3& v : velocity.pixels)
             largest = std::max(largest, v.x);
@@ -392,9 +395,9 @@ TEST_F(PostTest, VelocityIsDrawnOnlyForItsReaders) {
     // Motion blur off, nothing showing the channel: it is left out and reads zero.
     EXPECT_EQ(moveAndMeasure(0.15f), 0.0f);
     // Kept (the viewer's debug view), the same motion is there: 11.6 px to the right.
-    runner.setKeepVelocity(true);
+    runner.setPresentation({.keepVelocity = true});
     EXPECT_GT(moveAndMeasure(0.45f), 10.0f);
-    runner.setKeepVelocity(false);
+    runner.setPresentation({.keepVelocity = false});
     EXPECT_EQ(moveAndMeasure(0.75f), 0.0f); // cleared when it leaves
 }
 
@@ -404,10 +407,12 @@ TEST_F(PostTest, AStillViewHasNoVelocityWhileAccumulating) {
     Settings s = makeSettings();
     s.set("accumulate", 4, "test");
     FrameRunner runner(scene, s, gl::TimingMethod::CpuFinish);
-    runner.setKeepVelocity(true); // drawn without motion blur (else it holds zero anyway)
+    runner.setPresentation(
+        {.keepVelocity = true}); // drawn without motion blur (else it holds zero anyway)
     for (int frame = 0; frame < 3; ++frame) {
         runner.renderFrame();
-        const Image velocity = readTextureImage(runner.getViewerGBuffer().getChannel("velocity"));
+        const Image velocity =
+            readTextureImage(runner.getPasses().gbuffer.getGBuffer().getChannel("velocity"));
         float largest = 0.0f;
         for (const glm::vec3& v : velocity.pixels)
             largest = std::max({largest, std::abs(v.x), std::abs(v.y)});

@@ -155,7 +155,7 @@ TEST_F(ReferenceTest, BorrowedGpuSceneGivesTheSameImage) {
     settings.set("bounces", 3, "test");
     const Image owned = renderReference(scene, settings, 4, 3);
     FrameRunner runner(scene, settings, gl::TimingMethod::CpuFinish);
-    ReferencePass borrowing(scene, runner.getGpuScene(), settings);
+    ReferencePass borrowing(scene, runner.getPasses().scene, settings);
     for (int s = 0; s < 4; ++s)
         borrowing.addSample();
     const Image borrowed = borrowing.readMean();

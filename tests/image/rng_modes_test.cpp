@@ -69,7 +69,7 @@ TEST_F(RngModesTest, ImportanceMapsStayWhileOnlyObjectsMove) {
     s.set("shadow_map_size", 256, "test");
     FrameRunner runner(scene, s, gl::TimingMethod::CpuFinish);
     auto readMaps = [&runner] {
-        const gl::Buffer& cdf = runner.getImportance().getCdf();
+        const gl::Buffer& cdf = runner.getPasses().importance.getCdf();
         return cdf.read<float>(cdf.getSize() / sizeof(float));
     };
     runner.renderFrame();

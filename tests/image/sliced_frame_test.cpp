@@ -66,10 +66,10 @@ TEST_F(SlicedFrameTest, SlicesGiveTheWholeFramesImage) {
             }
             // The passes' rows add their slices up: one row each, as a whole frame has.
             std::vector<std::string> names;
-            for (const PassTiming& t : sliced.getLastTimings())
+            for (const PassTiming& t : sliced.getTimings().passes)
                 names.push_back(t.name);
             std::vector<std::string> wholeNames;
-            for (const PassTiming& t : whole.getLastTimings())
+            for (const PassTiming& t : whole.getTimings().passes)
                 wholeNames.push_back(t.name);
             EXPECT_EQ(names, wholeNames) << file << " " << mode;
         }
@@ -81,7 +81,7 @@ TEST_F(SlicedFrameTest, SlicesFollowTheLastFramesPassTimes) {
     FrameRunner runner(scene, makeSettings(scene, "density"), gl::TimingMethod::CpuFinish);
     runner.renderFrame(); // timed: the slices now follow the splat's time
     double splatMs = 0.0;
-    for (const PassTiming& t : runner.getLastTimings()) {
+    for (const PassTiming& t : runner.getTimings().passes) {
         if (t.name == "splat") splatMs = t.ms;
     }
     ASSERT_GT(splatMs, 0.0);
@@ -104,16 +104,16 @@ TEST_F(SlicedFrameTest, EditsWaitForTheNextFrameAndARebuildDropsIt) {
     wider.set("width", 2 * kSize, "test");
     runner.setSettings(wider);
     // The frame in progress keeps its size; the next frame's settings are the new ones.
-    EXPECT_EQ(runner.getWidth(), kSize);
+    EXPECT_EQ(runner.getFrameSettings().width, kSize);
     EXPECT_EQ(runner.getSettings().getInt("width"), 2 * kSize);
     while (!runner.continueFrame(0.0)) {
     }
-    EXPECT_EQ(runner.getWidth(), kSize);
+    EXPECT_EQ(runner.getFrameSettings().width, kSize);
     runner.beginFrame(1.0);
-    EXPECT_EQ(runner.getWidth(), 2 * kSize);
+    EXPECT_EQ(runner.getFrameSettings().width, 2 * kSize);
     EXPECT_TRUE(runner.isFrameInProgress());
     // Lights added or removed: the frame in progress has the old ones and ends.
-    runner.rebuildScene();
+    runner.updateScene(SceneChange::AddedOrRemoved);
     EXPECT_FALSE(runner.isFrameInProgress());
     runner.renderFrame();
     const Image total = readTextureImage(runner.getAov(Aov::Total));

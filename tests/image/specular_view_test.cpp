@@ -204,7 +204,8 @@ TEST_F(SpecularViewTest, GlossyReflectionIsBlurredByItsLobe) {
     FrameRunner runner(scene, settings, gl::TimingMethod::CpuFinish);
     runner.renderFrame();
     const Image ispm = readTextureImage(runner.getAov(Aov::Total));
-    const Image specular = readTextureImage(runner.getViewerGBuffer().getChannel("specular"));
+    const Image specular =
+        readTextureImage(runner.getPasses().gbuffer.getGBuffer().getChannel("specular"));
     PixelMask glossy(specular.pixels.size(), 0);
     for (size_t i = 0; i < glossy.size(); ++i)
         glossy[i] = specular.pixels[i].x > 0.0f ? 1 : 0;
@@ -242,8 +243,9 @@ struct SpecularMasks {
 
 SpecularMasks readMasks(const FrameRunner& runner) {
     const Image transmissive =
-        readTextureImage(runner.getViewerGBuffer().getChannel("transmissive"));
-    const Image specular = readTextureImage(runner.getViewerGBuffer().getChannel("specular"));
+        readTextureImage(runner.getPasses().gbuffer.getGBuffer().getChannel("transmissive"));
+    const Image specular =
+        readTextureImage(runner.getPasses().gbuffer.getGBuffer().getChannel("specular"));
     SpecularMasks masks;
     for (size_t i = 0; i < transmissive.pixels.size(); ++i) {
         masks.glass.push_back(transmissive.pixels[i].x > 0.0f);
@@ -332,7 +334,7 @@ TEST_F(SpecularViewTest, DepthZeroOrNothingToTraceLeavesTheImageAsItWas) {
     offRunner.renderFrame();
     const Image off = readTextureImage(offRunner.getAov(Aov::Total));
     const auto hasSpecularRow = [](const FrameRunner& runner) {
-        for (const PassTiming& t : runner.getLastTimings())
+        for (const PassTiming& t : runner.getTimings().passes)
             if (t.name == "specular") return true;
         return false;
     };

@@ -50,7 +50,7 @@ SplatImages renderCornell(const std::string& resolution, int seed = 1, float rad
     FrameRunner runner(scene, s, gl::TimingMethod::CpuFinish);
     runner.renderFrame();
     return {readTextureImage(runner.getAov(Aov::Indirect)),
-            readTextureImage(runner.getViewerGBuffer().getChannel("diffuse"))};
+            readTextureImage(runner.getPasses().gbuffer.getGBuffer().getChannel("diffuse"))};
 }
 
 bool isRed(const glm::vec3& d) {
@@ -190,7 +190,8 @@ double renderBackWallThroughWindow(const std::string& resolution) {
         FrameRunner runner(scene, s, gl::TimingMethod::CpuFinish);
         runner.renderFrame();
         if (position)
-            *position = readTextureImage(runner.getViewerGBuffer().getChannel("position"));
+            *position =
+                readTextureImage(runner.getPasses().gbuffer.getGBuffer().getChannel("position"));
         return readTextureImage(runner.getAov(Aov::Indirect));
     };
     Image position;

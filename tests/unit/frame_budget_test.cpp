@@ -1,7 +1,6 @@
 // frame_ms_target's controller (render/frame_budget.h) on simulated frame costs: it settles near
 // the target without oscillating, leaves small differences alone, steps at most 2x and stays in
 // range.
-#include "render/frame.h"
 #include "render/frame_budget.h"
 
 #include <gtest/gtest.h>
@@ -71,6 +70,42 @@ TEST(FrameBudget, DeadBandStepsAndRange) {
     EXPECT_EQ(adaptPhotonBudget(1500, cost, 5.0, kMaxPhotons), kMinAdaptedPhotons);
     EXPECT_EQ(adaptPhotonBudget(60000, cost, 1000.0, 100000), 100000);   // the setting's maximum
     EXPECT_EQ(adaptPhotonBudget(50000, cost, 60.0, kMaxPhotons), 25000); // (60 - 10) / 100
+}
+
+TEST(FrameBudget, MeasuresThreeFramesThenSteps) {
+    // 10 ms fixed and 100 ms of photons against a 60 ms target: (60 - 10) / 100, half the budget.
+    const std::vector<PassTiming> frame = {{"gbuffer", 10.0}, {"splat", 100.0}};
+    FrameBudget budget({"splat"}, kMaxPhotons);
+    budget.restart(50000);
+    EXPECT_FALSE(budget.recordFrame(frame, 60.0, false, 0));
+    EXPECT_FALSE(budget.recordFrame(frame, 60.0, false, 0));
+    EXPECT_TRUE(budget.recordFrame(frame, 60.0, false, 0));
+    EXPECT_EQ(budget.getPhotons(), 25000);
+    // Two frames still in flight measured the old budget: they are skipped, then three more.
+    budget.restart(50000);
+    for (int f = 0; f < 2; ++f)
+        budget.recordFrame(frame, 60.0, false, 0);
+    EXPECT_TRUE(budget.recordFrame(frame, 60.0, false, 2));
+    for (int f = 0; f < 4; ++f)
+        EXPECT_FALSE(budget.recordFrame(frame, 60.0, false, 0)) << f;
+    EXPECT_TRUE(budget.recordFrame(frame, 60.0, false, 0));
+    EXPECT_EQ(budget.getPhotons(), 12500);
+}
+
+TEST(FrameBudget, ConvergingOrOffDropsTheMeasurements) {
+    const std::vector<PassTiming> frame = {{"gbuffer", 10.0}, {"splat", 100.0}};
+    FrameBudget budget({"splat"}, kMaxPhotons);
+    budget.restart(50000);
+    budget.recordFrame(frame, 60.0, false, 0);
+    budget.recordFrame(frame, 60.0, false, 0);
+    EXPECT_FALSE(budget.recordFrame(frame, 60.0, true, 0)); // a still view converging
+    EXPECT_FALSE(budget.recordFrame(frame, 60.0, false, 0));
+    EXPECT_FALSE(budget.recordFrame(frame, 0.0, false, 0)); // off
+    EXPECT_EQ(budget.getPhotons(), 50000);
+    budget.dropMeasurements();
+    budget.recordFrame(frame, 60.0, false, 0);
+    budget.recordFrame(frame, 60.0, false, 0);
+    EXPECT_TRUE(budget.recordFrame(frame, 60.0, false, 0));
 }
 
 } // namespace
