@@ -146,7 +146,8 @@ void Viewer::drawFrame() {
     // Points are placed with the viewer camera: not over a light camera's image.
     if (view.source != DebugView::Source::LightGBuffer &&
         view.source != DebugView::Source::LightImportance) {
-        gl::bindDefaultFramebuffer(mRunner->getFrameSettings().width, mRunner->getFrameSettings().height);
+        gl::bindDefaultFramebuffer(mRunner->getFrameSettings().width,
+                                   mRunner->getFrameSettings().height);
         mPointsDrawer.draw(*mRunner, mPanels.getPoints(), mPanels.getPointsColour());
     }
     gl::bindDefaultFramebuffer(mWindowWidth, mWindowHeight);

@@ -163,8 +163,8 @@ void PanelColumn::drawViewSection(const PanelContext& context) {
     if (current.source == DebugView::Source::Reference) {
         // The region stays black without a reference: say why here, not only under the
         // (collapsed) Reference header.
-        const std::string missing =
-            context.reference.describeMissing(runner.getFrameSettings().width, runner.getFrameSettings().height);
+        const std::string missing = context.reference.describeMissing(
+            runner.getFrameSettings().width, runner.getFrameSettings().height);
         if (!missing.empty()) drawMessageText(missing, true);
     }
     int points = static_cast<int>(mPoints);
