@@ -8,6 +8,7 @@
 #include "render/frame.h"
 #include "render/frame_budget.h"
 #include "scene/scene_loader.h"
+#include "support/test_settings.h"
 
 #include <string>
 
@@ -15,14 +16,13 @@ namespace ispm::test {
 namespace {
 
 Settings makeSettings(const Scene& scene, double targetMs, int accumulate) {
-    Settings s = scene.settings;
-    s.set("width", 32, "test");
-    s.set("height", 32, "test");
-    s.set("photons", 8000, "test");
-    s.set("bounces", 1, "test");
-    s.set("shadow_map_size", 128, "test");
-    s.set("frame_ms_target", targetMs, "test");
-    s.set("accumulate", accumulate, "test");
+    Settings s = withSettings(scene.settings, {{"width", 32},
+                                               {"height", 32},
+                                               {"photons", 8000},
+                                               {"bounces", 1},
+                                               {"shadow_map_size", 128},
+                                               {"frame_ms_target", targetMs},
+                                               {"accumulate", accumulate}});
     return s;
 }
 
@@ -59,12 +59,12 @@ TEST_F(FrameBudgetTest, BudgetFollowsTheTarget) {
 TEST_F(FrameBudgetTest, BudgetMovesTheDerivedLightViewsNotTheBvh) {
     const Scene scene = loadScene(std::string(ISPM_ASSET_DIR) + "/scenes/cornell.json");
     Settings s = scene.settings; // shadow_map_size derived
-    s.set("width", 32, "test");
-    s.set("height", 32, "test");
-    s.set("photons", 8000, "test");
-    s.set("bounces", 1, "test");
-    s.set("frame_ms_target", 1e6, "test");
-    s.setEnum("shadows", "ray", "test");
+    s = withSettings(s, {{"width", 32},
+                         {"height", 32},
+                         {"photons", 8000},
+                         {"bounces", 1},
+                         {"frame_ms_target", 1e6},
+                         {"shadows", "ray"}});
     FrameRunner runner(scene, s, gl::TimingMethod::CpuFinish);
     runner.renderFrame();
     // 8,000 photons: twice sqrt(photons) texels a side, 256 at least.

@@ -8,6 +8,7 @@
 #include "render/frame.h"
 #include "render/photon_density_pass.h"
 #include "scene/mesh_builder.h"
+#include "support/test_settings.h"
 
 #include <shared/photon_data.h>
 #include <shared/splat_clip.h>
@@ -65,17 +66,16 @@ struct DensityRun {
 DensityRun runDensity(const Scene& scene, std::vector<gpu::ResultPhoton> photons,
                       ProgressiveStep progressive = {}, std::optional<float> travelM = std::nullopt,
                       float merge = 0.0f, uint32_t earlierResults = 0) {
-    Settings settings;
-    settings.set("splat_merge", merge, "test");
-    settings.set("width", 32, "test");
-    settings.set("height", 32, "test");
-    settings.set("photons", 1000, "test");
-    settings.set("bounces", 1, "test");
-    settings.set("splat_neighbours", kNeighbours, "test");
+    Settings settings = makeTestSettings({{"splat_merge", merge},
+                                          {"width", 32},
+                                          {"height", 32},
+                                          {"photons", 1000},
+                                          {"bounces", 1},
+                                          {"splat_neighbours", kNeighbours}});
     if (travelM) {
-        settings.setEnum("radius_mode", "travel", "test");
-        settings.set("radius_min", *travelM, "test");
-        settings.set("radius_max", *travelM, "test");
+        settings = withSettings(
+            settings,
+            {{"radius_mode", "travel"}, {"radius_min", *travelM}, {"radius_max", *travelM}});
     }
     FrameRunner runner(scene, settings, gl::TimingMethod::CpuFinish);
     runner.renderFrame();

@@ -12,6 +12,7 @@
 #include "core/strings.h"
 #include "render/frame.h"
 #include "scene/scene.h"
+#include "support/test_settings.h"
 
 #include <shared/importance_data.h>
 #include <shared/photon_data.h>
@@ -159,13 +160,12 @@ Scene makeClosedBoxScene(const Light& light) {
 }
 
 Settings makeSettings(uint32_t photons) {
-    Settings settings;
-    settings.set("width", kImageSize, "test");
-    settings.set("height", kImageSize, "test");
-    settings.set("shadow_map_size", kLightResolution, "test");
-    settings.set("photons", photons, "test");
-    settings.set("bounces", 1, "test");
-    settings.set("seed", kSeed, "test");
+    Settings settings = makeTestSettings({{"width", kImageSize},
+                                          {"height", kImageSize},
+                                          {"shadow_map_size", kLightResolution},
+                                          {"photons", photons},
+                                          {"bounces", 1},
+                                          {"seed", kSeed}});
     return settings;
 }
 
@@ -745,9 +745,10 @@ class PhotonEmitTest : public GlTest {
                                          uint32_t firstBounce = gpu::kFirstBounceRoulette) {
         std::array<uint32_t, 5> events{};
         for (uint32_t photons : kBudgets) {
-            Settings settings = makeSettings(photons);
-            settings.setEnum("rng_generator", std::string(kRngGeneratorChoices[rngMode]), "test");
-            settings.setEnum("first_bounce", std::string(kFirstBounceChoices[firstBounce]), "test");
+            Settings settings =
+                withSettings(makeSettings(photons),
+                             {{"rng_generator", std::string(kRngGeneratorChoices[rngMode])},
+                              {"first_bounce", std::string(kFirstBounceChoices[firstBounce])}});
             FrameRunner runner(scene, settings, gl::TimingMethod::CpuFinish);
             runner.renderFrame();
             const Reference ref = computeReference(runner, scene, kSeed, rngMode, firstBounce);
@@ -837,9 +838,8 @@ TEST_F(PhotonEmitTest, SunTravelStartsAtTheFirstHit) {
 glm::dvec3 sumClosedBoxPower(float intensity, uint32_t photons, float importance, uint32_t seed,
                              Reference* reference) {
     const Scene scene = makeClosedBoxScene(makePoint({0.2f, -0.1f, 0.3f}, glm::vec3(intensity)));
-    Settings settings = makeSettings(photons);
-    settings.set("importance", importance, "test");
-    settings.set("seed", seed, "test");
+    Settings settings =
+        withSettings(makeSettings(photons), {{"importance", importance}, {"seed", seed}});
     FrameRunner runner(scene, settings, gl::TimingMethod::CpuFinish);
     runner.renderFrame();
     const uint32_t emitted = countPhotons(runner.getPasses().emit.getGrids());
@@ -934,13 +934,12 @@ double computeMapDistance(const std::vector<double>& a, const std::vector<double
 // Settings of the importance history tests: a 64 x 64 view of the closed box, only the aimed
 // share (so the maps are the gathered importance alone), `samples` gather samples.
 Settings makeHistorySettings(int samples, int frames, uint32_t seed) {
-    Settings settings = makeSettings(6000);
-    settings.set("width", 64, "test");
-    settings.set("height", 64, "test");
-    settings.set("importance", 1.0, "test");
-    settings.set("importance_samples", samples, "test");
-    settings.set("importance_frames", frames, "test");
-    settings.set("seed", seed, "test");
+    Settings settings = withSettings(makeSettings(6000), {{"width", 64},
+                                                          {"height", 64},
+                                                          {"importance", 1.0},
+                                                          {"importance_samples", samples},
+                                                          {"importance_frames", frames},
+                                                          {"seed", seed}});
     return settings;
 }
 
@@ -1018,10 +1017,8 @@ TEST_F(PhotonEmitTest, UnlitViewAimsPhotonsTwoBouncesBack) {
     // importance on the ground beside the table. From the floor's first bounce alone it would
     // gather none and stay uniform (the floor's share takes everything).
     const Scene scene = makeShadedFloorScene();
-    Settings settings = makeSettings(4000);
-    settings.set("width", 64, "test");
-    settings.set("height", 64, "test");
-    settings.set("importance", 1.0, "test");
+    Settings settings =
+        withSettings(makeSettings(4000), {{"width", 64}, {"height", 64}, {"importance", 1.0}});
     // The sun's visibility by ray, exact: a shadow map's bias would light the table's underside.
     settings.setEnum("shadows", "ray", "test");
     FrameRunner runner(scene, settings, gl::TimingMethod::CpuFinish);

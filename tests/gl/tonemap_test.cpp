@@ -8,6 +8,7 @@
 
 #include "render/frame.h"
 #include "render/readback.h"
+#include "support/test_settings.h"
 
 #include <cmath>
 
@@ -23,13 +24,12 @@ glm::vec3 renderDisplay(glm::vec3 radiance, const char* tonemap) {
     scene.materials[0].emission = radiance;
     scene.camera.position = {0.0f, 1.0f, 0.01f};
     scene.camera.target = {0.0f, 0.0f, 0.0f};
-    Settings settings;
-    settings.set("width", kSize, "test");
-    settings.set("height", kSize, "test");
-    settings.set("bounces", 0, "test");
-    settings.set("luminance_max", 2.0, "test");
-    settings.set("gamma", 2.2, "test");
-    settings.setEnum("tonemap", tonemap, "test");
+    Settings settings = makeTestSettings({{"width", kSize},
+                                          {"height", kSize},
+                                          {"bounces", 0},
+                                          {"luminance_max", 2.0},
+                                          {"gamma", 2.2},
+                                          {"tonemap", tonemap}});
     FrameRunner runner(scene, settings, gl::TimingMethod::CpuFinish);
     runner.renderFrame();
     const std::vector<glm::vec4> texels = readTextureTopDown(runner.getAov(Aov::Display));
@@ -85,11 +85,8 @@ Scene makeGlowingPlane() {
 }
 
 Settings makeAdaptationSettings(double timeConstantS) {
-    Settings settings;
-    settings.set("width", kSize, "test");
-    settings.set("height", kSize, "test");
-    settings.set("bounces", 0, "test");
-    settings.set("eye_adaptation_s", timeConstantS, "test");
+    Settings settings = makeTestSettings(
+        {{"width", kSize}, {"height", kSize}, {"bounces", 0}, {"eye_adaptation_s", timeConstantS}});
     return settings;
 }
 

@@ -11,6 +11,7 @@
 #include "render/frame.h"
 #include "render/readback.h"
 #include "scene/scene_loader.h"
+#include "support/test_settings.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -30,14 +31,13 @@ Scene loadCornell() {
 }
 
 Settings makeSettings(const Scene& scene, int accumulate, int seed) {
-    Settings s = scene.settings;
-    s.set("width", kSize, "test");
-    s.set("height", kSize, "test");
-    s.set("photons", 4000, "test");
-    s.set("bounces", 2, "test");
-    s.set("shadow_map_size", 256, "test");
-    s.set("accumulate", accumulate, "test");
-    s.set("seed", seed, "test");
+    Settings s = withSettings(scene.settings, {{"width", kSize},
+                                               {"height", kSize},
+                                               {"photons", 4000},
+                                               {"bounces", 2},
+                                               {"shadow_map_size", 256},
+                                               {"accumulate", accumulate},
+                                               {"seed", seed}});
     return s;
 }
 
@@ -341,8 +341,7 @@ TEST_F(AccumulateTest, OneFrameWeighsTheSurfacesIndirectLightByItsCoverage) {
     // pixel's centre, covers that share alone. Adding it whole brightens every silhouette
     // against the background by (1 - coverage) of it.
     const Scene scene = loadCornellOnBackground();
-    Settings settings = makeSettings(scene, 0, 1);
-    settings.set("edge_samples", 16, "test");
+    Settings settings = withSettings(makeSettings(scene, 0, 1), {{"edge_samples", 16}});
     FrameRunner runner(scene, settings, gl::TimingMethod::CpuFinish);
     runner.renderFrame();
     const CoverageCheck check = checkCoverageMix(runner, scene);
@@ -360,15 +359,12 @@ TEST_F(AccumulateTest, LightCamerasMoveInsideATexelSoShadowEdgesConverge) {
     Scene scene = loadScene(std::string(ISPM_ASSET_DIR) + "/scenes/courtyard.json");
     selectCamera(scene, "room");
     auto render = [&scene](int shadowMap, int frames, Image* first) {
-        Settings s = scene.settings;
-        s.set("width", kSize, "test");
-        s.set("height", kSize, "test");
-        s.set("bounces", 0, "test");
-        s.set("shadow_map_size", shadowMap, "test");
+        Settings s = withSettings(
+            scene.settings,
+            {{"width", kSize}, {"height", kSize}, {"bounces", 0}, {"shadow_map_size", shadowMap}});
         // Half the default: the normal offset moves the patch's edges by a share of a texel,
         // the same in every frame, which no jitter undoes.
-        s.set("shadow_bias", 0.5f, "test");
-        s.set("accumulate", frames, "test");
+        s = withSettings(s, {{"shadow_bias", 0.5f}, {"accumulate", frames}});
         FrameRunner runner(scene, s, gl::TimingMethod::CpuFinish);
         for (int f = 0; f < frames; ++f) {
             runner.renderFrame();

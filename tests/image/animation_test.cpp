@@ -5,6 +5,7 @@
 #include "render/frame.h"
 #include "render/readback.h"
 #include "scene/scene_loader.h"
+#include "support/test_settings.h"
 
 #include <nlohmann/json.hpp>
 
@@ -18,11 +19,8 @@ namespace {
 class AnimationRenderTest : public GlTest {};
 
 Settings makeSettings(int width, int height, int photons, int bounces) {
-    Settings s;
-    s.set("width", width, "test");
-    s.set("height", height, "test");
-    s.set("photons", photons, "test");
-    s.set("bounces", bounces, "test");
+    Settings s = makeTestSettings(
+        {{"width", width}, {"height", height}, {"photons", photons}, {"bounces", bounces}});
     s.set("shadow_map_size", 256, "test"); // small: the tests look at shadows metres wide
     return s;
 }

@@ -10,6 +10,7 @@
 #include "render/frame.h"
 #include "render/readback.h"
 #include "scene/scene_loader.h"
+#include "support/test_settings.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -27,12 +28,9 @@ struct CausticsFrame {
 
 CausticsFrame renderCaustics(const std::string& resolution, int denoise) {
     const Scene scene = loadScene(std::string(ISPM_ASSET_DIR) + "/scenes/caustics.json");
-    Settings s = scene.settings;
-    s.set("width", kSize, "test");
-    s.set("height", kSize, "test");
+    Settings s = withSettings(scene.settings, {{"width", kSize}, {"height", kSize}});
     s.set("specular_depth", 0, "test"); // the splats' light alone
-    s.set("denoise", denoise, "test");
-    s.setEnum("splat_resolution", resolution, "test");
+    s = withSettings(s, {{"denoise", denoise}, {"splat_resolution", resolution}});
     FrameRunner runner(scene, s, gl::TimingMethod::CpuFinish);
     runner.renderFrame();
     return {readTextureImage(runner.getAov(Aov::Indirect)),

@@ -8,6 +8,7 @@
 #include "image/metrics.h"
 #include "render/readback.h"
 #include "scene/scene_loader.h"
+#include "support/test_settings.h"
 
 #include <cmath>
 #include <cstdio>
@@ -21,12 +22,11 @@ constexpr int kSize = 64;
 constexpr int kPhotons = 20000;
 
 Settings makeSettings(const Scene& scene, float importance) {
-    Settings s = scene.settings;
-    s.set("width", kSize, "test");
-    s.set("height", kSize, "test");
-    s.set("photons", kPhotons, "test");
-    s.set("shadow_map_size", 512, "test");
-    s.set("importance", importance, "test");
+    Settings s = withSettings(scene.settings, {{"width", kSize},
+                                               {"height", kSize},
+                                               {"photons", kPhotons},
+                                               {"shadow_map_size", 512},
+                                               {"importance", importance}});
     return s;
 }
 
@@ -64,9 +64,8 @@ TEST_F(CourtyardTest, SunShadowsAreFittedToWhatTheRoomViewSees) {
     // drawn from that.
     const Scene scene = loadCourtyard("room");
     auto renderDirect = [&scene](int shadowMap) {
-        Settings s = makeSettings(scene, 0.75f);
-        s.set("bounces", 0, "test");
-        s.set("shadow_map_size", shadowMap, "test");
+        Settings s = withSettings(makeSettings(scene, 0.75f),
+                                  {{"bounces", 0}, {"shadow_map_size", shadowMap}});
         FrameRunner runner(scene, s, gl::TimingMethod::CpuFinish);
         runner.renderFrame();
         const std::vector<LightCamera>& cams = runner.getPasses().scene.getLightCameras();

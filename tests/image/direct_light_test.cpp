@@ -7,6 +7,7 @@
 #include "render/light_cameras.h"
 #include "render/pixel_rect.h"
 #include "scene/scene_loader.h"
+#include "support/test_settings.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -28,9 +29,7 @@ TEST_F(DirectLightTest, PointLightOverDiffusePlaneMatchesClosedForm) {
     scene.camera.target = {0.3f, 0.0f, 0.2f};
     scene.camera.up = {0.0f, 0.0f, 1.0f};
     scene.camera.fovYDeg = 60.0f;
-    Settings settings;
-    settings.set("width", kSize, "test");
-    settings.set("height", kSize, "test");
+    Settings settings = makeTestSettings({{"width", kSize}, {"height", kSize}});
     const Image image = renderAov(scene, settings, Aov::Direct);
 
     int checked = 0;
@@ -85,9 +84,7 @@ TEST_F(DirectLightTest, SpotLightShadedOverItsPoolMatchesClosedForm) {
     ASSERT_TRUE(rect.has_value());
     EXPECT_LT(rect->getArea(), 0.25 * kSize * kSize);
 
-    Settings settings;
-    settings.set("width", kSize, "test");
-    settings.set("height", kSize, "test");
+    Settings settings = makeTestSettings({{"width", kSize}, {"height", kSize}});
     const Image image = renderAov(scene, settings, Aov::Direct);
     const double peak = computePlaneRadiance(kRho, kIntensity, kHeight, glm::dvec3(0.0));
     int inside = 0;
@@ -135,9 +132,7 @@ TEST_F(DirectLightTest, OccluderCastsFullShadow) {
     scene.camera.target = {0.0f, 0.0f, 0.0f};
     scene.camera.up = {0.0f, 0.0f, 1.0f};
     scene.camera.fovYDeg = 20.0f;
-    Settings settings;
-    settings.set("width", 16, "test");
-    settings.set("height", 16, "test");
+    Settings settings = makeTestSettings({{"width", 16}, {"height", 16}});
     const Image image = renderAov(scene, settings, Aov::Direct);
     for (const glm::vec3& p : image.pixels)
         EXPECT_EQ(p, glm::vec3(0.0f));
@@ -151,9 +146,7 @@ TEST_F(DirectLightTest, OccluderCastsFullShadow) {
 
 TEST_F(DirectLightTest, CornellBoxMatchesGolden) {
     const Scene scene = loadScene(std::string(ISPM_ASSET_DIR) + "/scenes/cornell.json");
-    Settings settings = scene.settings;
-    settings.set("width", 128, "test");
-    settings.set("height", 128, "test");
+    Settings settings = withSettings(scene.settings, {{"width", 128}, {"height", 128}});
     settings.set("bounces", 0, "test"); // direct light only
     // A fixed white point (about the 99th percentile of luminance the derived one picks): one
     // derived from the image would cancel a scale error of the whole image.

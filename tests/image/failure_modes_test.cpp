@@ -9,6 +9,7 @@
 #include "render/readback.h"
 #include "render/reference_pass.h"
 #include "scene/scene_loader.h"
+#include "support/test_settings.h"
 
 #include <algorithm>
 #include <cmath>
@@ -59,13 +60,13 @@ Settings makeFailureSettings(const Settings& base, int photons, int seed) {
     Settings s = base;
     // The splats as they are: these tests measure how the method fails, not how a filter hides
     // it (the derived filter would span a third of a 48 px image).
-    s.set("denoise", 0, "test");
-    s.set("width", kSize, "test");
-    s.set("height", kSize, "test");
-    s.set("bounces", 2, "test");
-    s.set("photons", photons, "test");
-    s.set("shadow_map_size", kShadowMapSize, "test");
-    s.set("seed", seed, "test");
+    s = withSettings(s, {{"denoise", 0},
+                         {"width", kSize},
+                         {"height", kSize},
+                         {"bounces", 2},
+                         {"photons", photons},
+                         {"shadow_map_size", kShadowMapSize},
+                         {"seed", seed}});
     return s;
 }
 
@@ -139,10 +140,9 @@ constexpr float kLeakFarM = 0.5f;   // farther than any splat reaches at radius_
 // (settings names) at `scale`; room A's strip and room B's far floor in `stripA`, `farB`.
 double measureThinWallLeak(const char* radiusMode, const char* splatClip, float scale,
                            double& stripA, double& farB) {
-    Settings settings = makeFailureSettings(Settings{}, kLeakPhotons, 1);
-    settings.set("radius_scale", scale, "test");
-    settings.setEnum("radius_mode", radiusMode, "test");
-    settings.setEnum("splat_clip", splatClip, "test");
+    Settings settings = withSettings(
+        makeFailureSettings(Settings{}, kLeakPhotons, 1),
+        {{"radius_scale", scale}, {"radius_mode", radiusMode}, {"splat_clip", splatClip}});
     const FrameImages a = renderFrameImages(makeTwoRooms(true), settings);
     const FrameImages b = renderFrameImages(makeTwoRooms(false), settings);
     // Shadow maps keep every bit of direct light in room A.
@@ -398,9 +398,9 @@ TEST_F(FailureModeTest, SurfaceEndsKeepTheLightAtAWallsRim) {
     double rimToMiddle[2] = {0.0, 0.0}; // surface_ends off, on
     for (int on = 0; on < 2; ++on) {
         for (int seed = 1; seed <= kSeeds; ++seed) {
-            Settings settings = makeFailureSettings(scene.settings, 50000, seed);
-            settings.setEnum("splat_clip", "off", "test");
-            settings.setEnum("surface_ends", on == 1 ? "on" : "off", "test");
+            Settings settings =
+                withSettings(makeFailureSettings(scene.settings, 50000, seed),
+                             {{"splat_clip", "off"}, {"surface_ends", on == 1 ? "on" : "off"}});
             const FrameImages f = renderFrameImages(scene, settings);
             // The face's pixels by their distance from its top or sides; the foot (a corner with
             // the yard, not an edge seen past) belongs to neither band.
@@ -455,8 +455,7 @@ TEST_F(FailureModeTest, FlickerBetweenSeeds) {
         Settings s = makeCornellSettings(scene, counts[k], 1);
         derived[k] = measureSeedFlicker(scene, s, Aov::Indirect);
         total[k] = measureSeedFlicker(scene, s, Aov::Total);
-        s.set("radius_min", kFixedRadiusM, "test");
-        s.set("radius_max", kFixedRadiusM, "test");
+        s = withSettings(s, {{"radius_min", kFixedRadiusM}, {"radius_max", kFixedRadiusM}});
         fixed[k] = measureSeedFlicker(scene, s, Aov::Indirect);
         std::printf("flicker, %d photons: indirect relMSE seed 1 vs 2 %.4f (derived radii), "
                     "%.4f (radius fixed at %.0f cm); total %.4f\n",
@@ -485,9 +484,8 @@ TEST_F(FailureModeTest, WideningStrongPhotonsSteadiesTravelRadii) {
     double energy[2] = {};
     const char* choices[2] = {"off", "on"};
     for (int k = 0; k < 2; ++k) {
-        Settings s = makeCornellSettings(scene, 10000, 1);
-        s.setEnum("radius_mode", "travel", "test");
-        s.setEnum("widen_strong", choices[k], "test");
+        Settings s = withSettings(makeCornellSettings(scene, 10000, 1),
+                                  {{"radius_mode", "travel"}, {"widen_strong", choices[k]}});
         flicker[k] = measureSeedFlicker(scene, s, Aov::Indirect);
         const FrameImages f = renderFrameImages(scene, s);
         for (const glm::vec3& p : f.indirect.pixels)
@@ -528,9 +526,8 @@ TEST_F(FailureModeTest, SparsePhotonsLeaveUncoveredPixels) {
     double darkDensity[3] = {};
     for (int r = 0; r < 2; ++r) {
         for (int k = 0; k < 3; ++k) {
-            Settings s = makeCornellSettings(scene, counts[k], 1);
-            s.setEnum("radius_mode", "travel", "test");
-            s.set("radius_scale", scales[r], "test");
+            Settings s = withSettings(makeCornellSettings(scene, counts[k], 1),
+                                      {{"radius_mode", "travel"}, {"radius_scale", scales[r]}});
             dark[r][k] = measureUncoveredFraction(scene, s);
         }
         std::printf("uncovered surface pixels, travel radii, radius_scale %.1f: %.4f (2k) %.4f "
@@ -545,8 +542,7 @@ TEST_F(FailureModeTest, SparsePhotonsLeaveUncoveredPixels) {
                 darkDensity[0], darkDensity[1], darkDensity[2]);
     Settings s = makeCornellSettings(scene, 2000, 1);
     constexpr double kFixedRadiusM = 0.03; // the derived radius at ~25k photons
-    s.set("radius_min", kFixedRadiusM, "test");
-    s.set("radius_max", kFixedRadiusM, "test");
+    s = withSettings(s, {{"radius_min", kFixedRadiusM}, {"radius_max", kFixedRadiusM}});
     const double fixed2k = measureUncoveredFraction(scene, s);
     s.set("photons", 50000, "test");
     const double fixed50k = measureUncoveredFraction(scene, s);

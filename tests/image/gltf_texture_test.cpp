@@ -9,6 +9,7 @@
 #include "support/render_support.h"
 
 #include "scene/scene_loader.h"
+#include "support/test_settings.h"
 
 #include <shared/surface_brdf.h>
 
@@ -34,11 +35,8 @@ Scene loadRoom(const CheckerRoom& room, const std::string& name) {
 }
 
 Settings makeSettings(int size, int bounces) {
-    Settings settings;
-    settings.set("width", size, "test");
-    settings.set("height", size, "test");
-    settings.set("bounces", bounces, "test");
-    settings.set("photons", 20000, "test");
+    Settings settings = makeTestSettings(
+        {{"width", size}, {"height", size}, {"bounces", bounces}, {"photons", 20000}});
     return settings;
 }
 

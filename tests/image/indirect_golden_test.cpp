@@ -4,6 +4,7 @@
 #include "support/render_support.h"
 
 #include "scene/scene_loader.h"
+#include "support/test_settings.h"
 
 namespace ispm::test {
 namespace {
@@ -14,12 +15,9 @@ constexpr double kCornellWhite = 0.87;  // W/(m^2 sr)
 constexpr double kBoxCityWhite = 176.0; // W/(m^2 sr)
 
 Settings makeSettings(const Scene& scene, int size) {
-    Settings settings = scene.settings;
-    settings.set("width", size, "test");
-    settings.set("height", size, "test");
+    Settings settings = withSettings(scene.settings, {{"width", size}, {"height", size}});
     settings.set("photons", 20000, "test"); // small enough for llvmpipe, enough to be stable
-    settings.set("shadow_map_size", 256, "test");
-    settings.set("seed", 1, "test");
+    settings = withSettings(settings, {{"shadow_map_size", 256}, {"seed", 1}});
     return settings;
 }
 
@@ -33,8 +31,7 @@ constexpr GoldenThresholds kIndirectThresholds{12.0f / 255.0f, 3.0f / 255.0f, 0.
 // luminance that the derived one picks): a white point derived from the image would cancel a
 // scale error of the whole image, which must fail the golden instead.
 Settings makeGoldenSettings(const Scene& scene, double whitePoint) {
-    Settings settings = makeSettings(scene, 128);
-    settings.set("luminance_max", whitePoint, "test");
+    Settings settings = withSettings(makeSettings(scene, 128), {{"luminance_max", whitePoint}});
     return settings;
 }
 
@@ -82,8 +79,7 @@ TEST_F(IndirectTest, CornellCeilingIsLitOnlyByBouncedLight) {
 
 TEST_F(IndirectTest, BouncesZeroMeansNoIndirectLight) {
     const Scene scene = loadScene(std::string(ISPM_ASSET_DIR) + "/scenes/cornell.json");
-    Settings settings = makeSettings(scene, 32);
-    settings.set("bounces", 0, "test");
+    Settings settings = withSettings(makeSettings(scene, 32), {{"bounces", 0}});
     for (const glm::vec3& p : renderAov(scene, settings, Aov::Indirect).pixels) {
         EXPECT_EQ(p, glm::vec3(0.0f));
     }

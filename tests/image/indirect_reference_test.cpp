@@ -7,6 +7,7 @@
 #include "image/metrics.h"
 #include "render/reference_pass.h"
 #include "scene/scene_loader.h"
+#include "support/test_settings.h"
 
 namespace ispm::test {
 namespace {
@@ -24,12 +25,11 @@ TEST_F(IndirectReferenceTest, CornellIndirectWithinMeasuredBound) {
     constexpr int kBounces = 2;
     constexpr int kReferenceSpp = 96;
     const Scene scene = loadScene(std::string(ISPM_ASSET_DIR) + "/scenes/cornell.json");
-    Settings settings = scene.settings;
-    settings.set("width", kSize, "test");
-    settings.set("height", kSize, "test");
-    settings.set("bounces", kBounces, "test");
-    settings.set("photons", 50000, "test");
-    settings.set("shadow_map_size", 512, "test");
+    Settings settings = withSettings(scene.settings, {{"width", kSize},
+                                                      {"height", kSize},
+                                                      {"bounces", kBounces},
+                                                      {"photons", 50000},
+                                                      {"shadow_map_size", 512}});
 
     const Image referenceIndirect = renderReferenceIndirect(scene, settings, kReferenceSpp);
     const Image indirect = renderAov(scene, settings, Aov::Indirect);

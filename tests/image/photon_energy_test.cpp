@@ -7,6 +7,7 @@
 #include "render/photon_density_pass.h"
 #include "render/readback.h"
 #include "render/splat_pass.h"
+#include "support/test_settings.h"
 
 #include <glm/gtc/constants.hpp>
 
@@ -61,14 +62,13 @@ TEST_F(PhotonEnergyTest, StoredPowerIsLightPowerTimesGeometricSeries) {
     // the weighted one all of them at rho times it; the same stored power in expectation.
     for (const char* firstBounce : {"roulette", "weighted"}) {
         for (int bounces : {1, 3}) {
-            Settings settings;
-            settings.setEnum("first_bounce", firstBounce, "test");
-            settings.set("width", 16, "test");
-            settings.set("height", 16, "test");
-            settings.set("shadow_map_size", 128, "test");
-            settings.set("photons", kPhotons, "test");
-            settings.set("bounces", bounces, "test");
-            settings.set("seed", 3, "test");
+            Settings settings = makeTestSettings({{"first_bounce", firstBounce},
+                                                  {"width", 16},
+                                                  {"height", 16},
+                                                  {"shadow_map_size", 128},
+                                                  {"photons", kPhotons},
+                                                  {"bounces", bounces},
+                                                  {"seed", 3}});
             FrameRunner runner(scene, settings, gl::TimingMethod::CpuFinish);
             runner.renderFrame();
             const PhotonCounts counts = readPhotonCounts(runner);
@@ -127,12 +127,9 @@ TEST_P(SplatShapeEnergyTest, OneSplatOnAPlaneIntegratesToBrdfTimesPower) {
     scene.camera.target = {0.0f, 0.0f, 0.0f};
     scene.camera.up = {0.0f, 0.0f, 1.0f};
     scene.camera.fovYDeg = 3.0f;
-    Settings settings;
-    settings.set("width", kSize, "test");
-    settings.set("height", kSize, "test");
+    Settings settings = makeTestSettings({{"width", kSize}, {"height", kSize}});
     settings.set("bounces", 0, "test"); // the frame itself stores no photons
-    settings.set("radius_min", kRadiusM, "test");
-    settings.set("radius_max", kRadiusM, "test");
+    settings = withSettings(settings, {{"radius_min", kRadiusM}, {"radius_max", kRadiusM}});
     settings.setEnum("radius_mode", "travel", "test"); // the radius set above, not the density's
     if (std::string(GetParam()) == "gather") {
         settings.setEnum("splat_mode", "gather", "test");

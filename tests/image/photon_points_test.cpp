@@ -6,6 +6,7 @@
 
 #include "render/photon_points.h"
 #include "scene/scene_loader.h"
+#include "support/test_settings.h"
 
 #include <cmath>
 #include <memory>
@@ -26,10 +27,8 @@ struct CornellFrame {
 
 CornellFrame renderCornell() {
     CornellFrame f{.scene = loadScene(std::string(ISPM_ASSET_DIR) + "/scenes/cornell.json")};
-    Settings s = f.scene.settings;
-    s.set("width", kSize, "test");
-    s.set("height", kSize, "test");
-    s.set("photons", kPhotons, "test");
+    Settings s = withSettings(f.scene.settings,
+                              {{"width", kSize}, {"height", kSize}, {"photons", kPhotons}});
     f.runner = std::make_unique<FrameRunner>(f.scene, s, gl::TimingMethod::CpuFinish);
     f.runner->renderFrame();
     return f;

@@ -9,6 +9,7 @@
 #include "render/readback.h"
 #include "scene/mesh_builder.h"
 #include "scene/scene_loader.h"
+#include "support/test_settings.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -62,12 +63,11 @@ Scene makeSquares(const std::vector<Square>& squares) {
 }
 
 Settings makeSettings() {
-    Settings s;
-    s.set("width", kSize, "test");
-    s.set("height", kSize, "test");
-    s.set("photons", 0, "test");
-    s.set("bounces", 0, "test");
-    s.set("shadow_map_size", 64, "test");
+    Settings s = makeTestSettings({{"width", kSize},
+                                   {"height", kSize},
+                                   {"photons", 0},
+                                   {"bounces", 0},
+                                   {"shadow_map_size", 64}});
     return s;
 }
 
@@ -117,23 +117,22 @@ size_t countDifferingPixels(const Image& a, const Image& b) {
 }
 
 Settings makeCornellSettings(const Scene& cornell, int bounces) {
-    Settings s = cornell.settings;
-    s.set("width", 48, "test");
-    s.set("height", 48, "test");
-    s.set("photons", 4000, "test");
-    s.set("bounces", bounces, "test");
-    s.set("shadow_map_size", 256, "test");
+    Settings s = withSettings(cornell.settings, {{"width", 48},
+                                                 {"height", 48},
+                                                 {"photons", 4000},
+                                                 {"bounces", bounces},
+                                                 {"shadow_map_size", 256}});
     return s;
 }
 
 // Each effect set to its off value, the others' parameters moved away from their defaults.
 Settings setEffectsOff(Settings s) {
-    s.set("motion_blur_shutter", 0, "test");
-    s.set("dof_aperture_m", 0, "test");
-    s.set("dof_focus_m", 3, "test");
-    s.set("bloom_intensity", 0, "test");
-    s.set("bloom_threshold", 0.01, "test");
-    s.set("bloom_radius_px", 5, "test");
+    s = withSettings(s, {{"motion_blur_shutter", 0},
+                         {"dof_aperture_m", 0},
+                         {"dof_focus_m", 3},
+                         {"bloom_intensity", 0},
+                         {"bloom_threshold", 0.01},
+                         {"bloom_radius_px", 5}});
     return s;
 }
 
@@ -211,13 +210,11 @@ TEST_F(PostTest, EachOnChangesTheTotalOnlyAndIsTimed) {
 TEST_F(PostTest, AllOnKeepTheCornellBoxEnergyAsTheCameraTurns) {
     Scene cornell = loadScene(std::string(ISPM_ASSET_DIR) + "/scenes/cornell.json");
     Settings s = makeCornellSettings(cornell, 0); // direct light: the same in both runners
-    s.set("width", kSize, "test");
-    s.set("height", kSize, "test");
-    Settings post = s;
-    post.set("motion_blur_shutter", 1.0, "test");
-    post.set("dof_aperture_m", 0.05, "test");
-    post.set("bloom_intensity", 0.3, "test");
-    post.set("bloom_threshold", 0.05, "test");
+    s = withSettings(s, {{"width", kSize}, {"height", kSize}});
+    Settings post = withSettings(s, {{"motion_blur_shutter", 1.0},
+                                     {"dof_aperture_m", 0.05},
+                                     {"bloom_intensity", 0.3},
+                                     {"bloom_threshold", 0.05}});
     FrameRunner blurred(cornell, post, gl::TimingMethod::CpuFinish);
     blurred.renderFrame();
     // The camera turns by about 4 px between the frames.
@@ -235,10 +232,9 @@ TEST_F(PostTest, BloomSpreadsTheBrightPartWithinItsRadiusAndKeepsEnergy) {
     const Scene scene = makeSquares({{{0.0f, 0.0f, -2.0f}, 0.1f}});
     const Image before = render(scene, makeSettings());
     constexpr float kRadiusPx = 8.0f;
-    Settings s = makeSettings();
-    s.set("bloom_intensity", 0.5, "test");
-    s.set("bloom_threshold", 1.0, "test");
-    s.set("bloom_radius_px", kRadiusPx, "test");
+    Settings s = withSettings(
+        makeSettings(),
+        {{"bloom_intensity", 0.5}, {"bloom_threshold", 1.0}, {"bloom_radius_px", kRadiusPx}});
     const Image after = render(scene, s);
     EXPECT_NEAR(computeEnergyRatio(after, before), 1.0, kEnergyTolerance);
     const std::vector<double> distance = computeDistanceToLit(before);
@@ -273,9 +269,8 @@ TEST_F(PostTest, DepthBlurWidensAnOutOfFocusEdgeByItsCircleAndKeepsFocusSharp) {
     const Scene scene =
         makeSquares({{{0.0f, 0.0f, -float(kFocusM)}, 0.2f}, {{1.7f, 0.0f, -float(kFarM)}, 0.3f}});
     const Image before = render(scene, makeSettings());
-    Settings s = makeSettings();
-    s.set("dof_aperture_m", kApertureM, "test");
-    s.set("dof_focus_m", kFocusM, "test");
+    Settings s =
+        withSettings(makeSettings(), {{"dof_aperture_m", kApertureM}, {"dof_focus_m", kFocusM}});
     const Image after = render(scene, s);
     EXPECT_NEAR(computeEnergyRatio(after, before), 1.0, kEnergyTolerance);
     // The thin lens's circle at B's depth (shared/post_data.h), computed here from the optics:
@@ -307,8 +302,7 @@ TEST_F(PostTest, DepthBlurWidensAnOutOfFocusEdgeByItsCircleAndKeepsFocusSharp) {
     }
     EXPECT_GT(widened, 20);
     // The focus derived from the image centre (square A at 2 m) is the one set by hand.
-    Settings automatic = makeSettings();
-    automatic.set("dof_aperture_m", kApertureM, "test");
+    Settings automatic = withSettings(makeSettings(), {{"dof_aperture_m", kApertureM}});
     const Image autoFocus = render(scene, automatic);
     for (size_t i = 0; i < after.pixels.size(); ++i)
         EXPECT_NEAR(autoFocus.pixels[i].r, after.pixels[i].r, 1e-5f * kEmission) << i;
@@ -319,8 +313,7 @@ TEST_F(PostTest, MotionBlurSmearsAlongTheMotionOnlyAndKeepsEnergy) {
     constexpr double kDepthM = 2.0;
     constexpr double kMoveM = 0.3;
     Scene scene = makeSquares({{{-0.15f, 0.0f, -float(kDepthM)}, 0.15f}});
-    Settings s = makeSettings();
-    s.set("motion_blur_shutter", 1.0, "test");
+    Settings s = withSettings(makeSettings(), {{"motion_blur_shutter", 1.0}});
     FrameRunner runner(scene, s, gl::TimingMethod::CpuFinish);
     runner.renderFrame();
     scene.instances[0].worldFromObject =
@@ -404,8 +397,7 @@ TEST_F(PostTest, VelocityIsDrawnOnlyForItsReaders) {
 TEST_F(PostTest, AStillViewHasNoVelocityWhileAccumulating) {
     // Accumulated frames look through new sub-pixel offsets: the velocity channel leaves them out.
     const Scene scene = makeSquares({{{0.0f, 0.0f, -2.0f}, 0.5f}});
-    Settings s = makeSettings();
-    s.set("accumulate", 4, "test");
+    Settings s = withSettings(makeSettings(), {{"accumulate", 4}});
     FrameRunner runner(scene, s, gl::TimingMethod::CpuFinish);
     runner.setPresentation(
         {.keepVelocity = true}); // drawn without motion blur (else it holds zero anyway)

@@ -6,6 +6,7 @@
 #include "render/frame.h"
 #include "render/reference_pass.h"
 #include "scene/scene_loader.h"
+#include "support/test_settings.h"
 
 #include <glm/gtc/constants.hpp>
 
@@ -74,9 +75,7 @@ TEST_F(ReferenceTest, ClosedSphereMatchesGeometricSeries) {
     constexpr int kSize = 32;
     constexpr int kSpp = 32;
     const Scene scene = makeClosedSphere(kRho, kRadiusM, kIntensity);
-    Settings settings;
-    settings.set("width", kSize, "test");
-    settings.set("height", kSize, "test");
+    Settings settings = makeTestSettings({{"width", kSize}, {"height", kSize}});
     for (int bounces : {0, 1, 3}) {
         const Image image = renderReference(scene, settings, kSpp, bounces);
         double series = 0.0;
@@ -109,9 +108,7 @@ TEST_F(ReferenceTest, PointLightOverPlaneMatchesClosedForm) {
     scene.camera.target = {0.3f, 0.0f, 0.2f};
     scene.camera.up = {0.0f, 0.0f, 1.0f};
     scene.camera.fovYDeg = 40.0f;
-    Settings settings;
-    settings.set("width", kSize, "test");
-    settings.set("height", kSize, "test");
+    Settings settings = makeTestSettings({{"width", kSize}, {"height", kSize}});
     const Image image = renderReference(scene, settings, kSpp, 0);
     for (int y = 0; y < kSize; ++y) {
         for (int x = 0; x < kSize; ++x) {
@@ -130,8 +127,7 @@ TEST_F(ReferenceTest, IspmDirectLightMatchesReferenceOnCornellBox) {
     // 128 px: below that, thin bright slivers (the short block's top seen at a grazing angle)
     // cover a few pixels whose centre sample and box-filtered mean differ a lot (measured mean
     // ratios 0.84 at 32 px, 1.07 at 64 px, 1.0025 at 128 px).
-    settings.set("width", 128, "test");
-    settings.set("height", 128, "test");
+    settings = withSettings(settings, {{"width", 128}, {"height", 128}});
     const Image reference = renderReference(scene, settings, 16, 0);
     const Image direct = renderAov(scene, settings, Aov::Direct);
     glm::dvec3 sumRef(0.0);
@@ -149,10 +145,8 @@ TEST_F(ReferenceTest, BorrowedGpuSceneGivesTheSameImage) {
     // The viewer's path tracer borrows the frame's GPU scene instead of building its own: same
     // scene, same camera, same random numbers, so the same samples.
     const Scene scene = loadScene(std::string(ISPM_ASSET_DIR) + "/scenes/cornell.json");
-    Settings settings = scene.settings;
-    settings.set("width", 32, "test");
-    settings.set("height", 32, "test");
-    settings.set("bounces", 3, "test");
+    Settings settings =
+        withSettings(scene.settings, {{"width", 32}, {"height", 32}, {"bounces", 3}});
     const Image owned = renderReference(scene, settings, 4, 3);
     FrameRunner runner(scene, settings, gl::TimingMethod::CpuFinish);
     ReferencePass borrowing(scene, runner.getPasses().scene, settings);

@@ -7,6 +7,7 @@
 
 #include "render/reference_pass.h"
 #include "scene/mesh_builder.h"
+#include "support/test_settings.h"
 
 #include <cmath>
 
@@ -46,9 +47,7 @@ TEST_F(RefractionTest, CameraInsideGlassSeesIorSquaredTimesTheTransmittedRadianc
     scene.camera.target = {0.1f, 0.0f, 0.05f};
     scene.camera.up = {0.0f, 0.0f, 1.0f};
     scene.camera.fovYDeg = 30.0f;
-    Settings settings;
-    settings.set("width", kSize, "test");
-    settings.set("height", kSize, "test");
+    Settings settings = makeTestSettings({{"width", kSize}, {"height", kSize}});
     // One reflection: through the glass face to the floor, which sees the light. Light that
     // the face reflects back into the glass is bounce 2 and more.
     settings.set("bounces", 1, "test");

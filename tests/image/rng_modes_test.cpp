@@ -8,6 +8,7 @@
 #include "render/frame.h"
 #include "render/readback.h"
 #include "scene/scene_loader.h"
+#include "support/test_settings.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -25,13 +26,12 @@ constexpr int kSize = 48; // px: small, the photons still light every wall
 // Two consecutive frames' indirect light of the Cornell box with `rng` = mode.
 std::pair<Image, Image> renderTwoFrames(const std::string& mode) {
     const Scene scene = loadScene(std::string(ISPM_ASSET_DIR) + "/scenes/cornell.json");
-    Settings s = scene.settings;
-    s.set("width", kSize, "test");
-    s.set("height", kSize, "test");
-    s.set("photons", 4000, "test");
-    s.set("bounces", 3, "test");
-    s.set("shadow_map_size", 256, "test");
-    s.setEnum("rng", mode, "test");
+    Settings s = withSettings(scene.settings, {{"width", kSize},
+                                               {"height", kSize},
+                                               {"photons", 4000},
+                                               {"bounces", 3},
+                                               {"shadow_map_size", 256},
+                                               {"rng", mode}});
     FrameRunner runner(scene, s, gl::TimingMethod::CpuFinish);
     runner.renderFrame();
     Image first = readTextureImage(runner.getAov(Aov::Indirect));
@@ -62,11 +62,9 @@ TEST_F(RngModesTest, ImportanceMapsStayWhileOnlyObjectsMove) {
     // and, with fixed or object_space numbers, whole paths stay where nothing moved); a camera
     // move rebuilds them.
     Scene scene = loadScene(std::string(ISPM_ASSET_DIR) + "/scenes/moving_cube.json");
-    Settings s = scene.settings;
-    s.set("width", kSize, "test");
-    s.set("height", kSize, "test");
-    s.set("photons", 4000, "test");
-    s.set("shadow_map_size", 256, "test");
+    Settings s = withSettings(
+        scene.settings,
+        {{"width", kSize}, {"height", kSize}, {"photons", 4000}, {"shadow_map_size", 256}});
     FrameRunner runner(scene, s, gl::TimingMethod::CpuFinish);
     auto readMaps = [&runner] {
         const gl::Buffer& cdf = runner.getPasses().importance.getCdf();

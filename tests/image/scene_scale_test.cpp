@@ -10,6 +10,7 @@
 #include "render/frame.h"
 #include "render/readback.h"
 #include "scene/scene_loader.h"
+#include "support/test_settings.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -21,11 +22,9 @@ class SceneScaleTest : public GlTest {};
 constexpr int kSize = 64;
 
 Settings makeSettings(const Scene& scene) {
-    Settings s = scene.settings;
-    s.set("width", kSize, "test");
-    s.set("height", kSize, "test");
-    s.set("photons", 20000, "test");
-    s.set("shadow_map_size", 512, "test");
+    Settings s = withSettings(
+        scene.settings,
+        {{"width", kSize}, {"height", kSize}, {"photons", 20000}, {"shadow_map_size", 512}});
     return s;
 }
 

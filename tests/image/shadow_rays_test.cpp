@@ -10,6 +10,7 @@
 
 #include "image/metrics.h"
 #include "settings/frame_settings.h"
+#include "support/test_settings.h"
 
 #include <glm/glm.hpp>
 
@@ -109,11 +110,8 @@ class ShadowRaysTest : public GlTest {};
 
 // kSize x kSize, shadows by ray, `edgeSamples` edge samples.
 Settings makeRaySettings(int edgeSamples) {
-    Settings settings;
-    settings.set("width", kSize, "test");
-    settings.set("height", kSize, "test");
-    settings.setEnum("shadows", "ray", "test");
-    settings.set("edge_samples", edgeSamples, "test");
+    Settings settings = makeTestSettings(
+        {{"width", kSize}, {"height", kSize}, {"shadows", "ray"}, {"edge_samples", edgeSamples}});
     return settings;
 }
 
@@ -321,8 +319,7 @@ TEST_F(ShadowRaysTest, EdgeSamplesSeeASliverBeyondASilhouette) {
 TEST(ShadowMapSize, FollowsTheShadowMode) {
     Settings s;
     EXPECT_EQ(computeShadowMapSize(s), 1024); // shadow maps need their texels
-    s.setEnum("shadows", "ray", "test");
-    s.set("photons", 10000, "test");
+    s = withSettings(s, {{"shadows", "ray"}, {"photons", 10000}});
     EXPECT_EQ(computeShadowMapSize(s), 256); // 2 sqrt(10,000) = 200
     s.set("photons", 25000, "test");
     EXPECT_EQ(computeShadowMapSize(s), 512); // 316

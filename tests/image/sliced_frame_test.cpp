@@ -9,6 +9,7 @@
 #include "render/frame.h"
 #include "render/readback.h"
 #include "scene/scene_loader.h"
+#include "support/test_settings.h"
 
 #include <string>
 
@@ -20,12 +21,11 @@ class SlicedFrameTest : public GlTest {};
 constexpr int kSize = 64;
 
 Settings makeSettings(const Scene& scene, const char* radiusMode) {
-    Settings s = scene.settings;
-    s.set("width", kSize, "test");
-    s.set("height", kSize, "test");
-    s.set("photons", 8000, "test");
-    s.set("shadow_map_size", 256, "test");
-    s.setEnum("radius_mode", radiusMode, "test");
+    Settings s = withSettings(scene.settings, {{"width", kSize},
+                                               {"height", kSize},
+                                               {"photons", 8000},
+                                               {"shadow_map_size", 256},
+                                               {"radius_mode", radiusMode}});
     return s;
 }
 
@@ -100,8 +100,7 @@ TEST_F(SlicedFrameTest, EditsWaitForTheNextFrameAndARebuildDropsIt) {
     FrameRunner runner(scene, settings, gl::TimingMethod::CpuFinish);
     runner.beginFrame(1.0);
     ASSERT_FALSE(runner.continueFrame(0.0));
-    Settings wider = settings;
-    wider.set("width", 2 * kSize, "test");
+    Settings wider = withSettings(settings, {{"width", 2 * kSize}});
     runner.setSettings(wider);
     // The frame in progress keeps its size; the next frame's settings are the new ones.
     EXPECT_EQ(runner.getFrameSettings().width, kSize);

@@ -11,6 +11,7 @@
 #include "render/reference_pass.h"
 #include "scene/mesh_builder.h"
 #include "scene/scene_loader.h"
+#include "support/test_settings.h"
 
 #include <algorithm>
 #include <cmath>
@@ -56,9 +57,7 @@ Scene makeMirrorScene() {
 }
 
 Settings makeSettings(int size) {
-    Settings settings;
-    settings.set("width", size, "test");
-    settings.set("height", size, "test");
+    Settings settings = makeTestSettings({{"width", size}, {"height", size}});
     return settings;
 }
 
@@ -91,8 +90,7 @@ TEST_F(SpecularViewTest, MirrorShowsTheLitFloorTimesItsReflectance) {
     Settings settings = makeSettings(kMirrorSize);
     // No photons: the floor's light is direct only, in ispm and in the path tracer with one
     // bounce (eye, mirror, floor, light), so both hold exactly the closed form's light.
-    settings.set("photons", 0, "test");
-    settings.set("bounces", 1, "test");
+    settings = withSettings(settings, {{"photons", 0}, {"bounces", 1}});
     const Image ispm = renderAov(scene, settings, Aov::Total);
     constexpr int kSpp = 64; // the lobe's spread and the pixel jitter are all the noise
     ReferencePass reference(scene, settings);
@@ -199,8 +197,7 @@ TEST_F(SpecularViewTest, GlossyReflectionIsBlurredByItsLobe) {
                {kFloorHalfM, kLift, 0.3f}, {kFloorHalfM, kLift, 0.2f}, index);
     appendQuad(scene.meshes[0], {-0.05f, kLift, -1.0f}, {-0.05f, kLift, 0.9f}, {0.05f, kLift, 0.9f},
                {0.05f, kLift, -1.0f}, index);
-    Settings settings = makeSettings(kGlossySize);
-    settings.set("bounces", 1, "test");
+    Settings settings = withSettings(makeSettings(kGlossySize), {{"bounces", 1}});
     FrameRunner runner(scene, settings, gl::TimingMethod::CpuFinish);
     runner.renderFrame();
     const Image ispm = readTextureImage(runner.getAov(Aov::Total));
@@ -270,8 +267,7 @@ constexpr int kCausticsSize = 64; // px
 
 TEST_F(SpecularViewTest, GlassAndMetalInTheCausticsSceneMatchTheReferences) {
     const Scene scene = loadCaustics();
-    Settings settings = makeSettings(kCausticsSize);
-    settings.set("photons", 20000, "test");
+    Settings settings = withSettings(makeSettings(kCausticsSize), {{"photons", 20000}});
     FrameRunner runner(scene, settings, gl::TimingMethod::CpuFinish);
     runner.renderFrame();
     const Image ispm = readTextureImage(runner.getAov(Aov::Total));
@@ -282,8 +278,7 @@ TEST_F(SpecularViewTest, GlassAndMetalInTheCausticsSceneMatchTheReferences) {
         reference.addSample();
     const Image ref = reference.readMean();
     // The glossy panel reflects the floor's caustics, which only light paths find.
-    Settings lightSettings = settings;
-    lightSettings.setEnum("reference_method", "light", "test");
+    Settings lightSettings = withSettings(settings, {{"reference_method", "light"}});
     ReferencePass lightReference(scene, lightSettings);
     for (int s = 0; s < kSpp; ++s)
         lightReference.addSample();
@@ -324,8 +319,7 @@ TEST_F(SpecularViewTest, DepthZeroOrNothingToTraceLeavesTheImageAsItWas) {
     // Cornell box: nothing specular, so any depth renders the same image, and the pass is not
     // run at all (its view-wide work would cost a 1280x1024 frame hundreds of ms on llvmpipe).
     const Scene cornell = loadScene(std::string(ISPM_ASSET_DIR) + "/scenes/cornell.json");
-    Settings settings = makeSettings(32);
-    settings.set("photons", 5000, "test");
+    Settings settings = withSettings(makeSettings(32), {{"photons", 5000}});
     FrameRunner onRunner(cornell, settings, gl::TimingMethod::CpuFinish);
     onRunner.renderFrame();
     const Image on = readTextureImage(onRunner.getAov(Aov::Total));
@@ -341,9 +335,7 @@ TEST_F(SpecularViewTest, DepthZeroOrNothingToTraceLeavesTheImageAsItWas) {
     EXPECT_FALSE(hasSpecularRow(onRunner)); // no mirror or glass: the pass is not in the frame
     EXPECT_FALSE(hasSpecularRow(offRunner));
     // The caustics scene has both: there it runs.
-    settings.set("width", 16, "test");
-    settings.set("height", 16, "test");
-    settings.set("specular_depth", 3, "test");
+    settings = withSettings(settings, {{"width", 16}, {"height", 16}, {"specular_depth", 3}});
     const Scene caustics = loadCaustics();
     FrameRunner causticsRunner(caustics, settings, gl::TimingMethod::CpuFinish);
     causticsRunner.renderFrame();
@@ -363,9 +355,8 @@ TEST_F(SpecularViewTest, DepthZeroOrNothingToTraceLeavesTheImageAsItWas) {
 
 TEST_F(SpecularViewTest, DepthZeroLeavesGlassBlackAndOtherPixelsAlone) {
     const Scene scene = loadCaustics();
-    Settings settings = makeSettings(kCausticsSize);
-    settings.set("photons", 20000, "test");
-    settings.set("specular_depth", 0, "test");
+    Settings settings =
+        withSettings(makeSettings(kCausticsSize), {{"photons", 20000}, {"specular_depth", 0}});
     FrameRunner runner(scene, settings, gl::TimingMethod::CpuFinish);
     runner.renderFrame();
     const Image off = readTextureImage(runner.getAov(Aov::Total));

@@ -9,6 +9,7 @@
 #include "render/frame.h"
 #include "render/readback.h"
 #include "scene/scene_loader.h"
+#include "support/test_settings.h"
 
 #include <string>
 
@@ -23,11 +24,9 @@ Image renderIndirect(const std::string& file, const std::string& camera,
                      const std::string& resolution, const char* key, const char* value) {
     Scene scene = loadScene(std::string(ISPM_ASSET_DIR) + "/scenes/" + file);
     selectCamera(scene, camera);
-    Settings s = scene.settings;
-    s.set("width", kSize, "test");
-    s.set("height", kSize, "test");
-    s.set("photons", 20000, "test");
-    s.set("shadow_map_size", 512, "test");
+    Settings s = withSettings(
+        scene.settings,
+        {{"width", kSize}, {"height", kSize}, {"photons", 20000}, {"shadow_map_size", 512}});
     s.set("denoise", 0, "test"); // the splat buffer itself
     s.setEnum("splat_resolution", resolution, "test");
     s.setEnum(key, value, "test");

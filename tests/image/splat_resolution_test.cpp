@@ -10,6 +10,7 @@
 #include "render/readback.h"
 #include "render/splat_pass.h"
 #include "scene/scene_loader.h"
+#include "support/test_settings.h"
 
 #include <nlohmann/json.hpp>
 
@@ -30,23 +31,18 @@ struct SplatImages {
 
 // The scene's settings at kSize, 20,000 photons, splats at `resolution`, unfiltered.
 Settings makeSplatSettings(const Scene& scene, const std::string& resolution) {
-    Settings s = scene.settings;
-    s.set("width", kSize, "test");
-    s.set("height", kSize, "test");
-    s.set("photons", 20000, "test");
+    Settings s =
+        withSettings(scene.settings, {{"width", kSize}, {"height", kSize}, {"photons", 20000}});
     // The splats alone: the filter would smooth both images alike and hide the upsample's errors.
-    s.set("denoise", 0, "test");
-    s.setEnum("splat_resolution", resolution, "test");
+    s = withSettings(s, {{"denoise", 0}, {"splat_resolution", resolution}});
     return s;
 }
 
 SplatImages renderCornell(const std::string& resolution, int seed = 1, float radiusScale = 1.0f) {
     const Scene scene = loadScene(std::string(ISPM_ASSET_DIR) + "/scenes/cornell.json");
-    Settings s = makeSplatSettings(scene, resolution);
-    s.set("bounces", 2, "test");
-    s.set("shadow_map_size", 512, "test");
-    s.set("seed", seed, "test");
-    s.set("radius_scale", radiusScale, "test");
+    Settings s = withSettings(
+        makeSplatSettings(scene, resolution),
+        {{"bounces", 2}, {"shadow_map_size", 512}, {"seed", seed}, {"radius_scale", radiusScale}});
     FrameRunner runner(scene, s, gl::TimingMethod::CpuFinish);
     runner.renderFrame();
     return {readTextureImage(runner.getAov(Aov::Indirect)),
@@ -185,8 +181,7 @@ double renderBackWallThroughWindow(const std::string& resolution) {
     })");
     const Scene scene = parseScene(doc, "window.json", ".");
     auto render = [&](const std::string& r, Image* position) {
-        Settings s = makeSplatSettings(scene, r);
-        s.setEnum("radius_mode", "path_density", "test");
+        Settings s = withSettings(makeSplatSettings(scene, r), {{"radius_mode", "path_density"}});
         FrameRunner runner(scene, s, gl::TimingMethod::CpuFinish);
         runner.renderFrame();
         if (position)

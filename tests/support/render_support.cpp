@@ -7,6 +7,7 @@
 #include "render/readback.h"
 #include "render/reference_pass.h"
 #include "support/gl_fixture.h"
+#include "support/test_settings.h"
 
 #include <gtest/gtest.h>
 
@@ -24,11 +25,10 @@ Image renderAov(const Scene& scene, const Settings& settings, Aov aov) {
 }
 
 Image renderReference(const Scene& scene, const char* method, int sizePx, int spp, int bounces) {
-    Settings settings;
-    settings.set("width", sizePx, "test");
-    settings.set("height", sizePx, "test");
-    settings.set("bounces", bounces, "test");
-    settings.setEnum("reference_method", method, "test");
+    Settings settings = makeTestSettings({{"width", sizePx},
+                                          {"height", sizePx},
+                                          {"bounces", bounces},
+                                          {"reference_method", method}});
     ReferencePass reference(scene, settings);
     for (int s = 0; s < spp; ++s)
         reference.addSample();
@@ -37,8 +37,7 @@ Image renderReference(const Scene& scene, const char* method, int sizePx, int sp
 
 Image renderReferenceIndirect(const Scene& scene, const Settings& settings, int spp) {
     ReferencePass withBounces(scene, settings);
-    Settings directOnly = settings;
-    directOnly.set("bounces", 0, "test");
+    Settings directOnly = withSettings(settings, {{"bounces", 0}});
     ReferencePass direct(scene, directOnly);
     for (int s = 0; s < spp; ++s) {
         withBounces.addSample();

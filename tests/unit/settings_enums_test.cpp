@@ -2,6 +2,7 @@
 // against (shared/*.h): a choice added or moved in one place and not the other fails here.
 #include "settings/frame_settings.h"
 #include "settings/settings.h"
+#include "support/test_settings.h"
 
 #include <shared/light_trace_data.h>
 #include <shared/photon_data.h>
@@ -48,9 +49,7 @@ TEST(SettingsEnums, ChoicesMatchTheShaderConstants) {
 // and cheaper: no box query per photon); on and off hold for every radius mode.
 TEST(SettingsEnums, SplatClipFollowsTheRadiusModeUnlessSet) {
     const auto resolve = [](std::string_view mode, std::string_view clip) {
-        Settings s;
-        s.setEnum("radius_mode", mode, "test");
-        s.setEnum("splat_clip", clip, "test");
+        Settings s = makeTestSettings({{"radius_mode", mode}, {"splat_clip", clip}});
         return resolveFrameSettings(s).splatClip;
     };
     EXPECT_TRUE(resolve("density", "auto"));
@@ -66,10 +65,8 @@ TEST(SettingsEnums, SplatClipFollowsTheRadiusModeUnlessSet) {
 // lines renormalise per pixel instead, so with splat_clip on it never applies.
 TEST(SettingsEnums, SurfaceEndsAppliesOnlyWithoutClipLines) {
     const auto resolve = [](std::string_view mode, std::string_view clip, std::string_view ends) {
-        Settings s;
-        s.setEnum("radius_mode", mode, "test");
-        s.setEnum("splat_clip", clip, "test");
-        s.setEnum("surface_ends", ends, "test");
+        Settings s =
+            makeTestSettings({{"radius_mode", mode}, {"splat_clip", clip}, {"surface_ends", ends}});
         return resolveFrameSettings(s).surfaceEnds;
     };
     EXPECT_TRUE(resolve("density", "off", "auto"));
@@ -88,8 +85,7 @@ TEST(SettingsEnums, SurfaceEndsAppliesOnlyWithoutClipLines) {
 // widen_strong widens travel and path-density discs; the density radii (the default) spread
 // strong photons by their neighbours already, so it resolves off there.
 TEST(SettingsEnums, WidenStrongIsOffUnlessSetForTravelRadii) {
-    Settings s;
-    s.setEnum("radius_mode", "travel", "test");
+    Settings s = makeTestSettings({{"radius_mode", "travel"}});
     EXPECT_FALSE(resolveFrameSettings(s).widenStrong);
     s.setEnum("widen_strong", "on", "test");
     EXPECT_TRUE(resolveFrameSettings(s).widenStrong);
