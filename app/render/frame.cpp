@@ -46,8 +46,8 @@ Aov parseAov(const std::string& text, const std::string& where) {
 FrameRunner::FrameRunner(const Scene& scene, const Settings& settings, gl::TimingMethod timing)
     : mScene(scene), mSettings(settings), mFrameSettings(resolveFrameSettings(settings)),
       mWidth(mFrameSettings.width), mHeight(mFrameSettings.height),
-      mBudget({"emit", "trace", "density", "splat"}, int(findSetting("photons")->maxValue)),
-      mTimer(timing), mGpuScene(scene, mFrameSettings.shadowMapSize),
+      mBudget(int(findSetting("photons")->maxValue)), mTimer(timing),
+      mGpuScene(scene, mFrameSettings.shadowMapSize),
       mFrameConstants("frame constants", sizeof(gpu::FrameConstants)) {
     mGBuffer = std::make_unique<GBufferPass>();
     mLightViews = std::make_unique<LightViewPass>();
@@ -399,7 +399,11 @@ void FrameRunner::adaptPhotonBudget() {
     // A still view that accumulates is converging (once its history is full, frames cost
     // nothing).
     const bool converging = mFrameSettings.accumulate > 0 && getHistoryFrames() > 1;
-    if (!mBudget.recordFrame(mTimings.passes, mFrameSettings.frameMsTarget, converging,
+    // The passes whose work follows the photon count.
+    const std::vector<std::string> photonPasses = {mEmit->getName(), mTrace->getName(),
+                                                   mDensity->getName(), mSplat->getName()};
+    if (!mBudget.recordFrame(splitFrameCost(mTimings.passes, photonPasses),
+                             mFrameSettings.frameMsTarget, converging,
                              uint32_t(mTimer.getFramesInFlight()))) {
         return;
     }

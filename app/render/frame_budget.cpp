@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <utility>
 
 namespace ispm {
 namespace {
@@ -39,16 +38,13 @@ int adaptPhotonBudget(int photons, const FrameCost& cost, double targetMs, int m
         std::clamp(next, double(std::min(kMinAdaptedPhotons, maxPhotons)), double(maxPhotons)));
 }
 
-FrameBudget::FrameBudget(std::vector<std::string> photonPasses, int maxPhotons)
-    : mPhotonPasses(std::move(photonPasses)), mMaxPhotons(maxPhotons) {}
-
 void FrameBudget::restart(int photons) {
     mPhotons = photons;
     mCosts.clear();
 }
 
-bool FrameBudget::recordFrame(const std::vector<PassTiming>& timings, double targetMs,
-                              bool converging, uint32_t framesInFlight) {
+bool FrameBudget::recordFrame(const FrameCost& cost, double targetMs, bool converging,
+                              uint32_t framesInFlight) {
     if (targetMs <= 0.0 || converging) {
         mCosts.clear();
         return false;
@@ -57,7 +53,7 @@ bool FrameBudget::recordFrame(const std::vector<PassTiming>& timings, double tar
         --mSettle;
         return false;
     }
-    mCosts.push_back(splitFrameCost(timings, mPhotonPasses));
+    mCosts.push_back(cost);
     if (mCosts.size() < kMeasuredFrames) return false;
     // The median frame of the window: one slow frame (another process, a first use of a
     // program) does not move the budget.

@@ -39,8 +39,8 @@ inline constexpr int kMinAdaptedPhotons = 1000;
 // the frame's settings as a typed override (applyPhotonBudget), never through the settings table.
 class FrameBudget {
   public:
-    // `photonPasses`: the passes whose time follows the budget; `maxPhotons`: the setting's range.
-    FrameBudget(std::vector<std::string> photonPasses, int maxPhotons);
+    // `maxPhotons`: the top of the setting's range.
+    explicit FrameBudget(int maxPhotons) : mMaxPhotons(maxPhotons) {}
 
     // Starts anew at `photons` (the settings' count), with nothing measured.
     void restart(int photons);
@@ -48,19 +48,18 @@ class FrameBudget {
     void dropMeasurements() { mCosts.clear(); }
     int getPhotons() const { return mPhotons; }
 
-    // The pass times of the newest measured frame. Once kMeasuredFrames frames measured the
+    // The newest measured frame's cost (splitFrameCost). Once kMeasuredFrames frames measured the
     // present budget, moves it towards `targetMs` (their median frame) and returns whether it
     // changed. `converging` (a still view that accumulates) drops the measurements instead: a new
     // budget would disturb it, and once its history is full frames cost nothing. The next
     // `framesInFlight` frames (timer queries answer late) still measure the old budget.
-    bool recordFrame(const std::vector<PassTiming>& timings, double targetMs, bool converging,
+    bool recordFrame(const FrameCost& cost, double targetMs, bool converging,
                      uint32_t framesInFlight);
 
     // Frames measured at one budget before it changes (their median).
     static constexpr size_t kMeasuredFrames = 3;
 
   private:
-    std::vector<std::string> mPhotonPasses;
     int mMaxPhotons = 0;
     int mPhotons = 0;
     std::vector<FrameCost> mCosts; // frames measured at the present budget

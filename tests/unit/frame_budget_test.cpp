@@ -74,8 +74,8 @@ TEST(FrameBudget, DeadBandStepsAndRange) {
 
 TEST(FrameBudget, MeasuresThreeFramesThenSteps) {
     // 10 ms fixed and 100 ms of photons against a 60 ms target: (60 - 10) / 100, half the budget.
-    const std::vector<PassTiming> frame = {{"gbuffer", 10.0}, {"splat", 100.0}};
-    FrameBudget budget({"splat"}, kMaxPhotons);
+    const FrameCost frame = splitFrameCost({{"gbuffer", 10.0}, {"splat", 100.0}}, {"splat"});
+    FrameBudget budget(kMaxPhotons);
     budget.restart(50000);
     EXPECT_FALSE(budget.recordFrame(frame, 60.0, false, 0));
     EXPECT_FALSE(budget.recordFrame(frame, 60.0, false, 0));
@@ -93,8 +93,8 @@ TEST(FrameBudget, MeasuresThreeFramesThenSteps) {
 }
 
 TEST(FrameBudget, ConvergingOrOffDropsTheMeasurements) {
-    const std::vector<PassTiming> frame = {{"gbuffer", 10.0}, {"splat", 100.0}};
-    FrameBudget budget({"splat"}, kMaxPhotons);
+    const FrameCost frame = splitFrameCost({{"gbuffer", 10.0}, {"splat", 100.0}}, {"splat"});
+    FrameBudget budget(kMaxPhotons);
     budget.restart(50000);
     budget.recordFrame(frame, 60.0, false, 0);
     budget.recordFrame(frame, 60.0, false, 0);
