@@ -136,28 +136,26 @@ void Viewer::drawFrame() {
     gl::bindDefaultFramebuffer(mWindowWidth, mWindowHeight);
     gl::clearDefaultFramebuffer(glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
     const DebugView& view = mPanels.getView();
+    const int width = mRunner->getFrameSettings().width; // the rendered region's
+    const int height = mRunner->getFrameSettings().height;
     if (view.source == DebugView::Source::Reference) {
-        mReference.draw(*mRunner, view.referenceMode, mPanels.getTransform().exposureStops,
-                        mRunner->getFrameSettings().width, mRunner->getFrameSettings().height);
+        mReference.draw(*mRunner, view.referenceMode, mPanels.getTransform().exposureStops, width,
+                        height);
     } else {
-        mDrawer.draw(*mRunner, view, mPanels.getTransform(), mRunner->getFrameSettings().width,
-                     mRunner->getFrameSettings().height);
+        mDrawer.draw(*mRunner, view, mPanels.getTransform(), width, height);
     }
     // Points are placed with the viewer camera: not over a light camera's image.
     if (view.source != DebugView::Source::LightGBuffer &&
         view.source != DebugView::Source::LightImportance) {
-        gl::bindDefaultFramebuffer(mRunner->getFrameSettings().width,
-                                   mRunner->getFrameSettings().height);
+        gl::bindDefaultFramebuffer(width, height);
         mPointsDrawer.draw(*mRunner, mPanels.getPoints(), mPanels.getPointsColour());
     }
     gl::bindDefaultFramebuffer(mWindowWidth, mWindowHeight);
     const PanelRequests requests = mPanels.draw(makePanelContext());
     mLightEdit = requests.lightEdit; // the last frame's was applied before this draw
     if (!requests.scenePath.empty()) mPendingScenePath = requests.scenePath;
-    if (view.referenceMode == ReferenceMode::HeatMap &&
-        mReference.hasReference(mRunner->getFrameSettings().width,
-                                mRunner->getFrameSettings().height)) {
-        mReference.drawLegendLabels(mRunner->getFrameSettings().height);
+    if (view.referenceMode == ReferenceMode::HeatMap && mReference.hasReference(width, height)) {
+        mReference.drawLegendLabels(height);
     }
     mImGui.endFrame();
 }
