@@ -11,6 +11,7 @@
 // uSpecularLight, with the spread in pixels of a glossy lobe's ray in alpha (0 for glass and
 // untraced pixels); specular_filter.comp blurs it by that spread and adds it to the image.
 #include "lib/scene_buffers.glsl"
+#include "lib/scene_textures.glsl"
 #include "lib/frame_constants.glsl"
 #include "lib/bvh.glsl"
 #include "lib/brdf.glsl"
@@ -126,12 +127,14 @@ void main() {
         bool frontFace = dot(geometric, ray.dir) < 0.0;
         vec3 n = frontFace ? geometric : -geometric;
         GpuMaterial m = materials[triangles[hit.triangle].w];
+        // The hit's own reflectance, its texture's included (as the reference reads it).
+        vec3 diffuse = getHitDiffuse(m, hit.triangle, hit.barycentric);
         // Direct light with a shadow ray per light (glass blocks them, as in the reference).
-        vec3 direct = computeDirectRadiance(hitPosition, n, m.diffuse.rgb, m.specular, -ray.dir,
+        vec3 direct = computeDirectRadiance(hitPosition, n, diffuse, m.specular, -ray.dir,
                                             params.rayFloorM);
-        radiance += ray.weight * (direct + lookUpIndirect(hitPosition, m.diffuse.rgb));
+        radiance += ray.weight * (direct + lookUpIndirect(hitPosition, diffuse));
         if (ray.level < levels) {
-            scatterRays(hitPosition, n, frontFace, ray.dir, m.diffuse.rgb, m.specular, m.transmissive,
+            scatterRays(hitPosition, n, frontFace, ray.dir, diffuse, m.specular, m.transmissive,
                         ray.weight, ray.level + 1u);
         }
     }
