@@ -41,6 +41,12 @@ Settings makeSettings(int size, int bounces) {
     return settings;
 }
 
+// The same scene with every material untextured: what the bounds below must fail.
+void removeTextures(Scene& scene) {
+    for (Material& m : scene.materials)
+        m.diffuseTexture = kNoTexture;
+}
+
 // Mean red over mean green of the image: the colour of light bounced off the red and white
 // checker. Its floor reflects about 0.96 x colour + 0.04 per channel (glTF's dielectric,
 // gltf_units.h), red (1.00, 0.04, 0.04) and white (1, 1, 1) in equal parts, so the ceiling's light
@@ -128,8 +134,7 @@ TEST_F(GltfTextureTest, FirstBounceCarriesTheCheckerColours) {
     constexpr int kSpp = 64;
     const double reference = computeRedOverGreen(renderReferenceIndirect(scene, settings, kSpp));
     // The same floor without its texture: the bound must fail it.
-    for (Material& m : scene.materials)
-        m.diffuseTexture = kNoTexture;
+    removeTextures(scene);
     const double untextured = computeRedOverGreen(renderAov(scene, settings, Aov::Indirect));
     std::printf("ceiling red/green, one bounce: ispm %.3f, reference %.3f, untextured %.3f\n", ispm,
                 reference, untextured);
@@ -186,8 +191,7 @@ TEST_F(GltfTextureTest, MirrorShowsTheChecker) {
     // mirror shows the floor's direct light and the floor's bounced light is small beside it.
     const Settings settings = withSettings(makeSettings(kSize, 1), {{"photons", 2000}});
     const double ispm = computeRedOverGreen(renderAov(scene, settings, Aov::Total));
-    for (Material& m : scene.materials)
-        m.diffuseTexture = kNoTexture;
+    removeTextures(scene);
     const double untextured = computeRedOverGreen(renderAov(scene, settings, Aov::Total));
     std::printf("mirror red/green: ispm %.3f, untextured %.3f\n", ispm, untextured);
     EXPECT_GT(ispm, kMinRedOverGreen);
