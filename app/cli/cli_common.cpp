@@ -6,6 +6,7 @@
 #include "gl/debug.h"
 #include "render/frame_constants.h"
 #include "render/splat_pass.h"
+#include "scene/emitters.h"
 
 #include <CLI/CLI.hpp>
 
@@ -71,6 +72,8 @@ void warnIfLightFades(const FrameRunner& runner) {
     const std::string near = describeRaisedNearPlane(runner.getPasses().model.camera,
                                                      scene.getBounds(), scene.getInstanceBounds());
     if (!near.empty()) std::fprintf(stderr, "ispm: warning: %s\n", near.c_str());
+    const std::string dropped = describeDroppedEmitters(runner.getPasses().model);
+    if (!dropped.empty()) std::fprintf(stderr, "ispm: warning: %s\n", dropped.c_str());
 }
 
 void printTimings(const FrameRunner& runner, const gl::ContextInfo& info) {
@@ -88,12 +91,20 @@ void printTimings(const FrameRunner& runner, const gl::ContextInfo& info) {
         std::printf("photons: %u emitted, %u after the first bounce, %u stored (%u in view), %u "
                     "overflow\n",
                     c.emitted, c.bounced, c.stored, c.inView, c.overflow);
+        const Scene& model = runner.getPasses().model;
+        const Emitters& emitters = runner.getPasses().scene.getEmitters();
         for (size_t i = 0; i < c.perLight.size(); ++i) {
             const LightCounts& l = c.perLight[i];
-            std::printf("  light %zu (%s): %u emitted, %u after the first bounce, %u stored (%u in "
-                        "view)\n",
-                        i, getLightTypeName(runner.getPasses().model.lights[i].type), l.emitted,
-                        l.bounced, l.stored, l.inView);
+            // The lights, then the emitter groups (GpuScene::getPhotonSourceCount).
+            const std::string name =
+                i < model.lights.size()
+                    ? strCat("light ", i, " (", getLightTypeName(model.lights[i].type), ")")
+                    : strCat(
+                          "emitter '",
+                          model.materials[emitters.groups[i - model.lights.size()].material].name,
+                          "'");
+            std::printf("  %s: %u emitted, %u after the first bounce, %u stored (%u in view)\n",
+                        name.c_str(), l.emitted, l.bounced, l.stored, l.inView);
         }
     }
 }

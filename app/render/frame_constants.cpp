@@ -100,6 +100,9 @@ gpu::FrameConstants computeFrameConstants(const Scene& scene, const GpuScene& gp
     fc.luminanceMax = settings.luminanceMax.value_or(0.0f);
     fc.specularTraceMinExponent =
         settings.specularDepth > 0 && settings.bounces > 0 ? gpu::kSpecularTraceMinExponent : 0.0f;
+    fc.emitterCount = gpuScene.getEmitterCount();
+    fc.emitterWeight = float(gpuScene.getEmitters().totalWeight);
+    fc.areaSamples = uint32_t(settings.areaSamples);
     return fc;
 }
 

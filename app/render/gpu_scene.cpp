@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <span>
 
@@ -142,7 +143,8 @@ GpuScene::GpuScene(const Scene& scene, int lightResolution) : mLightResolution(l
         // diffuse.w: the texture's layer + 1, or 0 (shaders/shared/scene_data.h).
         const float layer = m.diffuseTexture == kNoTexture ? 0.0f : float(m.diffuseTexture) + 1.0f;
         materials.push_back({glm::vec4(m.diffuse, layer), glm::vec4(m.specular, m.phongExponent),
-                             glm::vec4(m.transmissive, m.ior), glm::vec4(m.emission, 0.0f)});
+                             glm::vec4(m.transmissive, m.ior),
+                             glm::vec4(m.emission, m.emissionTwoSided ? 1.0f : 0.0f)});
     }
     mPositions = gl::Buffer::fromSpan<glm::vec4>("scene positions", positions);
     mTriangles = gl::Buffer::fromSpan<glm::uvec4>("scene triangles", triangles);
@@ -174,6 +176,41 @@ GpuScene::GpuScene(const Scene& scene, int lightResolution) : mLightResolution(l
     mInstanceAreasM2 = computeInstanceAreas(scene);
     uploadTopLevel();
     uploadLights(scene);
+    uploadEmitters(scene);
+}
+
+void GpuScene::uploadEmitters(const Scene& scene) {
+    if (mHasEmission) mEmitters = collectEmitters(scene);
+    std::vector<gpu::GpuEmitter> rows;
+    rows.reserve(mEmitters.triangles.size());
+    double cumulative = 0.0;
+    for (size_t g = 0; g < mEmitters.groups.size(); ++g) {
+        const EmitterGroup& group = mEmitters.groups[g];
+        for (uint32_t i = group.first; i < group.first + group.count; ++i) {
+            const EmitterTriangle& e = mEmitters.triangles[i];
+            cumulative += e.weight;
+            // The last row's exactly 1, so a number in [0, 1) always finds a row.
+            const bool last = i + 1 == mEmitters.triangles.size();
+            const float cdf = last ? 1.0f : float(cumulative / mEmitters.totalWeight);
+            rows.push_back({glm::vec4(e.p0, cdf), glm::vec4(e.p1 - e.p0, float(e.areaM2)),
+                            glm::vec4(e.p2 - e.p0, glm::uintBitsToFloat(uint32_t(g))),
+                            glm::vec4(e.radiance, e.twoSided ? 1.0f : 0.0f)});
+        }
+    }
+    // A buffer to bind even without emitters (the shaders that read it check
+    // FrameConstants::emitterCount first).
+    if (rows.empty()) rows.push_back({});
+    const bool moved =
+        mEmitterRows.size() == rows.size() &&
+        std::memcmp(mEmitterRows.data(), rows.data(), rows.size() * sizeof(gpu::GpuEmitter)) != 0;
+    if (moved) ++mLightsVersion; // light gathered from the emitters where they were is stale
+    if (mEmitterBuffer.getSize() == rows.size() * sizeof(gpu::GpuEmitter) &&
+        mEmitterBuffer.getId() != 0) {
+        mEmitterBuffer.upload<gpu::GpuEmitter>(rows);
+    } else {
+        mEmitterBuffer = gl::Buffer::fromSpan<gpu::GpuEmitter>("scene emitters", rows);
+    }
+    mEmitterRows = std::move(rows);
 }
 
 void GpuScene::uploadTopLevel() {
@@ -196,6 +233,7 @@ void GpuScene::updateDynamic(const Scene& scene) {
     mTransformsMoved = true;
     mInstanceAreasM2 = computeInstanceAreas(scene); // scaled instances change them
     uploadLights(scene);
+    uploadEmitters(scene); // emitters move with their instances
 }
 
 void GpuScene::uploadLights(const Scene& scene) {
@@ -330,13 +368,15 @@ void GpuScene::bind() const {
     mBlasOrder.bindBase(BufferTarget::Storage, gpu::kBindingBlasTriangleOrder);
     mTlasNodes.bindBase(BufferTarget::Storage, gpu::kBindingTlasNodes);
     mTlasOrder.bindBase(BufferTarget::Storage, gpu::kBindingTlasInstanceOrder);
+    mEmitterBuffer.bindBase(BufferTarget::Storage, gpu::kBindingEmitters);
 }
 
 size_t GpuScene::getGpuBytes() const {
     return mPositions.getSize() + mTriangles.getSize() + mInstanceBuffer.getSize() +
            mPreviousTransforms.getSize() + mMaterials.getSize() + mLights.getSize() +
            mLightViews.getSize() + mBlasNodes.getSize() + mBlasOrder.getSize() +
-           mTlasNodes.getSize() + mTlasOrder.getSize() + mTexcoords.getSize() + getTextureBytes();
+           mTlasNodes.getSize() + mTlasOrder.getSize() + mTexcoords.getSize() +
+           mEmitterBuffer.getSize() + getTextureBytes();
 }
 
 size_t GpuScene::getTextureBytes() const {

@@ -6,8 +6,10 @@
 #include "bvh/bvh_scene.h"
 #include "gl/objects.h"
 #include "render/light_cameras.h"
+#include "scene/emitters.h"
 #include "scene/scene.h"
 
+#include <shared/emitter_data.h>
 #include <shared/scene_data.h>
 
 #include <optional>
@@ -55,6 +57,15 @@ class GpuScene {
     const gpu::GpuInstance& getInstance(uint32_t i) const { return mInstances[i]; }
     const std::vector<LightCamera>& getLightCameras() const { return mLightCameras; }
     uint32_t getLightCount() const { return mLightCount; }
+    // The emitting triangles as last uploaded (kBindingEmitters, in the table's pick order), and
+    // their count (0: the scene emits from no surface).
+    const Emitters& getEmitters() const { return mEmitters; }
+    uint32_t getEmitterCount() const { return uint32_t(mEmitters.triangles.size()); }
+    // What photons come from: the lights, then the emitter groups (the light index photons carry,
+    // ResultPhoton::incoming.w, and the per-light counters).
+    uint32_t getPhotonSourceCount() const {
+        return mLightCount + uint32_t(mEmitters.groups.size());
+    }
     // Light camera `view`'s projection, moved by the light jitter (setLightJitter).
     glm::mat4 getLightClipFromWorld(size_t view) const;
     // Moves every light camera by `texels` of its G-buffer (accumulated frames'
@@ -94,6 +105,7 @@ class GpuScene {
     void uploadLights(const Scene& scene);
     void uploadLightViews();
     void uploadTopLevel();
+    void uploadEmitters(const Scene& scene);
 
     std::vector<gpu::GpuInstance> mInstances;
     std::vector<LightCamera> mLightCameras;
@@ -127,6 +139,9 @@ class GpuScene {
     bool mHasTransmissive = true;
     bool mHasEmission = true;
     gl::Buffer mLights;
+    Emitters mEmitters;
+    std::vector<gpu::GpuEmitter> mEmitterRows; // as last uploaded
+    gl::Buffer mEmitterBuffer;                 // kBindingEmitters (one unused row for none)
     gl::Buffer mLightViews;
     BvhScene mBvh;
     gl::Buffer mBlasNodes;

@@ -51,18 +51,24 @@ double computeLightViewPower(const Light& light, const std::vector<LightCamera>&
 }
 
 std::vector<double> computeLightShares(const Scene& scene, const std::vector<LightCamera>& cameras,
-                                       int resolution) {
-    const size_t n = scene.lights.size();
+                                       int resolution, const Emitters& emitters) {
+    const size_t lights = scene.lights.size();
+    const size_t n = lights + emitters.groups.size();
     std::vector<double> shares(n, 0.0);
+    std::vector<bool> isExplicit(n, false);
     double explicitSum = 0.0;
     double derivedPower = 0.0;
     for (size_t i = 0; i < n; ++i) {
-        const Light& light = scene.lights[i];
-        if (light.photonShare >= 0.0f) {
-            shares[i] = light.photonShare;
-            explicitSum += double(light.photonShare);
+        const float share =
+            i < lights ? scene.lights[i].photonShare : emitters.groups[i - lights].photonShare;
+        if (share >= 0.0f) {
+            shares[i] = share;
+            isExplicit[i] = true;
+            explicitSum += double(share);
         } else {
-            shares[i] = computeLightViewPower(light, cameras, uint32_t(i), resolution);
+            shares[i] = i < lights ? computeLightViewPower(scene.lights[i], cameras, uint32_t(i),
+                                                           resolution)
+                                   : emitters.groups[i - lights].luminancePowerW;
             derivedPower += shares[i];
         }
     }
@@ -71,7 +77,7 @@ std::vector<double> computeLightShares(const Scene& scene, const std::vector<Lig
     const double explicitScale = explicitSum > 1.0 ? 1.0 / explicitSum : 1.0;
     const double remainder = std::max(0.0, 1.0 - explicitSum * explicitScale);
     for (size_t i = 0; i < n; ++i) {
-        if (scene.lights[i].photonShare >= 0.0f) {
+        if (isExplicit[i]) {
             shares[i] *= explicitScale;
         } else {
             shares[i] = derivedPower > 0.0 ? remainder * shares[i] / derivedPower : 0.0;
@@ -82,8 +88,9 @@ std::vector<double> computeLightShares(const Scene& scene, const std::vector<Lig
 
 std::vector<EmissionGrid> computeEmissionGrids(const Scene& scene,
                                                const std::vector<LightCamera>& cameras,
-                                               int resolution, uint32_t photons) {
-    const std::vector<double> shares = computeLightShares(scene, cameras, resolution);
+                                               int resolution, uint32_t photons,
+                                               const Emitters& emitters) {
+    const std::vector<double> shares = computeLightShares(scene, cameras, resolution, emitters);
     std::vector<uint32_t> viewsPerLight(scene.lights.size(), 0);
     for (const LightCamera& cam : cameras)
         if (!cam.isShadowOnly) ++viewsPerLight[cam.lightIndex];
@@ -101,6 +108,18 @@ std::vector<EmissionGrid> computeEmissionGrids(const Scene& scene,
         g.height = std::max(1u, uint32_t(std::lround(perView / g.width)));
         g.firstPhoton = first;
         first += g.getCount();
+        grids.push_back(g);
+    }
+    for (uint32_t group = 0; group < emitters.groups.size(); ++group) {
+        const auto count =
+            uint32_t(std::lround(double(photons) * shares[scene.lights.size() + group]));
+        if (count == 0) continue;
+        EmissionGrid g;
+        g.width = count;
+        g.height = 1;
+        g.firstPhoton = first;
+        g.emitterGroup = group;
+        first += count;
         grids.push_back(g);
     }
     return grids;

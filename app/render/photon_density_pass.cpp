@@ -81,7 +81,8 @@ void PhotonDensityPass::setTravelRadii(const FrameInputs& inputs, glm::uvec2 sli
 }
 
 void PhotonDensityPass::sumLightPower(const FrameInputs& inputs, glm::uvec2 slice) {
-    const size_t bytes = size_t(std::max(inputs.scene.getLightCount(), 1u)) * 2 * sizeof(uint32_t);
+    const size_t bytes =
+        size_t(std::max(inputs.scene.getPhotonSourceCount(), 1u)) * 2 * sizeof(uint32_t);
     if (mLightPower.getSize() != bytes) mLightPower = gl::Buffer("photon power per light", bytes);
     if (slice.x == 0) mLightPower.clearToZero();
     gpu::DensityParams params{};

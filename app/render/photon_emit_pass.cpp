@@ -33,6 +33,9 @@ PhotonEmitPass::PhotonEmitPass(const GBuffer& lightGBuffer, const gl::Buffer& im
                       {gl::ShaderStage::Geometry, "photon/photon_emit.geom"}},
            .defines = getGBufferDefines(),
            .feedbackVaryings = {"outPositionDistance", "outDirectionDensity", "outPower"}})),
+      mEmitterProgram(
+          ReloadableProgram({.label = "photon emit from emitters",
+                             .stages = {{gl::ShaderStage::Compute, "photon/emitter_emit.comp"}}})),
       mVertexArray("photon emit vao"), mFramebuffer("photon emit (no attachments)"),
       mFeedback("photon emit feedback"),
       mWritten("bounce photons written", gl::QueryTarget::PrimitivesWritten) {
@@ -42,8 +45,9 @@ PhotonEmitPass::PhotonEmitPass(const GBuffer& lightGBuffer, const gl::Buffer& im
 
 void PhotonEmitPass::execute(const FrameInputs& inputs) {
     const GpuScene& scene = inputs.scene;
-    mGrids = computeEmissionGrids(inputs.model, scene.getLightCameras(), scene.getLightResolution(),
-                                  static_cast<uint32_t>(inputs.settings.photons));
+    mGrids =
+        computeEmissionGrids(inputs.model, scene.getLightCameras(), scene.getLightResolution(),
+                             static_cast<uint32_t>(inputs.settings.photons), scene.getEmitters());
     const uint32_t photons = countPhotons(mGrids);
     const auto bounces = static_cast<uint32_t>(inputs.settings.bounces);
     // Every photon may store a result at every bounce, but most are absorbed or leave first: the
@@ -54,10 +58,12 @@ void PhotonEmitPass::execute(const FrameInputs& inputs) {
     std::vector<glm::uvec4> gridTable;
     mGridLights.clear();
     for (const EmissionGrid& g : mGrids) {
-        gridTable.emplace_back(g.firstPhoton, g.viewIndex, 0u, 0u);
-        mGridLights.push_back(scene.getLightCameras()[g.viewIndex].lightIndex);
+        const uint32_t light = g.isEmitterGroup() ? scene.getLightCount() + g.emitterGroup
+                                                  : scene.getLightCameras()[g.viewIndex].lightIndex;
+        gridTable.emplace_back(g.firstPhoton, g.viewIndex, light, 0u);
+        mGridLights.push_back(light);
     }
-    mLightCount = inputs.model.lights.size();
+    mLightCount = scene.getPhotonSourceCount();
     mBuffers.startFrame(gridTable, mLightCount);
     mBuffers.bindLightCounters();
 
@@ -85,6 +91,7 @@ void PhotonEmitPass::execute(const FrameInputs& inputs) {
     mWritten.begin();
     mFeedback.begin(gl::Primitive::Points);
     for (size_t i = 0; i < mGrids.size(); ++i) {
+        if (mGrids[i].isEmitterGroup()) continue;
         mParams.bind(i);
         gl::drawArrays(gl::Primitive::Points, 0, static_cast<int>(mGrids[i].getCount()));
     }
@@ -93,6 +100,54 @@ void PhotonEmitPass::execute(const FrameInputs& inputs) {
     gl::applyState({});
     // The count stays on the GPU: the query result lands in the counters block.
     mWritten.writeResultTo(mBuffers.getCounters(), offsetof(gpu::PhotonCounters, bounce));
+    emitFromEmitters(inputs);
+}
+
+void PhotonEmitPass::emitFromEmitters(const FrameInputs& inputs) {
+    const GpuScene& scene = inputs.scene;
+    const Emitters& emitters = scene.getEmitters();
+    std::vector<gpu::EmitterEmitParams> params;
+    std::vector<uint32_t> counts;
+    double cdf = 0.0; // the table's cumulative pick probability before each group
+    std::vector<double> groupLo;
+    for (const EmitterGroup& group : emitters.groups) {
+        groupLo.push_back(cdf);
+        cdf += group.weight / emitters.totalWeight;
+    }
+    for (const EmissionGrid& g : mGrids) {
+        if (!g.isEmitterGroup()) continue;
+        const EmitterGroup& group = emitters.groups[g.emitterGroup];
+        gpu::EmitterEmitParams p{};
+        p.firstEmitter = group.first;
+        p.emitterCount = group.count;
+        p.firstPhoton = g.firstPhoton;
+        p.photons = g.getCount();
+        p.light = scene.getLightCount() + g.emitterGroup;
+        p.seed = inputs.seed;
+        p.rngGenerator = inputs.settings.rngGenerator == gpu::kRngSobol
+                             ? gpu::kRngPcg
+                             : inputs.settings.rngGenerator;
+        p.firstBounce = inputs.settings.firstBounce;
+        p.rayOffsetM = scene.getRayEpsilon();
+        p.groupWeight = float(group.weight);
+        p.bounceCapacity = uint32_t(mBuffers.getBounce().getSize() / sizeof(gpu::BouncePhoton));
+        params.push_back(p);
+        counts.push_back(g.getCount());
+    }
+    if (params.empty()) return;
+    mEmitterParams.upload(params);
+    // The transform feedback's count is in the counters block: the emitters' photons add to it.
+    gl::memoryBarrier(gl::Barrier::QueryBuffer | gl::Barrier::TransformFeedback);
+    mBuffers.bind();
+    scene.bind();
+    inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
+    mEmitterProgram.use();
+    for (size_t i = 0; i < params.size(); ++i) {
+        mEmitterParams.bind(i);
+        gl::dispatchCompute((counts[i] + gpu::kEmitterEmitGroupSize - 1) /
+                            gpu::kEmitterEmitGroupSize);
+    }
+    gl::memoryBarrier(gl::Barrier::Storage);
 }
 
 std::vector<uint32_t> PhotonEmitPass::getEmittedPerLight() const {

@@ -84,9 +84,9 @@ DirectPass::DirectPass(const GBuffer& viewer, const GBuffer& lights)
     : mViewer(viewer), mLights(lights),
       mTarget("direct", gl::Format::RGBA32F, "direct/direct.frag", getGBufferDefines()),
       mParams("direct parameters"),
-      mEdgeFind(ReloadableProgram({.label = "direct light edges",
-                                   .stages = {{gl::ShaderStage::Compute, "direct/edge_find.comp"}},
-                                   .defines = getGBufferDefines()})),
+      mEdgeFind({.label = "direct light edges",
+                 .stages = {{gl::ShaderStage::Compute, "direct/edge_find.comp"}},
+                 .defines = getGBufferDefines()}),
       mEdgeShade({.label = "direct light over edge pixels",
                   .stages = {{gl::ShaderStage::Compute, "direct/edge_shade.comp"}},
                   .defines = getGBufferDefines()}),
@@ -113,6 +113,8 @@ void DirectPass::execute(const FrameInputs& inputs) {
         defines.push_back(getShadowRaysDefine(inputs.settings));
         if (draws[i].lightTypes != 0)
             defines.push_back("LIGHT_TYPES " + std::to_string(draws[i].lightTypes) + "u");
+        // The first draw shades the emitting triangles too (direct.frag).
+        if (i == 0 && inputs.scene.getEmitterCount() > 0) defines.emplace_back("EMITTERS 1");
         mTarget.draw({.blend = i == 0 ? gl::Blend::Off : gl::Blend::Additive}, draws[i].rect,
                      defines);
     }
@@ -131,7 +133,10 @@ void DirectPass::shadeEdges(const FrameInputs& inputs) {
     mEdges.upload(0, sizeof(cleared), &cleared);
     mEdges.bindBase(gl::BufferTarget::Storage, gpu::kBindingDirectEdges);
     mTarget.getTexture().bindUnit(gpu::kUnitDirect);
-    mEdgeFind.use();
+    // The emission channel exists in scenes with an emitter (getSceneGBufferChannels).
+    const std::string edgeEmission =
+        inputs.scene.hasEmission() ? "EDGE_EMISSION 1" : "EDGE_EMISSION 0";
+    mEdgeFind.get({edgeEmission}).use();
     gl::dispatchCompute((static_cast<unsigned>(inputs.width) + kFindGroupSide - 1) / kFindGroupSide,
                         (static_cast<unsigned>(inputs.height) + kFindGroupSide - 1) /
                             kFindGroupSide);
@@ -145,6 +150,7 @@ void DirectPass::shadeEdges(const FrameInputs& inputs) {
     mEdgeParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
     std::vector<std::string> defines = inputs.scene.getSurfaceDefines();
     defines.push_back(getShadowRaysDefine(inputs.settings));
+    defines.push_back(edgeEmission);
     mEdgeShade.get(defines).use();
     mTarget.getTexture().bindImage(gpu::kImageDirect, false, true);
     gl::dispatchComputeIndirect(mEdges, 0);

@@ -32,7 +32,7 @@ class DirectPass final : public Pass {
     const GBuffer& mLights;
     FullscreenTarget mTarget;
     ParamBlocks<gpu::DirectParams> mParams;
-    ReloadableProgram mEdgeFind;
+    ProgramVariants mEdgeFind;  // by EDGE_EMISSION
     ProgramVariants mEdgeShade; // by SHADOW_RAYS and the scene's surface defines
     gl::Buffer mEdges;          // DirectEdgeHeader, then a uint per pixel; made at first use
     gl::Buffer mEdgeParams;     // DirectEdgeParams

@@ -113,6 +113,8 @@ GltfMaterials importGltfMaterials(const GltfFile& file, const std::string& prefi
             emission *= computeLinearMean(scene.textures[t]);
         }
         m.emission = emission;
+        // A double-sided emissive surface emits from both sides (as Blender's emission does).
+        m.emissionTwoSided = in.doubleSided;
         m.name = prefix + (in.name.empty() ? strCat("material_", i) : in.name);
         const std::string problem = checkMaterialEnergy(m);
         if (!problem.empty()) file.fail(at, problem);

@@ -300,6 +300,11 @@ std::string JsonNode::readString() const {
     return mValue->get<std::string>();
 }
 
+bool JsonNode::readBool() const {
+    if (!mValue->is_boolean()) failGot("true or false");
+    return mValue->get<bool>();
+}
+
 std::vector<JsonNode> JsonNode::readFixedArray(size_t count, std::string_view what) const {
     if (!mValue->is_array() || mValue->size() != count) failGot(std::string(what));
     return getElements(what);

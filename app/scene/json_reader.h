@@ -75,6 +75,7 @@ class JsonNode {
     int64_t readInt(int64_t lo, int64_t hi) const;
     uint64_t readUint64() const;
     std::string readString() const;
+    bool readBool() const; // true or false, nothing else
 
     // Exactly 3 numbers; each element checked against `range` (errors name the element's path).
     glm::vec3 readVec3(const NumberRange& range = NumberRange::getCoordinate()) const;

@@ -81,7 +81,13 @@ struct Material {
     float phongExponent = 0.0f;
     glm::vec3 transmissive{0.0f};
     float ior = 1.5f;
-    glm::vec3 emission{0.0f}; // radiance W/(m^2 sr), seen by the camera, lights nothing
+    // Radiance W/(m^2 sr) leaving the side the triangles' winding faces (both sides with
+    // emissionTwoSided): an emitting surface is a light (scene/emitters.h).
+    glm::vec3 emission{0.0f};
+    bool emissionTwoSided = false;
+    // Share of the photon budget its emitting triangles take (< 0: derived from their power,
+    // as a light's photon_share).
+    float photonShare = -1.0f;
     // Index into Scene::textures whose colour multiplies `diffuse` (glTF base colour, MTL
     // map_Kd), or kNoTexture. Meshes with such materials carry texture coordinates.
     uint32_t diffuseTexture = kNoTexture;

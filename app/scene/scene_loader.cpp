@@ -145,7 +145,7 @@ Light parseLight(const JsonNode& node) {
         light.direction = node.get("direction").readDirection();
         light.irradiance = node.get("irradiance").readVec3(nonNegative);
     } else {
-        typeNode.failGot("a light type: point, spot or sun");
+        typeNode.failGot("a light type: point, spot, sun or area");
     }
     if (auto share = node.find("photon_share")) light.photonShare = share->readFloat(nonNegative);
     if (auto animation = node.find("animation")) {
@@ -226,8 +226,15 @@ Scene parseScene(const nlohmann::json& doc, const std::string& file, const std::
     for (size_t i = 0; i < objectNodes.size(); ++i)
         parseObject(objectNodes[i], i, context);
     if (auto lights = root.find("lights")) {
-        for (const JsonNode& light : lights->getElements("an array of lights")) {
-            scene.lights.push_back(parseLight(light));
+        const std::vector<JsonNode> lightNodes = lights->getElements("an array of lights");
+        for (size_t i = 0; i < lightNodes.size(); ++i) {
+            lightNodes[i].requireObject("a light");
+            const auto type = lightNodes[i].find("type");
+            if (type && type->getJson().is_string() && type->readString() == "area") {
+                parseAreaLight(lightNodes[i], i, context);
+            } else {
+                scene.lights.push_back(parseLight(lightNodes[i]));
+            }
         }
     }
     if (auto render = root.find("render")) parseRender(*render, scene.settings);

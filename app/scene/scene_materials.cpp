@@ -12,7 +12,8 @@ namespace {
 constexpr const char* kChannelNames[] = {"red", "green", "blue"};
 
 Material parseMaterial(const JsonNode& node, std::string name) {
-    node.checkKeys({"diffuse", "specular", "phong_exponent", "transmissive", "ior", "emission"},
+    node.checkKeys({"diffuse", "specular", "phong_exponent", "transmissive", "ior", "emission",
+                    "emission_two_sided", "photon_share"},
                    "a material");
     const NumberRange reflectance = NumberRange::getClosed(0.0, 1.0);
     Material material;
@@ -29,6 +30,10 @@ Material parseMaterial(const JsonNode& node, std::string name) {
     if (auto v = node.find("emission")) {
         // Bounded like light intensities (inf made NaN pixels).
         material.emission = v->readVec3(NumberRange::getClosed(0.0, 1e12));
+    }
+    if (auto v = node.find("emission_two_sided")) material.emissionTwoSided = v->readBool();
+    if (auto v = node.find("photon_share")) {
+        material.photonShare = v->readFloat(NumberRange::getClosed(0.0, 1.0));
     }
     const std::string problem = checkMaterialEnergy(material);
     if (!problem.empty()) node.fail(problem);

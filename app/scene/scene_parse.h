@@ -30,6 +30,10 @@ uint32_t resolveMaterial(const JsonNode& node, ParseContext& context);
 
 void parseObject(const JsonNode& object, size_t index, ParseContext& context);
 
+// An `area` light (element `index` of `lights`): an emitting rectangle or disc, added to the
+// scene as a mesh with its own material (scene/area_lights.cpp).
+void parseAreaLight(const JsonNode& node, size_t index, ParseContext& context);
+
 // What an `animation` moves decides which motions it may use (docs/scene-format.md).
 enum class AnimationTarget { Object, PointLight, SpotLight, SunLight };
 

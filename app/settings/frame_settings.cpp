@@ -169,6 +169,7 @@ FrameSettings resolveFrameSettings(const Settings& settings) {
     f.shadowBiasTexels = settings.getFloat("shadow_bias");
     f.shadows = getChoice(settings, "shadows");
     f.edgeSamples = settings.getInt("edge_samples");
+    f.areaSamples = settings.getInt("area_samples");
     f.seed = static_cast<uint32_t>(settings.getInt("seed"));
     f.photons = settings.getInt("photons");
     f.frameMsTarget = settings.getFloat("frame_ms_target");

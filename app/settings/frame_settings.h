@@ -29,6 +29,7 @@ struct FrameSettings {
     float shadowBiasTexels = 0.0f;
     uint32_t shadows = 0; // gpu::kShadowsMap, kShadowsRay
     int edgeSamples = 0;  // rays per pixel where the direct light changes inside it; 0: off
+    int areaSamples = 8;  // emitter samples per pixel for direct light (each a shadow ray)
     // Photons.
     uint32_t seed = 0;
     int photons = 0;

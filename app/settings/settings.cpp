@@ -59,6 +59,17 @@ const std::vector<SettingDesc>& table() {
          "rays averaged over each pixel at silhouettes, creases and shadow edges (anti-aliased "
          "direct light); 0 = off, the pixel's centre alone",
          {}},
+        {"area_samples",
+         Lights,
+         kAdvanced,
+         Int,
+         8,
+         1,
+         256,
+         "",
+         "points sampled on the emitting surfaces per pixel for their direct light, each with a "
+         "shadow ray (soft shadows; scenes without emitters ignore it)",
+         {}},
         {"shadow_map_size",
          Lights,
          kAdvanced,

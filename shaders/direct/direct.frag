@@ -4,7 +4,8 @@
 // pixels where it changes). Each draw shades the lights its parameter block lists (DirectPass:
 // the lights that reach every direction over the whole image, a spot light over the pixels its
 // cone can light), and adds to the draws before. Visibility from the light views' shadow maps,
-// or with SHADOW_RAYS 1 (setting shadows ray) from a ray to the light through the BVH.
+// or with SHADOW_RAYS 1 (setting shadows ray) from a ray to the light through the BVH; the
+// emitting triangles' light (EMITTERS 1) by rays always.
 #include "lib/scene_buffers.glsl"
 #include "lib/frame_constants.glsl"
 #include "lib/brdf.glsl"
@@ -12,10 +13,18 @@
 #ifndef SHADOW_RAYS
 #define SHADOW_RAYS 0
 #endif
-#if SHADOW_RAYS
+// EMITTERS 1: the scene has emitting triangles (DirectPass), shaded in the first draw from
+// area_samples points on them per pixel, each with a shadow ray (lib/emitters.glsl).
+#ifndef EMITTERS
+#define EMITTERS 0
+#endif
+#if SHADOW_RAYS || EMITTERS
 #include "lib/bvh.glsl"
 #endif
 #include "lib/direct_light.glsl"
+#if EMITTERS
+#include "lib/emitters.glsl"
+#endif
 
 #include "lib/viewer_gbuffer.glsl"
 
@@ -40,6 +49,14 @@ void main() {
         GpuLight light = lights[params.lights[k / 4u][k % 4u]];
         radiance += computeLightRadiance(light, position.xyz, n, diffuse, specular, wo, rayFloorM);
     }
+#if EMITTERS
+    if (params.firstDraw == 1u) {
+        uint key = uint(pixel.y) * uint(frame.imageSizePx.x) + uint(pixel.x);
+        radiance += computeEmitterRadiance(position.xyz, n, diffuse, specular, wo, rayFloorM, 0u,
+                                           frame.areaSamples,
+                                           computeEmitterSeeds(key, kEmitterSeedSlot));
+    }
+#endif
     // Coverage once: the draws after the first add their light and 0.
     outRadiance = vec4(radiance, params.firstDraw == 1u ? 1.0 : 0.0);
 }

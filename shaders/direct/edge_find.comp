@@ -8,7 +8,11 @@
 // than kDirectEdgeContrast of the brightest (a shadow's or a spot cone's edge; a smooth gradient
 // does not bend). Each listed pixel carries how many times edge_shade.comp halves its samples, by
 // its need (shared/scene_data.h). Counts edge_shade.comp's work groups as it lists: one for every
-// kDirectEdgePixelsPerGroup-th pixel.
+// kDirectEdgePixelsPerGroup-th pixel. With EDGE_EMISSION 1 (a scene with an emitter) the
+// emission a pixel shows adds to its light.
+#ifndef EDGE_EMISSION
+#define EDGE_EMISSION 0
+#endif
 #include "lib/frame_constants.glsl"
 
 #include "lib/viewer_gbuffer.glsl"
@@ -34,6 +38,10 @@ Shown getShown(ivec2 pixel) {
     s.instance = texelFetch(uPosition, pixel, 0).w;
     s.normal = texelFetch(uNormal, pixel, 0).xyz;
     s.radiance = s.instance > 0.5 ? texelFetch(uDirect, pixel, 0).rgb : vec3(0.0);
+#if EDGE_EMISSION
+    // What an emitter shows counts as its light: a lamp's outline is an edge like a shadow's.
+    s.radiance += texelFetch(uEmission, pixel, 0).rgb;
+#endif
     s.light = s.radiance / max(texelFetch(uDiffuse, pixel, 0).rgb, vec3(kMinReflectance));
     return s;
 }

@@ -6,8 +6,10 @@
 // takes a half or a quarter), each shaded as direct.frag shades a pixel's centre (every light,
 // the same shadow test); their mean replaces the pixel's direct light, and alpha the share that
 // hit a surface (compose.frag shows the background in the rest). The reference path tracer's box
-// filter, so silhouettes, creases and shadow edges come out as it draws them. Emission stays the
-// centre's (compose.frag).
+// filter, so silhouettes, creases and shadow edges come out as it draws them. With EDGE_EMISSION 1
+// (a scene with an emitter) the rays add what the emitters they hit show, and the pixel's own
+// emission (which compose.frag adds) is taken off their mean, so a lamp's outline is averaged
+// over the pixel like a shadow's.
 //
 // kDirectEdgeLanes invocations share a pixel, each taking every kDirectEdgeLanes-th sample: rays
 // through one pixel take the same way through the BVH side by side. They look for their surface
@@ -16,6 +18,9 @@
 // background, through the whole BVH, since a sliver of an instance no pixel centre shows (the
 // far ground beyond a roof's edge) may lie between. A sliver between two shown surfaces (the
 // seam of two boxes) is the one thing missed: the surface behind it is shaded instead.
+#ifndef EDGE_EMISSION
+#define EDGE_EMISSION 0
+#endif
 #include "lib/scene_buffers.glsl"
 #include "lib/frame_constants.glsl"
 #include "lib/bvh.glsl"
@@ -23,6 +28,7 @@
 #include "lib/brdf.glsl"
 #include "lib/lights.glsl"
 #include "lib/direct_light.glsl"
+#include "lib/emitters.glsl"
 #include "shared/photon_scatter.h"
 
 #include "lib/viewer_gbuffer.glsl"
@@ -73,8 +79,10 @@ bool traceEdgeRay(vec3 origin, vec3 dir, out RayHit hit) {
 const uint kEdgeSeedSlot = 0xfffffffdu;
 
 // The direct light seen through image point `point` (pixels from the lower left), and whether a
-// surface was hit.
-vec3 shadeThrough(vec2 point, float rayFloorM, out bool hitSurface) {
+// surface was hit; the emitters' from samples [firstEmitterSample, + emitterSamples) of the
+// pixel's sequence.
+vec3 shadeThrough(vec2 point, float rayFloorM, uint firstEmitterSample, uint emitterSamples,
+                  uvec3 emitterSeeds, out bool hitSurface) {
     // From the near plane on, as the G-buffer sees the scene.
     vec3 toNear = computeEyeToNear(point);
     vec3 origin = frame.cameraPosW + toNear;
@@ -87,7 +95,13 @@ vec3 shadeThrough(vec2 point, float rayFloorM, out bool hitSurface) {
     vec3 n = dot(geometric, dir) < 0.0 ? geometric : -geometric; // faces the eye, as the G-buffer's
     GpuMaterial m = materials[triangles[hit.triangle].w];
     vec3 diffuse = getHitDiffuse(m, hit.triangle, hit.barycentric);
-    return computeDirectRadiance(position, n, diffuse, m.specular, -dir, rayFloorM);
+    vec3 radiance = computeDirectRadiance(position, n, diffuse, m.specular, -dir, rayFloorM) +
+                    computeEmitterRadiance(position, n, diffuse, m.specular, -dir, rayFloorM,
+                                           firstEmitterSample, emitterSamples, emitterSeeds);
+#if EDGE_EMISSION
+    radiance += computeEmittedRadiance(m.emission, -dot(geometric, dir));
+#endif
+    return radiance;
 }
 
 void main() {
@@ -106,12 +120,17 @@ void main() {
         uint seedX = hashPcg(rng);
         uint seedY = hashPcg(seedX);
         float rayFloorM = params.rayFloorM;
+        // The emitters' samples shared out among the pixel's rays: about area_samples in all,
+        // as direct.frag takes at the pixel's centre.
+        uint emitterSamples = max(frame.areaSamples / samples, 1u);
+        uvec3 emitterSeeds = computeEmitterSeeds(at, kEmitterSeedSlot);
         for (uint i = lane; i < samples; i += kDirectEdgeLanes) {
             bool hitSurface;
             uvec2 bits = computeSobolBits(i).xy;
             vec2 u = vec2(uvec2(scrambleOwen(bits.x, seedX), scrambleOwen(bits.y, seedY)) >> 8u) *
                      (1.0 / 16777216.0);
-            sum.rgb += shadeThrough(vec2(pixel) + u, rayFloorM, hitSurface);
+            sum.rgb += shadeThrough(vec2(pixel) + u, rayFloorM, i * emitterSamples, emitterSamples,
+                                    emitterSeeds, hitSurface);
             sum.a += hitSurface ? 1.0 : 0.0;
         }
     }
@@ -119,5 +138,9 @@ void main() {
     barrier();
     if (!listed || lane != 0u) return;
     for (uint k = 1u; k < kDirectEdgeLanes; ++k) sum += laneSums[gl_LocalInvocationID.x + k];
-    imageStore(uDirectImage, pixel, sum / float(samples));
+    sum /= float(samples);
+#if EDGE_EMISSION
+    sum.rgb -= texelFetch(uEmission, pixel, 0).rgb; // compose.frag adds it back
+#endif
+    imageStore(uDirectImage, pixel, sum);
 }

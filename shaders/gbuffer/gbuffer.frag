@@ -19,7 +19,7 @@ flat in vec4 vDiffuse;
 flat in vec4 vSpecular;
 flat in vec4 vTransmissive;
 #if !GBUFFER_LIGHT_VIEWS
-flat in vec3 vEmission;
+flat in vec4 vEmission; // w = 1: both sides emit
 #endif
 flat in uint vInstance;
 
@@ -42,7 +42,8 @@ void main() {
 #if GBUFFER_LIGHT_VIEWS
     const vec3 emission = vec3(0.0); // light views keep no emission
 #else
-    vec3 emission = vEmission;
+    // One-sided emitters emit from the side their winding faces (lib/emitters.glsl).
+    vec3 emission = frontFace || vEmission.w > 0.5 ? vEmission.rgb : vec3(0.0);
 #endif
     GpuMaterial m = GpuMaterial(vDiffuse, vSpecular, vTransmissive, vec4(emission, 0.0));
     // Instance + 1: >= 1 on a surface (exact in float up to 2^24 instances).

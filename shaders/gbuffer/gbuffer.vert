@@ -28,7 +28,7 @@ flat out vec4 vDiffuse;
 flat out vec4 vSpecular;
 flat out vec4 vTransmissive;
 #if !GBUFFER_LIGHT_VIEWS
-flat out vec3 vEmission;
+flat out vec4 vEmission; // w = 1: both sides emit
 #endif
 flat out uint vInstance;
 
@@ -52,7 +52,7 @@ void main() {
     vSpecular = m.specular;
     vTransmissive = m.transmissive;
 #if !GBUFFER_LIGHT_VIEWS
-    vEmission = m.emission.rgb;
+    vEmission = m.emission;
 #endif
     vInstance = instance;
     gl_Position = params.clipFromWorld * positionW;

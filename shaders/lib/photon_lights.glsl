@@ -1,17 +1,18 @@
 // Which light a photon came from, and the per-light counters reports read
-// (shared/photon_data.h). Needs scene_buffers.glsl (lightViews) included before.
+// (shared/photon_data.h).
 #include "../shared/photon_data.h"
 
 layout(std430, binding = kBindingEmissionGrids) readonly buffer EmissionGrids { uvec4 emissionGrids[]; };
 layout(std430, binding = kBindingLightCounts) buffer LightCounts { LightPhotonCounters lightCounts[]; };
 
-// The light that emitted photon `id`: the grids (x = first photon, y = view) are in photon order.
+// The light that emitted photon `id`: the grids (x = first photon, y = view, z = light, or
+// emitter group after the lights) are in photon order.
 uint findPhotonLight(uint id) {
-    uint view = 0u;
+    uint light = 0u;
     for (uint g = 0u; g < uint(emissionGrids.length()); ++g) {
-        if (emissionGrids[g].x <= id) view = emissionGrids[g].y;
+        if (emissionGrids[g].x <= id) light = emissionGrids[g].z;
     }
-    return lightViews[view].info.x;
+    return light;
 }
 
 // Adds one to component `which` (0 bounced, 1 stored, 2 in view) of `light`'s counters; a light

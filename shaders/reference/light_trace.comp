@@ -1,5 +1,5 @@
-// Reference light tracer (reference_method = light): one path per invocation leaves a light
-// (chosen in proportion to its power) and scatters by the photons' own roulette; every vertex on
+// Reference light tracer (reference_method = light): one path per invocation leaves a light or a
+// point on the emitting triangles (chosen in proportion to their power) and scatters by the photons' own roulette; every vertex on
 // a diffuse or glossy surface is connected to the pinhole camera with a shadow ray and its
 // measured radiance added to the pixel it projects into. Delta lights seen through glass or in
 // mirrors (caustics) converge here, which camera paths with next-event estimation cannot do.
@@ -8,6 +8,7 @@
 #include "lib/frame_constants.glsl"
 #include "lib/bvh.glsl"
 #include "lib/brdf.glsl"
+#include "lib/emitters.glsl"
 #include "shared/photon_scatter.h"
 #include "shared/light_trace_data.h"
 
@@ -39,13 +40,38 @@ float computeLightPowerW(GpuLight light) {
     return mean * 2.0 * kTwoPiF;
 }
 
+// Set by sampleLightRay for a path that leaves an emitter: the point it leaves and the side.
+bool gFromEmitter = false;
+vec3 gEmitterNormal = vec3(0.0);
+
 // A ray leaving a light: origin, unit direction and power (W) divided by the probability of
 // choosing it. False when the scene has no light with power.
 bool sampleLightRay(inout uint rng, out vec3 origin, out vec3 dir, out vec3 powerW) {
     float total = 0.0;
     for (uint i = 0u; i < frame.lightCount; ++i) total += computeLightPowerW(lights[i]);
+    // The emitting triangles together, by the power they send out (mean over rgb).
+    float emitterPower = frame.emitterCount > 0u ? frame.emitterWeight : 0.0;
+    total += emitterPower;
     if (total <= 0.0) return false;
     float u = nextRandom(rng, kRngPcg) * total;
+    if (u < emitterPower) {
+        // A triangle by power, a uniform point, a side, a cosine-weighted direction: each path
+        // carries the emitters' power over the paths, in its triangle's colour.
+        GpuEmitter e = emitters[findEmitter(u / emitterPower)];
+        float r = sqrt(nextRandom(rng, kRngPcg));
+        float v = nextRandom(rng, kRngPcg);
+        vec3 point = e.p0Cdf.xyz + e.edge1Area.xyz * (r * (1.0 - v)) + e.edge2Group.xyz * (r * v);
+        vec3 normal = normalize(cross(e.edge1Area.xyz, e.edge2Group.xyz));
+        if (e.radiance.w > 0.5 && nextRandom(rng, kRngPcg) < 0.5) normal = -normal;
+        dir = sampleCosine(normal, nextRandom(rng, kRngPcg), nextRandom(rng, kRngPcg));
+        origin = point + normal * computeRayOffset(point, params.rayFloorM);
+        float choice = emitterPower / total;
+        powerW = e.radiance.rgb * (emitterPower / (computeMean(e.radiance.rgb) * choice));
+        gFromEmitter = true;
+        gEmitterNormal = normal;
+        return true;
+    }
+    u -= emitterPower;
     uint chosen = frame.lightCount - 1u;
     for (uint i = 0u; i < frame.lightCount; ++i) {
         float w = computeLightPowerW(lights[i]);
@@ -131,6 +157,12 @@ void main() {
     vec3 powerW;
     if (!sampleLightRay(rng, origin, dir, powerW)) return;
     if (all(equal(powerW, vec3(0.0)))) return;
+    if (gFromEmitter) {
+        // What the camera sees of the emitter: a Lambertian source is a white diffuse surface
+        // that sends out its power (f = 1 / pi).
+        GpuMaterial white = GpuMaterial(vec4(1.0, 1.0, 1.0, 0.0), vec4(0.0), vec4(0.0), vec4(0.0));
+        connectToCamera(origin, gEmitterNormal, gEmitterNormal, white, powerW);
+    }
     uint bounces = params.bounces;
     for (uint vertex = 1u; vertex <= bounces + 1u; ++vertex) {
         RayHit hit;

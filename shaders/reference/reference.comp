@@ -1,7 +1,10 @@
 // Reference path tracer (one sample per pixel per dispatch, accumulated): camera paths through
 // the same BVH, materials and lights as the photon mapper. Next-event estimation to every light
 // with a shadow ray at each vertex (point, spot and sun lights are delta lights: paths cannot hit
-// them), BSDF sampling by the shared scatterSurface, Russian roulette after a few vertices.
+// them), and to one point on the emitting triangles picked by power (lib/emitters.glsl), whose
+// light a BSDF-sampled ray that hits an emitter gathers too: the two weighed by the power
+// heuristic (MIS), so that small bright emitters and large dim ones both converge. BSDF sampling
+// by the shared scatterSurface, Russian roulette after a few vertices.
 // `bounces` B counts reflections between the light and the visible surface, as in ispm mode:
 // light is gathered at vertices 1..B+1 and the path stops there.
 #include "lib/scene_buffers.glsl"
@@ -12,6 +15,7 @@
 #include "lib/lights.glsl"
 #define SHADOW_RAYS 1 // next-event estimation: a shadow ray per light
 #include "lib/direct_light.glsl"
+#include "lib/emitters.glsl"
 #include "shared/photon_scatter.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -28,6 +32,9 @@ vec3 traceCameraPath(vec2 pixel, inout uint rng) {
     vec3 radiance = vec3(0.0);
     vec3 throughput = vec3(1.0);
     uint bounces = params.bounces;
+    // The pdf of the direction the path left its last vertex by; 0 for the eye's ray and a
+    // mirror's or glass's (delta) directions, whose emitter hits light sampling cannot find.
+    float lastPdf = 0.0;
     for (uint vertex = 1u; ; ++vertex) {
         RayHit hit;
         if (!traceRay(origin, dir, kNoHitDistance, hit)) {
@@ -40,17 +47,45 @@ vec3 traceCameraPath(vec2 pixel, inout uint rng) {
         vec3 n = frontFace ? geometric : -geometric;
         GpuMaterial m = materials[triangles[hit.triangle].w];
         vec3 diffuse = getHitDiffuse(m, hit.triangle, hit.barycentric);
-        if (vertex == 1u) radiance += m.emission.rgb; // emission is seen, it lights nothing
+        if (any(greaterThan(m.emission.rgb, vec3(0.0)))) {
+            float cosAtEmitter = -dot(geometric, dir);
+            float weight = 1.0;
+            if (lastPdf > 0.0 && frame.emitterCount > 0u) {
+                uvec4 tri = triangles[hit.triangle];
+                mat4 world = instances[hit.instance].worldFromObject;
+                float lightPdf = computeEmitterPdf(m.emission, origin,
+                                                   (world * vec4(positions[tri.x].xyz, 1.0)).xyz,
+                                                   (world * vec4(positions[tri.y].xyz, 1.0)).xyz,
+                                                   (world * vec4(positions[tri.z].xyz, 1.0)).xyz,
+                                                   hit.t, cosAtEmitter);
+                weight = computeMisWeight(lastPdf, lightPdf);
+            }
+            radiance += throughput * computeEmittedRadiance(m.emission, cosAtEmitter) * weight;
+        }
         vec3 wo = -dir;
         radiance += throughput * computeDirectRadiance(position, n, diffuse, m.specular, wo,
                                                        params.rayOffsetM);
-        float offset = computeRayOffset(position, params.rayOffsetM);
-        if (vertex > bounces) break;
         float total = computeLobeAlbedo(diffuse, m.specular, m.transmissive);
-        if (total <= 0.0) break;
+        bool scatters = vertex <= bounces && total > 0.0;
+        if (frame.emitterCount > 0u) {
+            vec3 u = vec3(nextRandom(rng, kRngPcg), nextRandom(rng, kRngPcg), nextRandom(rng, kRngPcg));
+            EmitterSample s = sampleEmitter(position, u, params.rayOffsetM);
+            vec3 light = shadeEmitterSample(s, position, n, diffuse, m.specular, wo, params.rayOffsetM);
+            // Where the path goes on, BSDF sampling could reach the same point.
+            if (scatters && any(greaterThan(light, vec3(0.0)))) {
+                light *= computeMisWeight(s.pdf, computeScatterPdf(dir, n, diffuse, m.specular, s.wi, 1.0 / total));
+            }
+            radiance += throughput * light;
+        }
+        float offset = computeRayOffset(position, params.rayOffsetM);
+        if (!scatters) break;
+        vec3 dirIn = dir;
         uint event = scatterSurface(dir, throughput, n, diffuse, m.specular, m.transmissive,
                                     frontFace, rng, kRngPcg, 1.0 / total);
         if (event == kScatterAbsorbed) break;
+        lastPdf = event == kScatterDiffuse || event == kScatterSpecular
+                      ? computeScatterPdf(dirIn, n, diffuse, m.specular, dir, 1.0 / total)
+                      : 0.0;
         if (event == kScatterRefract) {
             throughput *= computeRefractedRadianceScale(frontFace, m.transmissive.w);
         }

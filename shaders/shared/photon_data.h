@@ -94,7 +94,7 @@ ISPM_CONST int kBindingResultPhotons = 12;
 ISPM_CONST int kBindingPhotonCounters = 13;
 ISPM_CONST int kBindingSplatDraws = 14;    // indexed draw commands, kSplatDrawUvec4s per splat pass
 ISPM_CONST int kBindingLightCounts = 19;   // uvec4 per light (LightPhotonCounters)
-ISPM_CONST int kBindingEmissionGrids = 20; // uvec4 per grid: first photon, view, 0, 0
+ISPM_CONST int kBindingEmissionGrids = 20; // uvec4 per grid: first photon, view, light, 0
 ISPM_CONST uint kReflectionBits = 8u;      // ResultPhoton.incoming.w: reflections, then light
 ISPM_CONST int kBindingCausticList = 28;   // splat.vert: the caustic photons' draw command
                                            // (kSplatDrawUvec4s), then their indices (the tail of

@@ -241,6 +241,35 @@ ISPM_INLINE uint scatterSurfaceWith(ISPM_INOUT(vec3) dir, ISPM_INOUT(vec3) weigh
     return kScatterAbsorbed;
 }
 
+// The density per solid angle with which scatterSurfaceWith draws the direction `out_` for a path
+// along `dir` (its diffuse and Phong lobes; the transmissive lobe's directions are deltas and
+// have none): what the path tracer weighs a BSDF-sampled ray that hits an emitter with against
+// light sampling (multiple importance sampling).
+ISPM_INLINE float computeScatterPdf(vec3 dir, vec3 n, vec3 diffuse, vec4 specular, vec3 out_,
+                                    float selectScale) {
+    float cosOut = dot(out_, n);
+    if (cosOut <= 0.0f) return 0.0f;
+    vec3 rhoS = vec3(specular);
+    float cosIn = clamp(-dot(dir, n), 0.0f, 1.0f);
+    float pd = computeMean(computeDiffuseAlbedo(diffuse, rhoS, cosIn)) * selectScale;
+    float pdf = pd * cosOut * kInvPiF;
+    float ps = computeMean(computeSpecularAlbedo(diffuse, rhoS, cosIn)) * selectScale;
+    float cosAlpha = dot(out_, reflect(dir, n));
+    if (ps > 0.0f && cosAlpha > 0.0f) {
+        float exponent = specular.w;
+        pdf += ps * (exponent + 1.0f) / kTwoPiF * pow(cosAlpha, exponent);
+    }
+    return pdf;
+}
+
+// The power heuristic (Veach 1997, beta = 2): the weight of a sample drawn with pdf `chosen`
+// where another strategy would have drawn it with pdf `other`.
+ISPM_INLINE float computeMisWeight(float chosen, float other) {
+    float a = chosen * chosen;
+    float b = other * other;
+    return a + b > 0.0f ? a / (a + b) : 0.0f;
+}
+
 // Radiance across a refracting surface changes with the square of the index ratio (L / n^2 is
 // what is conserved); flux does not. A camera path carries radiance backwards along its own
 // direction, so at a refraction its throughput takes (n_incident / n_transmitted)^2 = eta^2 of

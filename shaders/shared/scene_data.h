@@ -13,7 +13,8 @@ struct GpuMaterial {
                        // texture array (0: none; exact in float), its RGB multiplies rgb
     vec4 specular;     // rgb reflectance, w = Phong exponent
     vec4 transmissive; // rgb transmittance, w = index of refraction
-    vec4 emission;     // rgb radiance W/(m^2 sr), w unused
+    vec4 emission;     // rgb radiance W/(m^2 sr), w = 1: both sides emit (else the side the
+                       // winding faces)
 };
 ISPM_STATIC_ASSERT_SIZE(GpuMaterial, 64);
 
@@ -129,9 +130,12 @@ struct FrameConstants {
     // The Phong exponent from which the specular pass traces a viewer pixel's lobe as a mirror
     // ray (the splats then shade only its diffuse lobe); 0: nothing traced (specular_depth 0).
     float specularTraceMinExponent;
-    float padding0;
-    float padding1;
-    float padding2;
+    // Emitting triangles (shared/emitter_data.h, kBindingEmitters): their count (0: none) and
+    // the sum of their sampling weights (W).
+    uint emitterCount;
+    float emitterWeight;
+    // Samples of the emitters per viewer pixel (setting area_samples).
+    uint areaSamples;
 };
 ISPM_STATIC_ASSERT_SIZE(FrameConstants, 288);
 

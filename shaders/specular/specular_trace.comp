@@ -18,6 +18,7 @@
 #include "lib/lights.glsl"
 #define SHADOW_RAYS 1 // shadow maps see only what light cameras see
 #include "lib/direct_light.glsl"
+#include "lib/emitters.glsl"
 #include "shared/specular_data.h"
 
 #include "lib/viewer_gbuffer.glsl"
@@ -114,6 +115,8 @@ void main() {
     scatterRays(position.xyz, normal.xyz, normal.w > 0.0, dir, texelFetch(uDiffuse, pixel, 0).rgb,
                 specular, transmissive, vec3(1.0), 1u);
     vec3 radiance = vec3(0.0);
+    uvec3 emitterSeeds = computeEmitterSeeds(uint(pixel.y) * uint(frame.imageSizePx.x) + uint(pixel.x),
+                                             kEmitterSeedSlot);
     while (gTop > 0u) {
         PendingRay ray = gStack[--gTop];
         RayHit hit;
@@ -132,6 +135,11 @@ void main() {
         // Direct light with a shadow ray per light (glass blocks them, as in the reference).
         vec3 direct = computeDirectRadiance(hitPosition, n, diffuse, m.specular, -ray.dir,
                                             params.rayFloorM);
+        // The emitters' light at the hit from area_samples points, and what an emitter shows.
+        direct += computeEmitterRadiance(hitPosition, n, diffuse, m.specular, -ray.dir,
+                                         params.rayFloorM, gTop * frame.areaSamples,
+                                         frame.areaSamples, emitterSeeds);
+        direct += computeEmittedRadiance(m.emission, -dot(geometric, ray.dir));
         radiance += ray.weight * (direct + lookUpIndirect(hitPosition, diffuse));
         if (ray.level < levels) {
             scatterRays(hitPosition, n, frontFace, ray.dir, diffuse, m.specular, m.transmissive,

@@ -22,6 +22,8 @@ constexpr int kSize = 8;
 glm::vec3 renderDisplay(glm::vec3 radiance, const char* tonemap) {
     Scene scene = makeLitPlane(0.0f, 0.0f, 1.0f, 100.0f); // black, unlit: emission alone
     scene.materials[0].emission = radiance;
+    // The plane's winding faces down, away from the camera above it: it emits on both sides.
+    scene.materials[0].emissionTwoSided = true;
     scene.camera.position = {0.0f, 1.0f, 0.01f};
     scene.camera.target = {0.0f, 0.0f, 0.0f};
     Settings settings = makeTestSettings({{"width", kSize},
@@ -71,6 +73,7 @@ TEST_F(TonemapTest, ThesisOperatorKeepsTheHueOfSaturatedColours) {
 // rendered by `runner` after the plane's emission changed.
 float renderWhite(FrameRunner& runner, Scene& scene, float radiance, double timeStepS) {
     scene.materials[0].emission = glm::vec3(radiance);
+    scene.materials[0].emissionTwoSided = true; // seen from above, its back
     runner.updateScene(SceneChange::AddedOrRemoved);
     runner.setPresentation({.timeStepS = timeStepS});
     runner.renderFrame();
