@@ -95,14 +95,15 @@ void printTimings(const FrameRunner& runner, const gl::ContextInfo& info) {
         const Emitters& emitters = runner.getPasses().scene.getEmitters();
         for (size_t i = 0; i < c.perLight.size(); ++i) {
             const LightCounts& l = c.perLight[i];
-            // The lights, then the emitter groups (GpuScene::getPhotonSourceCount).
-            const std::string name =
-                i < model.lights.size()
-                    ? strCat("light ", i, " (", getLightTypeName(model.lights[i].type), ")")
-                    : strCat(
-                          "emitter '",
-                          model.materials[emitters.groups[i - model.lights.size()].material].name,
-                          "'");
+            // The lights, the emitter groups, the environment (GpuScene::getPhotonSourceCount).
+            const size_t group = i - model.lights.size();
+            std::string name = "environment";
+            if (i < model.lights.size()) {
+                name = strCat("light ", i, " (", getLightTypeName(model.lights[i].type), ")");
+            } else if (group < emitters.groups.size()) {
+                name =
+                    strCat("emitter '", model.materials[emitters.groups[group].material].name, "'");
+            }
             std::printf("  %s: %u emitted, %u after the first bounce, %u stored (%u in view)\n",
                         name.c_str(), l.emitted, l.bounced, l.stored, l.inView);
         }

@@ -177,6 +177,10 @@ GpuScene::GpuScene(const Scene& scene, int lightResolution) : mLightResolution(l
     uploadTopLevel();
     uploadLights(scene);
     uploadEmitters(scene);
+    const gpu::GpuEnvironment environment = makeGpuEnvironment(scene.environment);
+    mEnvironmentMean = computeEnvironmentMean(scene.environment);
+    mEnvironment =
+        gl::Buffer::fromSpan<gpu::GpuEnvironment>("scene environment", std::span(&environment, 1));
 }
 
 void GpuScene::uploadEmitters(const Scene& scene) {
@@ -369,6 +373,7 @@ void GpuScene::bind() const {
     mTlasNodes.bindBase(BufferTarget::Storage, gpu::kBindingTlasNodes);
     mTlasOrder.bindBase(BufferTarget::Storage, gpu::kBindingTlasInstanceOrder);
     mEmitterBuffer.bindBase(BufferTarget::Storage, gpu::kBindingEmitters);
+    mEnvironment.bindBase(BufferTarget::Storage, gpu::kBindingEnvironment);
 }
 
 size_t GpuScene::getGpuBytes() const {

@@ -64,8 +64,19 @@ class GpuScene {
     // What photons come from: the lights, then the emitter groups (the light index photons carry,
     // ResultPhoton::incoming.w, and the per-light counters).
     uint32_t getPhotonSourceCount() const {
-        return mLightCount + uint32_t(mEmitters.groups.size());
+        return mLightCount + uint32_t(mEmitters.groups.size()) + (hasEnvironment() ? 1u : 0u);
     }
+    // Whether the scene has an environment (kBindingEnvironment), and the power (W, luminance)
+    // it sends through a disc of the scene's bounding sphere facing each direction: its share
+    // of the photons, which enter through that disc.
+    bool hasEnvironment() const { return mEnvironmentMean.solidAngleSr > 0.0; }
+    double getEnvironmentPowerW() const {
+        const double r = getBoundingRadius();
+        return mEnvironmentMean.luminance * mEnvironmentMean.solidAngleSr * 3.141592653589793 * r *
+               r;
+    }
+    // The radius of the sphere around getBounds (m).
+    double getBoundingRadius() const { return 0.5 * double(glm::length(mBounds.getExtent())); }
     // Light camera `view`'s projection, moved by the light jitter (setLightJitter).
     glm::mat4 getLightClipFromWorld(size_t view) const;
     // Moves every light camera by `texels` of its G-buffer (accumulated frames'
@@ -139,6 +150,8 @@ class GpuScene {
     bool mHasTransmissive = true;
     bool mHasEmission = true;
     gl::Buffer mLights;
+    gl::Buffer mEnvironment; // kBindingEnvironment
+    EnvironmentMean mEnvironmentMean;
     Emitters mEmitters;
     std::vector<gpu::GpuEmitter> mEmitterRows; // as last uploaded
     gl::Buffer mEmitterBuffer;                 // kBindingEmitters (one unused row for none)

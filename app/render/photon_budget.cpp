@@ -51,16 +51,19 @@ double computeLightViewPower(const Light& light, const std::vector<LightCamera>&
 }
 
 std::vector<double> computeLightShares(const Scene& scene, const std::vector<LightCamera>& cameras,
-                                       int resolution, const Emitters& emitters) {
+                                       int resolution, const Emitters& emitters,
+                                       double environmentPowerW) {
     const size_t lights = scene.lights.size();
-    const size_t n = lights + emitters.groups.size();
+    const size_t groups = emitters.groups.size();
+    const size_t n = lights + groups + (environmentPowerW > 0.0 ? 1 : 0);
     std::vector<double> shares(n, 0.0);
     std::vector<bool> isExplicit(n, false);
     double explicitSum = 0.0;
     double derivedPower = 0.0;
     for (size_t i = 0; i < n; ++i) {
-        const float share =
-            i < lights ? scene.lights[i].photonShare : emitters.groups[i - lights].photonShare;
+        const float share = i < lights            ? scene.lights[i].photonShare
+                            : i < lights + groups ? emitters.groups[i - lights].photonShare
+                                                  : -1.0f;
         if (share >= 0.0f) {
             shares[i] = share;
             isExplicit[i] = true;
@@ -68,7 +71,8 @@ std::vector<double> computeLightShares(const Scene& scene, const std::vector<Lig
         } else {
             shares[i] = i < lights ? computeLightViewPower(scene.lights[i], cameras, uint32_t(i),
                                                            resolution)
-                                   : emitters.groups[i - lights].luminancePowerW;
+                        : i < lights + groups ? emitters.groups[i - lights].luminancePowerW
+                                              : environmentPowerW;
             derivedPower += shares[i];
         }
     }
@@ -89,8 +93,9 @@ std::vector<double> computeLightShares(const Scene& scene, const std::vector<Lig
 std::vector<EmissionGrid> computeEmissionGrids(const Scene& scene,
                                                const std::vector<LightCamera>& cameras,
                                                int resolution, uint32_t photons,
-                                               const Emitters& emitters) {
-    const std::vector<double> shares = computeLightShares(scene, cameras, resolution, emitters);
+                                               const Emitters& emitters, double environmentPowerW) {
+    const std::vector<double> shares =
+        computeLightShares(scene, cameras, resolution, emitters, environmentPowerW);
     std::vector<uint32_t> viewsPerLight(scene.lights.size(), 0);
     for (const LightCamera& cam : cameras)
         if (!cam.isShadowOnly) ++viewsPerLight[cam.lightIndex];
@@ -122,7 +127,23 @@ std::vector<EmissionGrid> computeEmissionGrids(const Scene& scene,
         first += count;
         grids.push_back(g);
     }
+    if (environmentPowerW > 0.0) {
+        const auto count = uint32_t(std::lround(double(photons) * shares.back()));
+        if (count > 0) {
+            EmissionGrid g;
+            g.width = count;
+            g.height = 1;
+            g.firstPhoton = first;
+            g.emitterGroup = kEnvironmentSource;
+            grids.push_back(g);
+        }
+    }
     return grids;
+}
+
+double computeEnvironmentPower(const Environment& environment, double radiusM) {
+    const EnvironmentMean mean = computeEnvironmentMean(environment);
+    return mean.luminance * mean.solidAngleSr * glm::pi<double>() * radiusM * radiusM;
 }
 
 uint32_t countPhotons(const std::vector<EmissionGrid>& grids) {

@@ -36,6 +36,9 @@ PhotonEmitPass::PhotonEmitPass(const GBuffer& lightGBuffer, const gl::Buffer& im
       mEmitterProgram(
           ReloadableProgram({.label = "photon emit from emitters",
                              .stages = {{gl::ShaderStage::Compute, "photon/emitter_emit.comp"}}})),
+      mEnvironmentProgram(ReloadableProgram(
+          {.label = "photon emit from the environment",
+           .stages = {{gl::ShaderStage::Compute, "photon/environment_emit.comp"}}})),
       mVertexArray("photon emit vao"), mFramebuffer("photon emit (no attachments)"),
       mFeedback("photon emit feedback"),
       mWritten("bounce photons written", gl::QueryTarget::PrimitivesWritten) {
@@ -45,9 +48,9 @@ PhotonEmitPass::PhotonEmitPass(const GBuffer& lightGBuffer, const gl::Buffer& im
 
 void PhotonEmitPass::execute(const FrameInputs& inputs) {
     const GpuScene& scene = inputs.scene;
-    mGrids =
-        computeEmissionGrids(inputs.model, scene.getLightCameras(), scene.getLightResolution(),
-                             static_cast<uint32_t>(inputs.settings.photons), scene.getEmitters());
+    mGrids = computeEmissionGrids(inputs.model, scene.getLightCameras(), scene.getLightResolution(),
+                                  static_cast<uint32_t>(inputs.settings.photons),
+                                  scene.getEmitters(), scene.getEnvironmentPowerW());
     const uint32_t photons = countPhotons(mGrids);
     const auto bounces = static_cast<uint32_t>(inputs.settings.bounces);
     // Every photon may store a result at every bounce, but most are absorbed or leave first: the
@@ -59,7 +62,9 @@ void PhotonEmitPass::execute(const FrameInputs& inputs) {
     mGridLights.clear();
     for (const EmissionGrid& g : mGrids) {
         const uint32_t light = g.isEmitterGroup() ? scene.getLightCount() + g.emitterGroup
-                                                  : scene.getLightCameras()[g.viewIndex].lightIndex;
+                               : g.isEnvironment()
+                                   ? scene.getPhotonSourceCount() - 1u
+                                   : scene.getLightCameras()[g.viewIndex].lightIndex;
         gridTable.emplace_back(g.firstPhoton, g.viewIndex, light, 0u);
         mGridLights.push_back(light);
     }
@@ -91,7 +96,7 @@ void PhotonEmitPass::execute(const FrameInputs& inputs) {
     mWritten.begin();
     mFeedback.begin(gl::Primitive::Points);
     for (size_t i = 0; i < mGrids.size(); ++i) {
-        if (mGrids[i].isEmitterGroup()) continue;
+        if (mGrids[i].isEmitterGroup() || mGrids[i].isEnvironment()) continue;
         mParams.bind(i);
         gl::drawArrays(gl::Primitive::Points, 0, static_cast<int>(mGrids[i].getCount()));
     }
@@ -100,20 +105,14 @@ void PhotonEmitPass::execute(const FrameInputs& inputs) {
     gl::applyState({});
     // The count stays on the GPU: the query result lands in the counters block.
     mWritten.writeResultTo(mBuffers.getCounters(), offsetof(gpu::PhotonCounters, bounce));
-    emitFromEmitters(inputs);
+    emitFromSurfacesAndSky(inputs);
 }
 
-void PhotonEmitPass::emitFromEmitters(const FrameInputs& inputs) {
+void PhotonEmitPass::emitFromSurfacesAndSky(const FrameInputs& inputs) {
     const GpuScene& scene = inputs.scene;
     const Emitters& emitters = scene.getEmitters();
     std::vector<gpu::EmitterEmitParams> params;
     std::vector<uint32_t> counts;
-    double cdf = 0.0; // the table's cumulative pick probability before each group
-    std::vector<double> groupLo;
-    for (const EmitterGroup& group : emitters.groups) {
-        groupLo.push_back(cdf);
-        cdf += group.weight / emitters.totalWeight;
-    }
     for (const EmissionGrid& g : mGrids) {
         if (!g.isEmitterGroup()) continue;
         const EmitterGroup& group = emitters.groups[g.emitterGroup];
@@ -134,17 +133,39 @@ void PhotonEmitPass::emitFromEmitters(const FrameInputs& inputs) {
         params.push_back(p);
         counts.push_back(g.getCount());
     }
-    if (params.empty()) return;
-    mEmitterParams.upload(params);
-    // The transform feedback's count is in the counters block: the emitters' photons add to it.
+    const auto environment = std::find_if(mGrids.begin(), mGrids.end(),
+                                          [](const EmissionGrid& g) { return g.isEnvironment(); });
+    if (params.empty() && environment == mGrids.end()) return;
+    // The transform feedback's count is in the counters block: these photons add to it.
     gl::memoryBarrier(gl::Barrier::QueryBuffer | gl::Barrier::TransformFeedback);
     mBuffers.bind();
     scene.bind();
     inputs.frameConstants.bindBase(gl::BufferTarget::Uniform, gpu::kBindingFrameConstants);
-    mEmitterProgram.use();
-    for (size_t i = 0; i < params.size(); ++i) {
-        mEmitterParams.bind(i);
-        gl::dispatchCompute((counts[i] + gpu::kEmitterEmitGroupSize - 1) /
+    if (!params.empty()) {
+        mEmitterParams.upload(params);
+        mEmitterProgram.use();
+        for (size_t i = 0; i < params.size(); ++i) {
+            mEmitterParams.bind(i);
+            gl::dispatchCompute((counts[i] + gpu::kEmitterEmitGroupSize - 1) /
+                                gpu::kEmitterEmitGroupSize);
+        }
+    }
+    if (environment != mGrids.end()) {
+        gpu::EnvironmentEmitParams p{};
+        p.sceneCentreW = scene.getBounds().getCenter();
+        p.sceneRadiusM = float(scene.getBoundingRadius());
+        p.firstPhoton = environment->firstPhoton;
+        p.photons = environment->getCount();
+        p.light = scene.getPhotonSourceCount() - 1u;
+        p.seed = inputs.seed;
+        p.rngGenerator = inputs.settings.rngGenerator == gpu::kRngLcg ? gpu::kRngLcg : gpu::kRngPcg;
+        p.firstBounce = inputs.settings.firstBounce;
+        p.bounceCapacity = uint32_t(mBuffers.getBounce().getSize() / sizeof(gpu::BouncePhoton));
+        p.rayOffsetM = scene.getRayEpsilon();
+        mEnvironmentParams.upload(std::span(&p, 1));
+        mEnvironmentProgram.use();
+        mEnvironmentParams.bind(0);
+        gl::dispatchCompute((p.photons + gpu::kEmitterEmitGroupSize - 1) /
                             gpu::kEmitterEmitGroupSize);
     }
     gl::memoryBarrier(gl::Barrier::Storage);

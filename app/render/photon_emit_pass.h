@@ -2,8 +2,9 @@
 // reads the light's G-buffer, makes the first bounce and writes survivors into the bounce buffer
 // by transform feedback. The number written goes from a query into the counters buffer on the GPU.
 // Then each group of emitting triangles (docs/design.md "Emitters") sends its photons from points
-// on them through the BVH to their first hit (photon/emitter_emit.comp), bounced there as the
-// geometry shader bounces a light view's and appended after them.
+// on them through the BVH to their first hit (photon/emitter_emit.comp), and the environment its
+// own from a disc around the scene (photon/environment_emit.comp), bounced there as the geometry
+// shader bounces a light view's and appended after them.
 #pragma once
 
 #include "render/gbuffer.h"
@@ -13,6 +14,7 @@
 #include "render/photon_buffers.h"
 
 #include <shared/emitter_data.h>
+#include <shared/environment_data.h>
 #include <shared/photon_data.h>
 
 namespace ispm {
@@ -28,6 +30,7 @@ class PhotonEmitPass final : public Pass {
     void reloadPrograms(ShaderReloadReport& report) override {
         mProgram.reloadIfChanged(report);
         mEmitterProgram.reloadIfChanged(report);
+        mEnvironmentProgram.reloadIfChanged(report);
     }
     // The grids of the last frame (emitted = their photon total).
     const std::vector<EmissionGrid>& getGrids() const { return mGrids; }
@@ -35,7 +38,8 @@ class PhotonEmitPass final : public Pass {
     std::vector<uint32_t> getEmittedPerLight() const;
 
   private:
-    void emitFromEmitters(const FrameInputs& inputs);
+    // The emitting triangles' and the environment's photons, traced to their first hit.
+    void emitFromSurfacesAndSky(const FrameInputs& inputs);
 
     const GBuffer& mLightGBuffer;
     const gl::Buffer& mImportanceCdf;
@@ -43,6 +47,8 @@ class PhotonEmitPass final : public Pass {
     ReloadableProgram mProgram;
     ReloadableProgram mEmitterProgram; // photon/emitter_emit.comp
     ParamBlocks<gpu::EmitterEmitParams> mEmitterParams{"emitter photon parameters"};
+    ReloadableProgram mEnvironmentProgram; // photon/environment_emit.comp
+    ParamBlocks<gpu::EnvironmentEmitParams> mEnvironmentParams{"environment photon parameters"};
     ParamBlocks<gpu::EmitParams> mParams{"photon emit parameters"}; // one per grid
     gl::VertexArray mVertexArray;
     gl::Framebuffer mFramebuffer;

@@ -113,8 +113,10 @@ void DirectPass::execute(const FrameInputs& inputs) {
         defines.push_back(getShadowRaysDefine(inputs.settings));
         if (draws[i].lightTypes != 0)
             defines.push_back("LIGHT_TYPES " + std::to_string(draws[i].lightTypes) + "u");
-        // The first draw shades the emitting triangles too (direct.frag).
-        if (i == 0 && inputs.scene.getEmitterCount() > 0) defines.emplace_back("EMITTERS 1");
+        // The first draw shades the emitting triangles and the environment too (direct.frag).
+        if (i == 0 && (inputs.scene.getEmitterCount() > 0 || inputs.model.environment.isSet())) {
+            defines.emplace_back("EMITTERS 1");
+        }
         mTarget.draw({.blend = i == 0 ? gl::Blend::Off : gl::Blend::Additive}, draws[i].rect,
                      defines);
     }
@@ -169,8 +171,11 @@ void ComposePass::execute(const FrameInputs& inputs) {
     mDirect.bindUnit(gpu::kUnitDirect);
     mIndirect.bindUnit(gpu::kUnitIndirect);
     // Without an emitter the emission channel holds zero (getSceneGBufferChannels): not read.
+    const bool environment = inputs.model.environment.isSet();
+    if (environment) inputs.scene.bind(); // the environment's block
     mTarget.draw({}, std::nullopt,
-                 {inputs.scene.hasEmission() ? "COMPOSE_EMISSION 1" : "COMPOSE_EMISSION 0"});
+                 {inputs.scene.hasEmission() ? "COMPOSE_EMISSION 1" : "COMPOSE_EMISSION 0",
+                  environment ? "COMPOSE_ENVIRONMENT 1" : "COMPOSE_ENVIRONMENT 0"});
 }
 
 TonemapPass::TonemapPass(const gl::Texture& hdr)

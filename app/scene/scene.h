@@ -4,6 +4,7 @@
 #pragma once
 
 #include "scene/animation.h"
+#include "scene/environment.h"
 #include "settings/settings.h"
 
 #include <glm/glm.hpp>
@@ -138,7 +139,9 @@ struct Scene {
     Camera camera;
     // Further views the file names (`cameras`), chosen with selectCamera / --camera NAME.
     std::vector<std::pair<std::string, Camera>> namedCameras;
-    glm::vec3 background{0.0f};
+    glm::vec3 background{0.0f}; // what the camera sees where no surface is, without environment
+    // Light from every direction no surface blocks; the camera sees it where no surface is.
+    Environment environment;
     std::vector<Material> materials;
     std::vector<SceneTexture> textures; // Material::diffuseTexture indexes here
     std::vector<Mesh> meshes;

@@ -180,6 +180,42 @@ void parseRender(const JsonNode& node, Settings& settings) {
     }
 }
 
+// `environment`: a constant radiance, or the sky tied to a sun (its own `sun_direction`, else the
+// scene's first sun light's).
+Environment parseEnvironment(const JsonNode& node, const std::vector<Light>& lights) {
+    node.requireObject("an environment");
+    const JsonNode typeNode = node.get("type");
+    const std::string type = typeNode.readString();
+    Environment environment;
+    if (type == "constant") {
+        node.checkKeys({"type", "radiance"}, "a constant environment");
+        environment.type = EnvironmentType::Constant;
+        environment.radiance =
+            node.get("radiance").readVec3(NumberRange::getClosed(0.0, kMaxLightPower));
+        return environment;
+    }
+    if (type != "sky") typeNode.failGot("an environment type: constant or sky");
+    node.checkKeys({"type", "turbidity", "scale", "sun_direction"}, "a sky environment");
+    environment.type = EnvironmentType::Sky;
+    if (auto t = node.find("turbidity")) {
+        environment.turbidity = t->readFloat(NumberRange::getClosed(1.7, 10.0));
+    }
+    if (auto scale = node.find("scale")) {
+        environment.scale = scale->readFloat(NumberRange::getClosed(0.0, 1e6));
+    }
+    if (auto direction = node.find("sun_direction")) {
+        environment.sunDirection = direction->readDirection();
+        return environment;
+    }
+    for (const Light& light : lights) {
+        if (light.type == LightType::Sun) {
+            environment.sunDirection = light.direction;
+            return environment;
+        }
+    }
+    node.fail("a sun_direction, or a sun light in `lights` to tie the sky to");
+}
+
 } // namespace
 
 void selectCamera(Scene& scene, const std::string& name) {
@@ -199,8 +235,8 @@ void selectCamera(Scene& scene, const std::string& name) {
 
 Scene parseScene(const nlohmann::json& doc, const std::string& file, const std::string& baseDir) {
     const JsonNode root(doc, "", file);
-    root.checkKeys({"name", "description", "camera", "cameras", "background", "materials",
-                    "objects", "lights", "render"},
+    root.checkKeys({"name", "description", "camera", "cameras", "background", "environment",
+                    "materials", "objects", "lights", "render"},
                    "a scene");
     Scene scene;
     scene.sourcePath = file;
@@ -236,6 +272,9 @@ Scene parseScene(const nlohmann::json& doc, const std::string& file, const std::
                 scene.lights.push_back(parseLight(lightNodes[i]));
             }
         }
+    }
+    if (auto environment = root.find("environment")) {
+        scene.environment = parseEnvironment(*environment, scene.lights);
     }
     if (auto render = root.find("render")) parseRender(*render, scene.settings);
     // A loaded scene is its state at t = 0 (an oscillation's phase may already move it).

@@ -10,6 +10,10 @@
 #include "lib/viewer_gbuffer.glsl"
 layout(binding = kUnitDirect) uniform sampler2D uDirect;
 layout(binding = kUnitIndirect) uniform sampler2D uIndirect;
+#if COMPOSE_ENVIRONMENT // a scene with an environment (ComposePass): seen where no surface is
+#define ENVIRONMENT_LOOKUP_ONLY 1
+#include "lib/environment.glsl"
+#endif
 
 layout(location = 0) out vec4 outRadiance;
 
@@ -17,7 +21,12 @@ void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec4 direct = texelFetch(uDirect, pixel, 0);
     float coverage = clamp(direct.a, 0.0, 1.0);
-    vec3 radiance = frame.backgroundRadiance * (1.0 - coverage);
+#if COMPOSE_ENVIRONMENT
+    vec3 background = lookUpEnvironment(normalize(computeEyeToNear(gl_FragCoord.xy)));
+#else
+    vec3 background = frame.backgroundRadiance;
+#endif
+    vec3 radiance = background * (1.0 - coverage);
     if (coverage > 0.0) radiance += direct.rgb + texelFetch(uIndirect, pixel, 0).rgb * coverage;
 #if COMPOSE_EMISSION // a scene with an emitter (ComposePass)
     // This frame's emission where this frame sees a surface (GBufferPass clears it to 0 where

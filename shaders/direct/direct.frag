@@ -13,8 +13,9 @@
 #ifndef SHADOW_RAYS
 #define SHADOW_RAYS 0
 #endif
-// EMITTERS 1: the scene has emitting triangles (DirectPass), shaded in the first draw from
-// area_samples points on them per pixel, each with a shadow ray (lib/emitters.glsl).
+// EMITTERS 1: the scene has emitting triangles or an environment (DirectPass), shaded in the
+// first draw from area_samples points on them and area_samples directions to the sky per pixel,
+// each with a shadow ray (lib/emitters.glsl, lib/environment.glsl).
 #ifndef EMITTERS
 #define EMITTERS 0
 #endif
@@ -24,6 +25,7 @@
 #include "lib/direct_light.glsl"
 #if EMITTERS
 #include "lib/emitters.glsl"
+#include "lib/environment.glsl"
 #endif
 
 #include "lib/viewer_gbuffer.glsl"
@@ -55,6 +57,9 @@ void main() {
         radiance += computeEmitterRadiance(position.xyz, n, diffuse, specular, wo, rayFloorM, 0u,
                                            frame.areaSamples,
                                            computeEmitterSeeds(key, kEmitterSeedSlot));
+        radiance += computeEnvironmentRadiance(position.xyz, n, diffuse, specular, wo, rayFloorM,
+                                               0u, frame.areaSamples,
+                                               computeEmitterSeeds(key, kEnvironmentSeedSlot));
     }
 #endif
     // Coverage once: the draws after the first add their light and 0.

@@ -29,6 +29,7 @@
 #include "lib/lights.glsl"
 #include "lib/direct_light.glsl"
 #include "lib/emitters.glsl"
+#include "lib/environment.glsl"
 #include "shared/photon_scatter.h"
 
 #include "lib/viewer_gbuffer.glsl"
@@ -97,7 +98,10 @@ vec3 shadeThrough(vec2 point, float rayFloorM, uint firstEmitterSample, uint emi
     vec3 diffuse = getHitDiffuse(m, hit.triangle, hit.barycentric);
     vec3 radiance = computeDirectRadiance(position, n, diffuse, m.specular, -dir, rayFloorM) +
                     computeEmitterRadiance(position, n, diffuse, m.specular, -dir, rayFloorM,
-                                           firstEmitterSample, emitterSamples, emitterSeeds);
+                                           firstEmitterSample, emitterSamples, emitterSeeds) +
+                    computeEnvironmentRadiance(position, n, diffuse, m.specular, -dir, rayFloorM,
+                                               firstEmitterSample, emitterSamples,
+                                               emitterSeeds.zxy);
 #if EDGE_EMISSION
     radiance += computeEmittedRadiance(m.emission, -dot(geometric, dir));
 #endif

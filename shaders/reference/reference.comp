@@ -16,6 +16,7 @@
 #define SHADOW_RAYS 1 // next-event estimation: a shadow ray per light
 #include "lib/direct_light.glsl"
 #include "lib/emitters.glsl"
+#include "lib/environment.glsl"
 #include "shared/photon_scatter.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -38,7 +39,12 @@ vec3 traceCameraPath(vec2 pixel, inout uint rng) {
     for (uint vertex = 1u; ; ++vertex) {
         RayHit hit;
         if (!traceRay(origin, dir, kNoHitDistance, hit)) {
-            if (vertex == 1u) radiance += frame.backgroundRadiance; // the background lights nothing
+            // The camera sees the environment, or the background; the environment's light on
+            // surfaces comes from its own samples at each vertex (below), so a path that leaves
+            // the scene after a bounce adds nothing.
+            if (vertex == 1u) {
+                radiance += hasEnvironment() ? lookUpEnvironment(dir) : frame.backgroundRadiance;
+            }
             break;
         }
         vec3 position = origin + dir * hit.t;
@@ -76,6 +82,20 @@ vec3 traceCameraPath(vec2 pixel, inout uint rng) {
                 light *= computeMisWeight(s.pdf, computeScatterPdf(dir, n, diffuse, m.specular, s.wi, 1.0 / total));
             }
             radiance += throughput * light;
+        }
+        if (hasEnvironment()) {
+            // The environment's light at this vertex: one cosine-weighted direction with a ray
+            // to the open sky, as direct.frag samples it (at the last vertex too: B counts the
+            // reflections after the light).
+            float u1 = nextRandom(rng, kRngPcg);
+            float u2 = nextRandom(rng, kRngPcg);
+            vec3 toSky = sampleCosine(n, u1, u2);
+            float skyOffset = computeRayOffset(position, params.rayOffsetM);
+            vec3 sky = lookUpEnvironment(toSky);
+            if (any(greaterThan(sky, vec3(0.0))) &&
+                !isRayBlocked(position + n * skyOffset, toSky, kNoHitDistance)) {
+                radiance += throughput * evaluateBrdf(diffuse, m.specular, n, toSky, wo) * sky * kPi;
+            }
         }
         float offset = computeRayOffset(position, params.rayOffsetM);
         if (!scatters) break;

@@ -24,11 +24,13 @@
 ISPM_NAMESPACE_BEGIN
 // The GLSL built-ins shared functions use, from glm.
 using glm::abs;
+using glm::acos;
 using glm::asin;
 using glm::clamp;
 using glm::cos;
 using glm::cross;
 using glm::dot;
+using glm::exp;
 using glm::max;
 using glm::min;
 using glm::mix;

@@ -19,6 +19,7 @@
 #define SHADOW_RAYS 1 // shadow maps see only what light cameras see
 #include "lib/direct_light.glsl"
 #include "lib/emitters.glsl"
+#include "lib/environment.glsl"
 #include "shared/specular_data.h"
 
 #include "lib/viewer_gbuffer.glsl"
@@ -120,7 +121,12 @@ void main() {
     while (gTop > 0u) {
         PendingRay ray = gStack[--gTop];
         RayHit hit;
-        if (!traceRay(ray.origin, ray.dir, kNoHitDistance, hit)) continue; // the background lights nothing
+        if (!traceRay(ray.origin, ray.dir, kNoHitDistance, hit)) {
+            // Mirrors and glass show the environment (the background shows nowhere but in the
+            // camera's own image).
+            if (hasEnvironment()) radiance += ray.weight * lookUpEnvironment(ray.dir);
+            continue;
+        }
         if (glossy && ray.level == 1u) {
             spread = computeGlossySpread(specular.w, hit.t,
                                          distance(position.xyz, frame.cameraPosW));
@@ -140,6 +146,9 @@ void main() {
                                          params.rayFloorM, gTop * frame.areaSamples,
                                          frame.areaSamples, emitterSeeds);
         direct += computeEmittedRadiance(m.emission, -dot(geometric, ray.dir));
+        direct += computeEnvironmentRadiance(hitPosition, n, diffuse, m.specular, -ray.dir,
+                                             params.rayFloorM, gTop * frame.areaSamples,
+                                             frame.areaSamples, emitterSeeds.zxy);
         radiance += ray.weight * (direct + lookUpIndirect(hitPosition, diffuse));
         if (ray.level < levels) {
             scatterRays(hitPosition, n, frontFace, ray.dir, diffuse, m.specular, m.transmissive,

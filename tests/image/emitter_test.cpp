@@ -154,6 +154,31 @@ TEST_F(EmitterTest, OneSidedEmitterLightsOnlyItsFront) {
     EXPECT_NEAR(m.actual, m.expected, 0.01 * m.expected);
 }
 
+TEST_F(EmitterTest, UniformSkyLightsAnOpenPlaneWithRhoL) {
+    // An unoccluded diffuse floor under a constant environment of radiance L reflects rho L:
+    // ispm's direct light (cosine-weighted rays to the sky), its whole frame (the sky's photons
+    // find nothing to bounce off but the floor, which they leave) and the path tracer.
+    Scene scene = makeEmitterOverFloor(0.1f);
+    scene.instances.pop_back(); // no emitter
+    scene.environment.type = EnvironmentType::Constant;
+    scene.environment.radiance = glm::vec3(float(kRadiance));
+    const Settings settings = makeTestSettings({{"width", kSize}, {"height", kSize}});
+    const double expected = kRho * kRadiance;
+    for (const Aov aov : {Aov::Direct, Aov::Total}) {
+        const Image image = renderAov(scene, settings, aov);
+        double mean = 0.0;
+        for (const glm::vec3& p : image.pixels)
+            mean += double(p.g) / double(image.pixels.size());
+        // 1%: the bar; a pixel's 8 cosine-weighted rays all reach the sky (no noise).
+        EXPECT_NEAR(mean, expected, 0.01 * expected);
+    }
+    const Image reference = renderReference(scene, "path", kSize, 16, 3);
+    double mean = 0.0;
+    for (const glm::vec3& p : reference.pixels)
+        mean += double(p.g) / double(reference.pixels.size());
+    EXPECT_NEAR(mean, expected, 0.01 * expected);
+}
+
 TEST_F(EmitterTest, EmittersPowerIsPiLTimesAreaTimesSides) {
     Scene scene = makeEmitterOverFloor(0.5f);
     Emitters emitters = collectEmitters(scene);

@@ -1,0 +1,75 @@
+// Photon emission from the environment (docs/design.md "Environment"): photon i comes from a
+// direction uniform over those the environment shines from (the sphere for a constant, the upper
+// hemisphere for the sky), enters through a disc of the scene's bounding sphere's radius facing
+// that direction, from outside the sphere, with the power that direction sends through the disc
+// over the photons (radiance x disc area x solid angle / photons), finds its first hit through
+// the BVH and makes the first bounce there as a light view's photon does (photon_emit.geom);
+// survivors are appended to the bounce buffer. Travel counts from the first hit, as the sun's.
+#include "lib/scene_buffers.glsl"
+#include "lib/frame_constants.glsl"
+#include "lib/bvh.glsl"
+#include "lib/scene_textures.glsl"
+#include "shared/photon_data.h"
+#include "shared/photon_scatter.h"
+#include "shared/environment_data.h"
+#include "lib/photon_lights.glsl"
+
+layout(local_size_x = 64) in;
+
+layout(std430, binding = kBindingBouncePhotons) writeonly buffer BounceBuffer { BouncePhoton bouncePhotons[]; };
+layout(std430, binding = kBindingPhotonCounters) buffer CounterBuffer { PhotonCounters counters; };
+layout(std430, binding = kBindingEnvironment) readonly buffer SceneEnvironment { GpuEnvironment environment; };
+
+layout(std140, binding = kBindingPassParams) uniform EnvironmentEmitParamsBlock { EnvironmentEmitParams params; };
+
+void main() {
+    uint index = gl_GlobalInvocationID.x;
+    if (index >= params.photons) return;
+    uint photon = params.firstPhoton + index;
+    uint rng = seedRandom(photon, 0u, params.seed);
+    uint generator = params.rngGenerator;
+    // The direction the light comes from: uniform in z over [-1, 1] (a sphere) or [0, 1] (the
+    // sky's hemisphere), stratified over the photons.
+    bool sky = environment.type.x == kEnvironmentSky;
+    float z = (float(index) + nextRandom(rng, generator)) / float(params.photons);
+    z = sky ? z : 2.0 * z - 1.0;
+    float r = sqrt(max(1.0 - z * z, 0.0));
+    float phi = kTwoPiF * nextRandom(rng, generator);
+    vec3 toward = vec3(r * cos(phi), z, r * sin(phi));
+    float solidAngle = sky ? kTwoPiF : 2.0 * kTwoPiF;
+    vec3 radiance = evaluateEnvironment(environment, toward);
+    if (all(equal(radiance, vec3(0.0)))) return;
+    vec3 dir = -toward;
+    vec3 t;
+    vec3 b;
+    buildBasis(dir, t, b);
+    float radius = params.sceneRadiusM;
+    float rr = radius * sqrt(nextRandom(rng, generator));
+    float phiDisc = kTwoPiF * nextRandom(rng, generator);
+    vec3 origin = params.sceneCentreW + toward * (2.0 * radius) + t * (rr * cos(phiDisc)) +
+                  b * (rr * sin(phiDisc));
+    vec3 power = radiance * (3.14159265358979 * radius * radius * solidAngle / float(params.photons));
+
+    RayHit hit;
+    if (!traceRay(origin, dir, kNoHitDistance, hit)) return;
+    vec3 position = origin + dir * hit.t;
+    vec3 geometric = computeHitNormal(hit);
+    bool frontFace = dot(geometric, dir) < 0.0;
+    vec3 n = frontFace ? geometric : -geometric;
+    GpuMaterial m = materials[triangles[hit.triangle].w];
+    vec3 diffuse = getHitDiffuse(m, hit.triangle, hit.barycentric);
+    vec3 numbers = vec3(nextRandom(rng, generator), nextRandom(rng, generator),
+                        nextRandom(rng, generator));
+    float albedo = computeLobeAlbedo(diffuse, m.specular, m.transmissive);
+    if (!(albedo > 0.0)) return;
+    float selectScale = params.firstBounce == kFirstBounceWeighted ? 1.0 / albedo : 1.0;
+    uint event = scatterSurfaceWith(dir, power, n, diffuse, m.specular, m.transmissive, frontFace,
+                                    numbers, selectScale);
+    if (event == kScatterAbsorbed) return;
+    uint slot = atomicAdd(counters.bounce.x, 1u);
+    if (slot >= params.bounceCapacity) return; // photon_prepare.comp clamps the count
+    bouncePhotons[slot].positionDistance = vec4(position, 0.0);
+    bouncePhotons[slot].directionDensity = vec4(dir, updatePathDensity(1.0, event, m.specular.w));
+    bouncePhotons[slot].power = vec4(power, uintBitsToFloat(photon));
+    countPhoton(params.light, 0);
+}
