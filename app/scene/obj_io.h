@@ -29,6 +29,8 @@ struct ObjModel {
 // faces of such materials take their vt coordinates, v flipped to run down the image); Tf ->
 // transmissive and Ni -> ior only for the refracting illumination models (illum 4, 6, 7, 9):
 // exporters write "Tf 1 1 1" for opaque materials too.
+// Face corners with a vn get it as their shading normal (normalised; one vertex per (v, vt, vn)
+// triple), corners without one are flat-shaded; a vn of zero length throws naming its index.
 ObjModel importObj(const std::string& objPath);
 
 // Writes every instance's triangles in world space to `objPath` ("o" per instance, "usemtl" per
