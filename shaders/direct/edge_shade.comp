@@ -17,6 +17,8 @@
 // far ground beyond a roof's edge) may lie between. A sliver between two shown surfaces (the
 // seam of two boxes) is the one thing missed: the surface behind it is shaded instead.
 #include "lib/scene_buffers.glsl"
+// Before bvh.glsl, for its computeHitShadingNormal.
+#include "lib/vertex_attributes.glsl"
 #include "lib/frame_constants.glsl"
 #include "lib/bvh.glsl"
 #include "lib/scene_textures.glsl"
@@ -85,9 +87,12 @@ vec3 shadeThrough(vec2 point, float rayFloorM, out bool hitSurface) {
     vec3 position = origin + dir * hit.t;
     vec3 geometric = computeHitNormal(hit);
     vec3 n = dot(geometric, dir) < 0.0 ? geometric : -geometric; // faces the eye, as the G-buffer's
+    // A ray's hit knows its geometric normal: it decides sides here, unlike at the pixel's
+    // centre (direct.frag), whose G-buffer holds the shading normal alone.
+    vec3 shading = computeHitShadingNormal(hit, n);
     GpuMaterial m = materials[triangles[hit.triangle].w];
     vec3 diffuse = getHitDiffuse(m, hit.triangle, hit.barycentric);
-    return computeDirectRadiance(position, n, diffuse, m.specular, -dir, rayFloorM);
+    return computeShadedDirectRadiance(position, n, shading, diffuse, m.specular, -dir, rayFloorM);
 }
 
 void main() {

@@ -5,6 +5,8 @@
 // `bounces` B counts reflections between the light and the visible surface, as in ispm mode:
 // light is gathered at vertices 1..B+1 and the path stops there.
 #include "lib/scene_buffers.glsl"
+// Before bvh.glsl, for its computeHitShadingNormal.
+#include "lib/vertex_attributes.glsl"
 #include "lib/frame_constants.glsl"
 #include "lib/bvh.glsl"
 #include "lib/scene_textures.glsl"
@@ -38,19 +40,20 @@ vec3 traceCameraPath(vec2 pixel, inout uint rng) {
         vec3 geometric = computeHitNormal(hit);
         bool frontFace = dot(geometric, dir) < 0.0;
         vec3 n = frontFace ? geometric : -geometric;
+        vec3 shading = computeHitShadingNormal(hit, n); // the BRDF's; n decides sides
         GpuMaterial m = materials[triangles[hit.triangle].w];
         vec3 diffuse = getHitDiffuse(m, hit.triangle, hit.barycentric);
         if (vertex == 1u) radiance += m.emission.rgb; // emission is seen, it lights nothing
         vec3 wo = -dir;
-        radiance += throughput * computeDirectRadiance(position, n, diffuse, m.specular, wo,
-                                                       params.rayOffsetM);
+        radiance += throughput * computeShadedDirectRadiance(position, n, shading, diffuse,
+                                                             m.specular, wo, params.rayOffsetM);
         float offset = computeRayOffset(position, params.rayOffsetM);
         if (vertex > bounces) break;
         float total = computeLobeAlbedo(diffuse, m.specular, m.transmissive);
         if (total <= 0.0) break;
-        uint event = scatterSurface(dir, throughput, n, diffuse, m.specular, m.transmissive,
-                                    frontFace, rng, kRngPcg, 1.0 / total);
-        if (event == kScatterAbsorbed) break;
+        uint event = scatterSurface(dir, throughput, shading, diffuse, m.specular,
+                                    m.transmissive, frontFace, rng, kRngPcg, 1.0 / total);
+        if (event == kScatterAbsorbed || !isScatterOnGeometricSide(event, dir, n)) break;
         if (event == kScatterRefract) {
             throughput *= computeRefractedRadianceScale(frontFace, m.transmissive.w);
         }
