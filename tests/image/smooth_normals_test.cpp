@@ -7,10 +7,13 @@
 #include "support/test_settings.h"
 
 #include "scene/gltf_import.h"
+#include "scene/scene_loader.h"
 
 #include <glm/gtc/constants.hpp>
 
 #include <filesystem>
+#include <fstream>
+#include <string>
 
 namespace ispm::test {
 namespace {
@@ -138,6 +141,78 @@ TEST_F(SmoothNormalsTest, PathTracerShadesTheSphereWithItsNormals) {
     constexpr double kTolerance = 0.005;
     EXPECT_LT(smoothMean, kTolerance);
     EXPECT_GT(flatMean, kTolerance);
+}
+
+// A 4 x 4 grid of 1 m squares on y = 0 centred on the origin, as OBJ: without vn, with vn (0 1 0)
+// at every vertex, or with the centre vertex's vn tilted 27 degrees toward +x.
+enum class GridNormals { None, Up, TiltedCentre };
+
+std::string writeGridObj(const std::string& path, GridNormals normals) {
+    constexpr int kCells = 4;
+    std::ofstream out(path);
+    for (int j = 0; j <= kCells; ++j) {
+        for (int i = 0; i <= kCells; ++i)
+            out << "v " << i - kCells / 2 << " 0 " << j - kCells / 2 << "\n";
+    }
+    out << "vn 0 1 0\nvn 0.5 1 0\n";
+    const int centre = (kCells / 2) * (kCells + 1) + kCells / 2 + 1; // 1-based
+    const auto corner = [&](int i, int j) {
+        const int v = j * (kCells + 1) + i + 1;
+        if (normals == GridNormals::None) return std::to_string(v);
+        const int vn = normals == GridNormals::TiltedCentre && v == centre ? 2 : 1;
+        return std::to_string(v) + "//" + std::to_string(vn);
+    };
+    for (int j = 0; j < kCells; ++j) {
+        for (int i = 0; i < kCells; ++i) { // counter-clockwise seen from +y
+            out << "f " << corner(i, j) << " " << corner(i, j + 1) << " " << corner(i + 1, j + 1)
+                << " " << corner(i + 1, j) << "\n";
+        }
+    }
+    return path;
+}
+
+TEST_F(SmoothNormalsTest, ObjVnChangesTheLightOnlyAroundTheVertexThatTurns) {
+    const std::filesystem::path dir = ::testing::TempDir();
+    const auto render = [&](GridNormals normals, Scene* sceneOut) {
+        const std::string obj = writeGridObj((dir / "grid.obj").string(), normals);
+        const std::string path = (dir / "grid.json").string();
+        std::ofstream(path) << R"({"camera": {"position": [0, 5, 0], "target": [0, 0, 0],
+                                   "up": [0, 0, -1], "fov_y_deg": 50},
+                        "objects": [{"type": "mesh", "obj": ")"
+                            << obj << R"(", "material": {"diffuse": [0.5, 0.5, 0.5]}}],
+                        "lights": [{"type": "point", "position": [0, 2, 0],
+                                    "intensity": [10, 10, 10]}]})";
+        const Scene scene = loadScene(path);
+        if (sceneOut) *sceneOut = scene;
+        return renderAov(scene, makeTestSettings({{"width", kSize}, {"height", kSize}}),
+                         Aov::Direct);
+    };
+    Scene scene;
+    const Image flat = render(GridNormals::None, &scene);
+    const Image up = render(GridNormals::Up, nullptr);
+    const Image tilted = render(GridNormals::TiltedCentre, nullptr);
+    int near = 0;
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) {
+            const glm::dvec3 p = projectToGround(scene, kSize, kSize, x + 0.5, y + 0.5);
+            const float f = flat.at(x, y).r;
+            // vn equal to the face normals shade as flat faces do.
+            EXPECT_NEAR(up.at(x, y).r, f, 1e-3f * f) << "pixel " << x << "," << y;
+            // Beyond the squares around the centre no triangle has the tilted corner: alike.
+            constexpr double kMargin = 0.05; // m: a pixel's width and more
+            if (std::max(std::abs(p.x), std::abs(p.z)) > 1.0 + kMargin) {
+                EXPECT_NEAR(tilted.at(x, y).r, f, 1e-3f * f) << "pixel " << x << "," << y;
+            }
+            // Near the centre the normal turns by up to 27 degrees from the light overhead:
+            // cos 27 = 0.89 there.
+            constexpr double kNearM = 0.2;
+            if (glm::length(glm::dvec2(p.x, p.z)) < kNearM) {
+                EXPECT_LT(tilted.at(x, y).r, 0.97f * f) << "pixel " << x << "," << y;
+                ++near;
+            }
+        }
+    }
+    EXPECT_GT(near, 4);
 }
 
 } // namespace
