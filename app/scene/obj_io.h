@@ -36,7 +36,8 @@ ObjModel importObj(const std::string& objPath);
 // Writes every instance's triangles in world space to `objPath` ("o" per instance, "usemtl" per
 // material run) and the scene's materials to the .mtl beside it (Kd, Ks, Ns, Ni, Ke, Tf, illum,
 // map_Kd). Textures are written beside it as PNG files (<obj stem>_texture<i>.png) and textured
-// meshes get vt coordinates.
+// meshes get vt coordinates; shading normals are written as world-space vn on the triangles
+// that have one at every corner.
 // Throws std::runtime_error naming the file on I/O failure.
 void exportObj(const Scene& scene, const std::string& objPath);
 

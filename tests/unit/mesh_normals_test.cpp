@@ -2,6 +2,7 @@
 // (smooth_angle_deg) joined within the angle and split beyond it, and bad normals refused.
 #include "core/input_error.h"
 #include "scene/mesh_normals.h"
+#include "scene/obj_io.h"
 #include "scene_test_util.h"
 #include "support/gltf_scenes.h"
 
@@ -115,6 +116,30 @@ TEST(MeshNormals, GeneratedNormalsOfATessellatedSphereApproachTheSphere) {
                   std::cos(glm::radians(1.0f)))
             << "vertex " << v;
     }
+}
+
+TEST(MeshNormals, ExportedObjCarriesTheNormalsInWorldSpace) {
+    ScratchDir dir;
+    dir.write("fold.obj", makeFoldObj(true));
+    // Turned a quarter about y: +x goes to -z.
+    const Scene scene =
+        loadScene(dir.write("s.json", makeObjScene(R"(, "rotate_deg": [0, 90, 0])")));
+    exportObj(scene, dir.getPath("out.obj"));
+    const ObjModel back = importObj(dir.getPath("out.obj"));
+    const Mesh& mesh = back.mesh;
+    ASSERT_EQ(mesh.normals.size(), mesh.positions.size());
+    const float halfSqrt2 = glm::root_two<float>() / 2.0f;
+    int onFold = 0;
+    for (size_t v = 0; v < mesh.positions.size(); ++v) {
+        const glm::vec3 p = mesh.positions[v];
+        const glm::vec3 n = mesh.normals[v];
+        if (std::abs(p.z) < 1e-6f && std::abs(p.y) < 1e-6f) { // on the fold: the bisector
+            EXPECT_NEAR(n.z, -halfSqrt2, 1e-5f);
+            EXPECT_NEAR(n.y, halfSqrt2, 1e-5f);
+            ++onFold;
+        }
+    }
+    EXPECT_EQ(onFold, 2);
 }
 
 TEST(MeshNormals, ZeroLengthObjVnNamesTheFileAndIndex) {
