@@ -49,7 +49,7 @@ void main() {
     uint vertex = corner == 0u ? tri.x : (corner == 1u ? tri.y : tri.z);
     vec3 p = corner == 0u ? p0 : (corner == 1u ? p1 : p2);
 #if GBUFFER_TEXTURES
-    vTexcoord = vertexAttributes[corner == 0u ? tri.x : (corner == 1u ? tri.y : tri.z)].xy;
+    vTexcoord = vertexAttributes[vertex].xy;
 #endif
     vec4 positionW = inst.worldFromObject * vec4(p, 1.0);
     vPositionW = positionW.xyz;

@@ -1,5 +1,5 @@
 // The scene's texture array (GpuScene) and the texture coordinates of its vertices
-// (scene_buffers.glsl's vertexAttributes): the diffuse reflectance of a textured material at a
+// (vertex_attributes.glsl): the diffuse reflectance of a textured material at a
 // point. Untextured materials never sample.
 #ifndef ISPM_SCENE_TEXTURES_GLSL
 #define ISPM_SCENE_TEXTURES_GLSL
