@@ -125,14 +125,21 @@ uint32_t getGpuLightType(LightType type) {
 
 GpuScene::GpuScene(const Scene& scene, int lightResolution) : mLightResolution(lightResolution) {
     std::vector<glm::vec4> positions;
-    std::vector<glm::vec2> texcoords; // one per position; zero for meshes without textures
+    // One per position: texture coordinates (zero for meshes without textures) and the shading
+    // normal (kNoShadingNormal where a mesh gives none).
+    std::vector<glm::vec4> attributes;
     std::vector<glm::uvec4> triangles;
     for (const Mesh& mesh : scene.meshes) {
         const auto base = static_cast<uint32_t>(positions.size());
         for (const glm::vec3& p : mesh.positions)
             positions.emplace_back(p, 1.0f);
-        texcoords.insert(texcoords.end(), mesh.texcoords.begin(), mesh.texcoords.end());
-        texcoords.resize(positions.size());
+        for (size_t v = 0; v < mesh.positions.size(); ++v) {
+            const glm::vec2 uv = v < mesh.texcoords.size() ? mesh.texcoords[v] : glm::vec2(0.0f);
+            const glm::vec3 n = v < mesh.normals.size() ? mesh.normals[v] : glm::vec3(0.0f);
+            const glm::vec2 encoded =
+                n == glm::vec3(0.0f) ? glm::vec2(gpu::kNoShadingNormal) : gpu::encodeOctahedral(n);
+            attributes.emplace_back(uv, encoded);
+        }
         for (size_t t = 0; t < mesh.triangles.size(); ++t) {
             const glm::uvec3 tri = mesh.triangles[t] + base;
             triangles.emplace_back(tri, mesh.triangleMaterials[t]);
@@ -149,7 +156,7 @@ GpuScene::GpuScene(const Scene& scene, int lightResolution) : mLightResolution(l
     mPositions = gl::Buffer::fromSpan<glm::vec4>("scene positions", positions);
     mTriangles = gl::Buffer::fromSpan<glm::uvec4>("scene triangles", triangles);
     mMaterials = gl::Buffer::fromSpan<gpu::GpuMaterial>("scene materials", materials);
-    mTexcoords = gl::Buffer::fromSpan<glm::vec2>("scene texture coordinates", texcoords);
+    mVertexAttributes = gl::Buffer::fromSpan<glm::vec4>("scene vertex attributes", attributes);
     mTextures = buildSceneTextureArray(scene.textures);
     mHasTextures = std::any_of(scene.materials.begin(), scene.materials.end(),
                                [](const Material& m) { return m.diffuseTexture != kNoTexture; });
@@ -364,7 +371,7 @@ void GpuScene::bind() const {
     mInstanceBuffer.bindBase(BufferTarget::Storage, gpu::kBindingInstances);
     mPreviousTransforms.bindBase(BufferTarget::Storage, gpu::kBindingPreviousTransforms);
     mMaterials.bindBase(BufferTarget::Storage, gpu::kBindingMaterials);
-    mTexcoords.bindBase(BufferTarget::Storage, gpu::kBindingTexcoords);
+    mVertexAttributes.bindBase(BufferTarget::Storage, gpu::kBindingVertexAttributes);
     mTextures.bindUnit(gpu::kUnitSceneTextures);
     mLights.bindBase(BufferTarget::Storage, gpu::kBindingLights);
     mLightViews.bindBase(BufferTarget::Storage, gpu::kBindingLightViews);
@@ -380,8 +387,8 @@ size_t GpuScene::getGpuBytes() const {
     return mPositions.getSize() + mTriangles.getSize() + mInstanceBuffer.getSize() +
            mPreviousTransforms.getSize() + mMaterials.getSize() + mLights.getSize() +
            mLightViews.getSize() + mBlasNodes.getSize() + mBlasOrder.getSize() +
-           mTlasNodes.getSize() + mTlasOrder.getSize() + mTexcoords.getSize() +
-           mEmitterBuffer.getSize() + getTextureBytes();
+           mTlasNodes.getSize() + mTlasOrder.getSize() + mVertexAttributes.getSize() +
+           mEmitterBuffer.getSize() + mEnvironment.getSize() + getTextureBytes();
 }
 
 size_t GpuScene::getTextureBytes() const {

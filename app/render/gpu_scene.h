@@ -142,7 +142,7 @@ class GpuScene {
     gl::Buffer mInstanceBuffer;
     gl::Buffer mPreviousTransforms;
     gl::Buffer mMaterials;
-    gl::Buffer mTexcoords; // kBindingTexcoords
+    gl::Buffer mVertexAttributes; // kBindingVertexAttributes
     gl::Texture mTextures;
     bool mHasTextures = false; // kUnitSceneTextures (scene_texture_array.h)
     bool mHasSpecularLobes = true;

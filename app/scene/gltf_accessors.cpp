@@ -141,6 +141,26 @@ std::vector<glm::vec3> readPositions(const GltfFile& file, int accessor,
     return readFloatVectors<3>(file, v, accessor);
 }
 
+std::vector<glm::vec3> readNormals(const GltfFile& file, int accessor, const std::string& usePath) {
+    const AccessorView v =
+        viewAccessor(file, accessor, TINYGLTF_TYPE_VEC3, usePath, "VEC3 normals");
+    if (v.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT) {
+        file.fail(strCat("/accessors/", accessor, "/componentType"), "5126 (float normals)");
+    }
+    std::vector<glm::vec3> normals = readFloatVectors<3>(file, v, accessor);
+    for (size_t i = 0; i < normals.size(); ++i) {
+        // The spec asks for unit normals; exporters round them, so any length but zero will do.
+        const float length = glm::length(normals[i]);
+        if (!(length > 0.0f && std::isfinite(length))) {
+            file.fail(strCat("/accessors/", accessor),
+                      strCat("normals of non-zero length, element ", i, " is (", normals[i].x, ", ",
+                             normals[i].y, ", ", normals[i].z, ")"));
+        }
+        normals[i] /= length;
+    }
+    return normals;
+}
+
 std::vector<glm::vec2> readTexcoords(const GltfFile& file, int accessor,
                                      const std::string& usePath) {
     const AccessorView v =

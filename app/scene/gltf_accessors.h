@@ -23,6 +23,8 @@ struct GltfFile {
 // POSITION: VEC3 of floats, each finite.
 std::vector<glm::vec3> readPositions(const GltfFile& file, int accessor,
                                      const std::string& usePath);
+// NORMAL: VEC3 of floats, each finite, normalised; one of zero length fails naming its index.
+std::vector<glm::vec3> readNormals(const GltfFile& file, int accessor, const std::string& usePath);
 // TEXCOORD_n: VEC2 of floats, or of normalised unsigned bytes or shorts.
 std::vector<glm::vec2> readTexcoords(const GltfFile& file, int accessor,
                                      const std::string& usePath);

@@ -163,8 +163,22 @@ uint32_t GltfImporter::convertMesh(int index, const std::string& usePath) {
             }
             mesh.texcoords.resize(mesh.positions.size()); // earlier primitives: untextured
         }
+        // Without NORMAL a primitive is flat-shaded, as the glTF spec asks.
+        std::vector<glm::vec3> normals;
+        if (const auto normal = prim.attributes.find("NORMAL"); normal != prim.attributes.end()) {
+            normals = readNormals(file, normal->second, at + "/attributes/NORMAL");
+            if (normals.size() != positions.size()) {
+                file.fail(at + "/attributes/NORMAL", "as many normals as positions");
+            }
+            mesh.normals.resize(mesh.positions.size()); // earlier primitives: flat (zero)
+        }
         const auto base = static_cast<uint32_t>(mesh.positions.size());
         mesh.positions.insert(mesh.positions.end(), positions.begin(), positions.end());
+        if (!normals.empty()) {
+            mesh.normals.insert(mesh.normals.end(), normals.begin(), normals.end());
+        } else if (!mesh.normals.empty()) {
+            mesh.normals.resize(mesh.positions.size());
+        }
         if (!texcoords.empty()) {
             mesh.texcoords.insert(mesh.texcoords.end(), texcoords.begin(), texcoords.end());
         } else if (!mesh.texcoords.empty()) {

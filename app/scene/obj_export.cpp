@@ -119,6 +119,7 @@ void exportObj(const Scene& scene, const std::string& objPath) {
                              mtlPath.filename().string(), "\n");
     size_t vertexBase = 1; // OBJ indices are 1-based and global over the file
     size_t texcoordBase = 1;
+    size_t normalBase = 1;
     for (size_t i = 0; i < scene.instances.size(); ++i) {
         const Instance& instance = scene.instances[i];
         const Mesh& mesh = scene.meshes.at(instance.meshIndex);
@@ -134,9 +135,20 @@ void exportObj(const Scene& scene, const std::string& objPath) {
             appendFloat(obj, 1.0f - uv.y); // OBJ's v runs up the image
             obj += '\n';
         }
-        const auto corner = [&](uint32_t v) {
-            return hasTexcoords ? strCat(vertexBase + v, "/", texcoordBase + v)
-                                : strCat(vertexBase + v);
+        // vn for the positions with a shading normal, in world space (the inverse transpose);
+        // the others' corners, and so their triangles, stay flat.
+        const glm::mat3 normalFromObject =
+            glm::transpose(glm::inverse(glm::mat3(instance.worldFromObject)));
+        std::vector<size_t> normalIndex(mesh.normals.size(), 0); // 0: none (OBJ counts from 1)
+        for (size_t v = 0; v < mesh.normals.size(); ++v) {
+            if (mesh.normals[v] == glm::vec3(0.0f)) continue;
+            appendVec3(obj, "vn", glm::normalize(normalFromObject * mesh.normals[v]));
+            normalIndex[v] = normalBase++;
+        }
+        const auto corner = [&](uint32_t v, bool smooth) {
+            const std::string vt = hasTexcoords ? strCat(texcoordBase + v) : "";
+            if (smooth) return strCat(vertexBase + v, "/", vt, "/", normalIndex[v]);
+            return hasTexcoords ? strCat(vertexBase + v, "/", vt) : strCat(vertexBase + v);
         };
         uint32_t currentMaterial = kUnmapped;
         for (size_t t = 0; t < mesh.triangles.size(); ++t) {
@@ -146,7 +158,10 @@ void exportObj(const Scene& scene, const std::string& objPath) {
                 currentMaterial = material;
             }
             const glm::uvec3& tri = mesh.triangles[t];
-            obj += strCat("f ", corner(tri.x), " ", corner(tri.y), " ", corner(tri.z), "\n");
+            const bool smooth = !normalIndex.empty() && normalIndex[tri.x] != 0 &&
+                                normalIndex[tri.y] != 0 && normalIndex[tri.z] != 0;
+            obj += strCat("f ", corner(tri.x, smooth), " ", corner(tri.y, smooth), " ",
+                          corner(tri.z, smooth), "\n");
         }
         vertexBase += mesh.positions.size();
         texcoordBase += mesh.texcoords.size();

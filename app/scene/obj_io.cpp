@@ -15,6 +15,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <stdexcept>
 #include <string_view>
 #include <unordered_map>
@@ -177,9 +178,13 @@ ObjModel importObj(const std::string& objPath) {
 
     const std::vector<tinyobj::real_t>& vertices = reader.GetAttrib().vertices;
     const size_t vertexCount = vertices.size() / 3;
+    const std::vector<tinyobj::real_t>& vns = reader.GetAttrib().normals;
+    const size_t normalCount = vns.size() / 3;
     std::vector<uint32_t> remap(vertexCount, kUnmapped);
     // Corners of textured faces: one vertex per (position, vt) pair, keyed position << 32 | vt.
     std::unordered_map<uint64_t, uint32_t> texturedRemap;
+    // Corners with a vn: one vertex per (position, vt or kUnmapped, vn) triple.
+    std::map<std::array<uint32_t, 3>, uint32_t> normalRemap;
     Mesh& mesh = model.mesh;
     mesh.name = std::filesystem::path(objPath).stem().string();
     const auto addPosition = [&](size_t i) {
@@ -189,7 +194,22 @@ ObjModel importObj(const std::string& objPath) {
         }
         mesh.positions.push_back(p);
         if (!mesh.texcoords.empty()) mesh.texcoords.emplace_back(0.0f);
+        if (!mesh.normals.empty()) mesh.normals.emplace_back(0.0f); // flat, until a vn says
         return static_cast<uint32_t>(mesh.positions.size() - 1);
+    };
+    const auto readTexcoord = [&](const tinyobj::index_t& corner) -> size_t {
+        const int uv = corner.texcoord_index;
+        if (uv < 0 || static_cast<size_t>(uv) >= uvCount) {
+            throw std::runtime_error(strCat("a face of a map_Kd material needs vt coordinates; "
+                                            "it refers to vt ",
+                                            uv + 1, " of ", uvCount));
+        }
+        return static_cast<size_t>(uv);
+    };
+    const auto setTexcoord = [&](uint32_t v, size_t u) {
+        mesh.texcoords.resize(mesh.positions.size()); // earlier untextured vertices: (0, 0)
+        // OBJ's v runs up the image; the scene's runs down from its top row.
+        mesh.texcoords[v] = glm::vec2(uvs[2 * u], 1.0f - uvs[2 * u + 1]);
     };
     const auto useVertex = [&](const tinyobj::index_t& corner, bool textured) -> uint32_t {
         const int index = corner.vertex_index;
@@ -198,24 +218,40 @@ ObjModel importObj(const std::string& objPath) {
                 strCat("face refers to vertex ", index + 1, " of ", vertexCount));
         }
         const auto i = static_cast<size_t>(index);
+        if (corner.normal_index >= 0) {
+            const auto vn = static_cast<size_t>(corner.normal_index);
+            if (vn >= normalCount) {
+                throw std::runtime_error(strCat("face refers to vn ", vn + 1, " of ", normalCount));
+            }
+            const size_t u = textured ? readTexcoord(corner) : kUnmapped;
+            const std::array<uint32_t, 3> key = {static_cast<uint32_t>(i), static_cast<uint32_t>(u),
+                                                 static_cast<uint32_t>(vn)};
+            const auto found = normalRemap.find(key);
+            if (found != normalRemap.end()) return found->second;
+            const glm::vec3 n = toVec3(&vns[3 * vn]);
+            const float length = glm::length(n);
+            // Finite already (checkNumbers); a zero normal has no direction to shade with.
+            if (!(length > 0.0f && std::isfinite(length))) {
+                throw std::runtime_error(strCat("vn ", vn + 1, " (", n.x, " ", n.y, " ", n.z,
+                                                "): expected a normal of non-zero length"));
+            }
+            const uint32_t v = addPosition(i);
+            if (textured) setTexcoord(v, u);
+            mesh.normals.resize(mesh.positions.size()); // earlier vertices without vn: zero
+            mesh.normals[v] = n / length;
+            normalRemap.emplace(key, v);
+            return v;
+        }
         if (!textured) {
             if (remap[i] == kUnmapped) remap[i] = addPosition(i);
             return remap[i];
         }
-        const int uv = corner.texcoord_index;
-        if (uv < 0 || static_cast<size_t>(uv) >= uvCount) {
-            throw std::runtime_error(strCat("a face of a map_Kd material needs vt coordinates; "
-                                            "it refers to vt ",
-                                            uv + 1, " of ", uvCount));
-        }
-        const uint64_t key = (uint64_t(i) << 32) | uint64_t(uv);
+        const size_t u = readTexcoord(corner);
+        const uint64_t key = (uint64_t(i) << 32) | uint64_t(u);
         const auto found = texturedRemap.find(key);
         if (found != texturedRemap.end()) return found->second;
         const uint32_t v = addPosition(i);
-        mesh.texcoords.resize(mesh.positions.size()); // earlier untextured vertices: (0, 0)
-        const auto u = static_cast<size_t>(uv);
-        // OBJ's v runs up the image; the scene's runs down from its top row.
-        mesh.texcoords[v] = glm::vec2(uvs[2 * u], 1.0f - uvs[2 * u + 1]);
+        setTexcoord(v, u);
         texturedRemap.emplace(key, v);
         return v;
     };

@@ -29,12 +29,15 @@ struct ObjModel {
 // faces of such materials take their vt coordinates, v flipped to run down the image); Tf ->
 // transmissive and Ni -> ior only for the refracting illumination models (illum 4, 6, 7, 9):
 // exporters write "Tf 1 1 1" for opaque materials too.
+// Face corners with a vn get it as their shading normal (normalised; one vertex per (v, vt, vn)
+// triple), corners without one are flat-shaded; a vn of zero length throws naming its index.
 ObjModel importObj(const std::string& objPath);
 
 // Writes every instance's triangles in world space to `objPath` ("o" per instance, "usemtl" per
 // material run) and the scene's materials to the .mtl beside it (Kd, Ks, Ns, Ni, Ke, Tf, illum,
 // map_Kd). Textures are written beside it as PNG files (<obj stem>_texture<i>.png) and textured
-// meshes get vt coordinates.
+// meshes get vt coordinates; shading normals are written as world-space vn on the triangles
+// that have one at every corner.
 // Throws std::runtime_error naming the file on I/O failure.
 void exportObj(const Scene& scene, const std::string& objPath);
 

@@ -123,6 +123,11 @@ struct Mesh {
     // Texture coordinates per position (u right, v down from the image's top row), or empty for
     // a mesh without textures.
     std::vector<glm::vec2> texcoords;
+    // Unit shading normals per position (OBJ vn, glTF NORMAL, or generated: smooth_angle_deg),
+    // or empty for a flat-shaded mesh. A zero vector marks a position without one: a triangle
+    // with such a corner is flat-shaded (its geometric normal), as is every triangle of a mesh
+    // without normals.
+    std::vector<glm::vec3> normals;
     std::vector<glm::uvec3> triangles;
     std::vector<uint32_t> triangleMaterials;
     Aabb computeBounds() const;

@@ -6,6 +6,7 @@
 #include "scene/cornell_box.h"
 #include "scene/gltf_import.h"
 #include "scene/mesh_builder.h"
+#include "scene/mesh_normals.h"
 #include "scene/obj_io.h"
 #include "scene/scene_parse.h"
 
@@ -26,6 +27,19 @@ constexpr double kMaxScale = 1e6;
 constexpr float kAffineTolerance = 1e-6f;
 // |det| of the 3x3 part below this fraction of its columns' length product: flat or singular.
 constexpr float kMinRelativeDeterminant = 1e-9f;
+
+// `smooth_angle_deg`: the crease angle up to which generateSmoothNormals joins faces; 0 (the
+// default) keeps the mesh flat. Meshes whose file gives normals (OBJ vn, glTF NORMAL) keep those.
+constexpr double kMaxSmoothAngleDeg = 180.0;
+
+float parseSmoothAngle(const JsonNode& object) {
+    const auto angle = object.find("smooth_angle_deg");
+    return angle ? angle->readFloat(NumberRange::getClosed(0.0, kMaxSmoothAngleDeg)) : 0.0f;
+}
+
+void smoothMesh(Mesh& mesh, float angleDeg) {
+    if (angleDeg > 0.0f && mesh.normals.empty()) generateSmoothNormals(mesh, angleDeg);
+}
 
 glm::mat4 parseMatrix(const JsonNode& node) {
     const char* what = "a row-major 4x4 matrix: 4 rows of 4 numbers, or 16 numbers";
@@ -249,10 +263,11 @@ void parseObject(const JsonNode& object, size_t index, ParseContext& context) {
 
     if (type == "mesh") {
         object.checkKeys({"type", "name", "matrix", "translate", "rotate_deg", "scale", "material",
-                          "triangles", "quads", "obj", "animation"},
+                          "triangles", "quads", "obj", "smooth_angle_deg", "animation"},
                          "a mesh object");
         const glm::mat4 worldFromObject = parseTransform(object);
         parseMesh(object, context, mesh);
+        smoothMesh(mesh, parseSmoothAngle(object));
         scene.meshes.push_back(std::move(mesh));
         scene.instances.push_back(
             {static_cast<uint32_t>(scene.meshes.size() - 1), worldFromObject});
@@ -281,9 +296,11 @@ void parseObject(const JsonNode& object, size_t index, ParseContext& context) {
         addBoxCity(scene, parseBoxCityParams(object, context), worldFromObject);
         if (object.has("name")) scene.meshes.back().name = mesh.name;
     } else if (type == "gltf") {
-        object.checkKeys(
-            {"type", "name", "matrix", "translate", "rotate_deg", "scale", "path", "animation"},
-            "a gltf object");
+        object.checkKeys({"type", "name", "matrix", "translate", "rotate_deg", "scale", "path",
+                          "smooth_angle_deg", "animation"},
+                         "a gltf object");
+        const float smoothAngleDeg = parseSmoothAngle(object);
+        const size_t firstMesh = scene.meshes.size();
         const glm::mat4 worldFromObject = parseTransform(object);
         const JsonNode pathNode = object.get("path");
         std::filesystem::path path(pathNode.readString());
@@ -296,6 +313,8 @@ void parseObject(const JsonNode& object, size_t index, ParseContext& context) {
         // The file's cameras join the scene's named cameras (--camera NAME).
         for (auto& camera : importGltf(path.string(), worldFromObject, scene))
             scene.namedCameras.push_back(std::move(camera));
+        for (size_t m = firstMesh; m < scene.meshes.size(); ++m)
+            smoothMesh(scene.meshes[m], smoothAngleDeg);
     } else {
         typeNode.failGot("an object type: mesh, box, cornell_box, box_city or gltf");
     }

@@ -54,10 +54,10 @@ void main() {
 #if EMITTERS
     if (params.firstDraw == 1u) {
         uint key = uint(pixel.y) * uint(frame.imageSizePx.x) + uint(pixel.x);
-        radiance += computeEmitterRadiance(position.xyz, n, diffuse, specular, wo, rayFloorM, 0u,
+        radiance += computeEmitterRadiance(position.xyz, n, n, diffuse, specular, wo, rayFloorM, 0u,
                                            frame.areaSamples,
                                            computeEmitterSeeds(key, kEmitterSeedSlot));
-        radiance += computeEnvironmentRadiance(position.xyz, n, diffuse, specular, wo, rayFloorM,
+        radiance += computeEnvironmentRadiance(position.xyz, n, n, diffuse, specular, wo, rayFloorM,
                                                0u, frame.areaSamples,
                                                computeEmitterSeeds(key, kEnvironmentSeedSlot));
     }

@@ -22,6 +22,8 @@
 #define EDGE_EMISSION 0
 #endif
 #include "lib/scene_buffers.glsl"
+// Before bvh.glsl, for its computeHitShadingNormal.
+#include "lib/vertex_attributes.glsl"
 #include "lib/frame_constants.glsl"
 #include "lib/bvh.glsl"
 #include "lib/scene_textures.glsl"
@@ -94,14 +96,17 @@ vec3 shadeThrough(vec2 point, float rayFloorM, uint firstEmitterSample, uint emi
     vec3 position = origin + dir * hit.t;
     vec3 geometric = computeHitNormal(hit);
     vec3 n = dot(geometric, dir) < 0.0 ? geometric : -geometric; // faces the eye, as the G-buffer's
+    // A ray's hit knows its geometric normal: it decides sides here, unlike at the pixel's
+    // centre (direct.frag), whose G-buffer holds the shading normal alone.
+    vec3 shading = computeHitShadingNormal(hit, n);
     GpuMaterial m = materials[triangles[hit.triangle].w];
     vec3 diffuse = getHitDiffuse(m, hit.triangle, hit.barycentric);
-    vec3 radiance = computeDirectRadiance(position, n, diffuse, m.specular, -dir, rayFloorM) +
-                    computeEmitterRadiance(position, n, diffuse, m.specular, -dir, rayFloorM,
-                                           firstEmitterSample, emitterSamples, emitterSeeds) +
-                    computeEnvironmentRadiance(position, n, diffuse, m.specular, -dir, rayFloorM,
-                                               firstEmitterSample, emitterSamples,
-                                               emitterSeeds.zxy);
+    vec3 radiance =
+        computeShadedDirectRadiance(position, n, shading, diffuse, m.specular, -dir, rayFloorM) +
+        computeEmitterRadiance(position, n, shading, diffuse, m.specular, -dir, rayFloorM,
+                               firstEmitterSample, emitterSamples, emitterSeeds) +
+        computeEnvironmentRadiance(position, n, shading, diffuse, m.specular, -dir, rayFloorM,
+                                   firstEmitterSample, emitterSamples, emitterSeeds.zxy);
 #if EDGE_EMISSION
     radiance += computeEmittedRadiance(m.emission, -dot(geometric, dir));
 #endif

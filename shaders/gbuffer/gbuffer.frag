@@ -1,5 +1,6 @@
 // G-buffer fragment stage: writes the channels of the table in app/render/gbuffer.cpp.
 #include "lib/scene_buffers.glsl"
+#include "lib/vertex_attributes.glsl"
 #if GBUFFER_TEXTURES // the textured variant (GBufferPrograms)
 #include "lib/scene_textures.glsl"
 #endif
@@ -15,6 +16,8 @@ in vec4 vClip;
 in vec4 vPreviousClip;
 #endif
 flat in vec3 vNormalW;
+in vec3 vShadingNormalW;
+flat in uint vSmooth;
 flat in vec4 vDiffuse;
 flat in vec4 vSpecular;
 flat in vec4 vTransmissive;
@@ -39,6 +42,11 @@ void main() {
     // Surfaces are two-sided: the normal faces whoever looks at it.
     bool frontFace = dot(vNormalW, toEye) >= 0.0;
     vec3 n = frontFace ? vNormalW : -vNormalW;
+    // The channel holds the shading normal, on the geometric normal's side (the side the eye
+    // sees); w keeps which face that is. Readers use it for the BRDF's cosines and for their
+    // hemisphere tests and ray offsets alike: a second normal would cost a channel on every
+    // scene, and the shading normal on the seen side still offsets rays to that side.
+    if (vSmooth != 0u) n = orientShadingNormal(vShadingNormalW, n);
 #if GBUFFER_LIGHT_VIEWS
     const vec3 emission = vec3(0.0); // light views keep no emission
 #else

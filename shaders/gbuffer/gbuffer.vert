@@ -1,6 +1,8 @@
 // G-buffer vertex stage: pulls the triangle's three vertices from the scene buffers, so the flat
-// face normal needs no extra vertex data. One draw per instance.
+// face normal needs no extra vertex data; the corners' shading normals, where the mesh has them,
+// are interpolated beside it. One draw per instance.
 #include "lib/scene_buffers.glsl"
+#include "lib/vertex_attributes.glsl"
 #if GBUFFER_TEXTURES
 #include "lib/scene_textures.glsl"
 #endif
@@ -21,6 +23,10 @@ out vec4 vClip;
 out vec4 vPreviousClip;
 #endif
 flat out vec3 vNormalW;
+// The corner's shading normal in world space (not unit: normalised per fragment), read where
+// vSmooth is 1 (every corner has one; else the triangle is flat-shaded).
+out vec3 vShadingNormalW;
+flat out uint vSmooth;
 // The triangle's material, read here (three times a triangle) rather than per fragment: there
 // the flat index makes its storage-buffer load a gather per pixel on llvmpipe (a fifth of the
 // light views' time on the thesis preset).
@@ -40,13 +46,17 @@ void main() {
     vec3 p1 = positions[tri.y].xyz;
     vec3 p2 = positions[tri.z].xyz;
     uint corner = uint(gl_VertexID) % 3u;
+    uint vertex = corner == 0u ? tri.x : (corner == 1u ? tri.y : tri.z);
     vec3 p = corner == 0u ? p0 : (corner == 1u ? p1 : p2);
 #if GBUFFER_TEXTURES
-    vTexcoord = texcoords[corner == 0u ? tri.x : (corner == 1u ? tri.y : tri.z)];
+    vTexcoord = vertexAttributes[vertex].xy;
 #endif
     vec4 positionW = inst.worldFromObject * vec4(p, 1.0);
     vPositionW = positionW.xyz;
-    vNormalW = normalize(transpose(mat3(inst.objectFromWorld)) * cross(p1 - p0, p2 - p0));
+    mat3 normalFromObject = transpose(mat3(inst.objectFromWorld));
+    vNormalW = normalize(normalFromObject * cross(p1 - p0, p2 - p0));
+    vSmooth = hasShadingNormals(tri) ? 1u : 0u;
+    vShadingNormalW = vSmooth != 0u ? normalFromObject * getShadingNormal(vertex) : vNormalW;
     GpuMaterial m = materials[tri.w];
     vDiffuse = m.diffuse;
     vSpecular = m.specular;

@@ -185,6 +185,14 @@ vec3 computeHitNormal(RayHit hit) {
     return normalize(transpose(mat3(instances[hit.instance].objectFromWorld)) * n);
 }
 
+// The hit's shading normal on the side of `geometric` (computeHitNormal turned to either side);
+// needs lib/vertex_attributes.glsl included before.
+#ifdef ISPM_VERTEX_ATTRIBUTES_GLSL
+vec3 computeHitShadingNormal(RayHit hit, vec3 geometric) {
+    return computeShadingNormal(hit.triangle, hit.instance, hit.barycentric, geometric);
+}
+#endif
+
 bool overlapsBox(vec3 aLo, vec3 aHi, vec3 bLo, vec3 bHi) {
     return all(lessThanEqual(aLo, bHi)) && all(lessThanEqual(bLo, aHi));
 }

@@ -11,26 +11,44 @@
 #include "shadow_rays.glsl"
 #endif
 
-// `n` faces the viewer, `wo` points to it; rayFloorM: the shadow ray's offset floor
+// `n` (the geometric normal) faces the viewer and decides whether the light is above the
+// surface and where a shadow ray leaves; `shading` (the shading normal, on n's side) gives the
+// BRDF and its cosine. `wo` points to the viewer; rayFloorM: the shadow ray's offset floor
 // (GpuScene::getRayEpsilon; unused with shadow maps).
-vec3 computeLightRadiance(GpuLight light, vec3 position, vec3 n, vec3 diffuse, vec4 specular,
-                          vec3 wo, float rayFloorM) {
+vec3 computeShadedLightRadiance(GpuLight light, vec3 position, vec3 n, vec3 shading,
+                                vec3 diffuse, vec4 specular, vec3 wo, float rayFloorM) {
     LightSample s = sampleLight(light, position);
-    float cosTheta = dot(n, s.wi);
-    if (cosTheta <= 0.0 || all(equal(s.irradiance, vec3(0.0)))) return vec3(0.0);
+    float cosTheta = dot(shading, s.wi);
+    if (dot(n, s.wi) <= 0.0 || cosTheta <= 0.0 || all(equal(s.irradiance, vec3(0.0)))) {
+        return vec3(0.0);
+    }
 #if SHADOW_RAYS
     float visibility = computeRayVisibility(position, n, s, rayFloorM);
 #else
     float visibility = computeVisibility(light, position, n);
 #endif
-    return evaluateBrdf(diffuse, specular, n, s.wi, wo) * s.irradiance * cosTheta * visibility;
+    return evaluateBrdf(diffuse, specular, shading, s.wi, wo) * s.irradiance * cosTheta *
+           visibility;
+}
+
+// A flat-shaded surface: the geometric normal shades.
+vec3 computeLightRadiance(GpuLight light, vec3 position, vec3 n, vec3 diffuse, vec4 specular,
+                          vec3 wo, float rayFloorM) {
+    return computeShadedLightRadiance(light, position, n, n, diffuse, specular, wo, rayFloorM);
 }
 
 // Every light of the scene (frame.lightCount).
+vec3 computeShadedDirectRadiance(vec3 position, vec3 n, vec3 shading, vec3 diffuse,
+                                 vec4 specular, vec3 wo, float rayFloorM) {
+    vec3 radiance = vec3(0.0);
+    for (uint i = 0u; i < frame.lightCount; ++i) {
+        radiance += computeShadedLightRadiance(lights[i], position, n, shading, diffuse, specular,
+                                               wo, rayFloorM);
+    }
+    return radiance;
+}
+
 vec3 computeDirectRadiance(vec3 position, vec3 n, vec3 diffuse, vec4 specular, vec3 wo,
                            float rayFloorM) {
-    vec3 radiance = vec3(0.0);
-    for (uint i = 0u; i < frame.lightCount; ++i)
-        radiance += computeLightRadiance(lights[i], position, n, diffuse, specular, wo, rayFloorM);
-    return radiance;
+    return computeShadedDirectRadiance(position, n, n, diffuse, specular, wo, rayFloorM);
 }

@@ -153,13 +153,18 @@ bool isEmitterVisible(vec3 positionW, vec3 n, EmitterSample s, float rayFloorM) 
 }
 
 // BRDF x radiance x cos / pdf of one emitter sample, shadow ray included: the light arriving
-// from the emitters at (positionW, n), where n faces the viewer and wo points to it.
-vec3 shadeEmitterSample(EmitterSample s, vec3 positionW, vec3 n, vec3 diffuse, vec4 specular,
-                        vec3 wo, float rayFloorM) {
-    float cosTheta = dot(n, s.wi);
-    if (!(s.pdf > 0.0) || cosTheta <= 0.0 || all(equal(s.radiance, vec3(0.0)))) return vec3(0.0);
+// from the emitters at positionW, where n (the geometric normal) faces the viewer and decides
+// the side, shading (turned to n's side, docs/design.md "Shading normals") gives the BRDF and its
+// cosine, and wo points to the viewer.
+vec3 shadeEmitterSample(EmitterSample s, vec3 positionW, vec3 n, vec3 shading, vec3 diffuse,
+                        vec4 specular, vec3 wo, float rayFloorM) {
+    float cosTheta = dot(shading, s.wi);
+    if (!(s.pdf > 0.0) || cosTheta <= 0.0 || dot(n, s.wi) <= 0.0 ||
+        all(equal(s.radiance, vec3(0.0)))) {
+        return vec3(0.0);
+    }
     if (!isEmitterVisible(positionW, n, s, rayFloorM)) return vec3(0.0);
-    return evaluateBrdf(diffuse, specular, n, s.wi, wo) * s.radiance * (cosTheta / s.pdf);
+    return evaluateBrdf(diffuse, specular, shading, s.wi, wo) * s.radiance * (cosTheta / s.pdf);
 }
 
 // Three stratified numbers for sample `index` of a pixel: Sobol points (a (0,2)-sequence in the
@@ -182,15 +187,16 @@ uvec3 computeEmitterSeeds(uint key, uint slot) {
     return uvec3(s0, s1, hashPcg(s1));
 }
 
-// Direct light from the emitters at a surface point, the mean of `samples` stratified samples
-// (samples first..first + samples of the sequence seeded by `seeds`).
-vec3 computeEmitterRadiance(vec3 positionW, vec3 n, vec3 diffuse, vec4 specular, vec3 wo,
-                            float rayFloorM, uint first, uint samples, uvec3 seeds) {
+// Direct light from the emitters at a surface point (normals as shadeEmitterSample's), the mean
+// of `samples` stratified samples (samples first..first + samples of the sequence seeded by
+// `seeds`).
+vec3 computeEmitterRadiance(vec3 positionW, vec3 n, vec3 shading, vec3 diffuse, vec4 specular,
+                            vec3 wo, float rayFloorM, uint first, uint samples, uvec3 seeds) {
     if (frame.emitterCount == 0u || samples == 0u) return vec3(0.0);
     vec3 sum = vec3(0.0);
     for (uint i = 0u; i < samples; ++i) {
         EmitterSample s = sampleEmitter(positionW, computeEmitterNumbers(first + i, seeds), rayFloorM);
-        sum += shadeEmitterSample(s, positionW, n, diffuse, specular, wo, rayFloorM);
+        sum += shadeEmitterSample(s, positionW, n, shading, diffuse, specular, wo, rayFloorM);
     }
     return sum / float(samples);
 }

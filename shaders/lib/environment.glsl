@@ -24,21 +24,30 @@ vec3 lookUpEnvironment(vec3 toward) {
 // Bounce slot of seedRandom for a pixel's environment samples.
 const uint kEnvironmentSeedSlot = 0xfffffffbu;
 
-// Direct light from the environment at a surface point (n faces the viewer, wo points to it),
-// the mean of `samples` cosine-weighted directions (samples first.. of the sequence seeded by
-// `seeds`): BRDF x radiance x cos / (cos / pi) where the ray reaches the open sky.
-vec3 computeEnvironmentRadiance(vec3 positionW, vec3 n, vec3 diffuse, vec4 specular, vec3 wo,
-                                float rayFloorM, uint first, uint samples, uvec3 seeds) {
-    if (!hasEnvironment() || samples == 0u) return vec3(0.0);
+// One environment sample at a surface point (normals as shadeEmitterSample's): a direction
+// cosine-weighted about the shading normal from u.yz, kept where it leaves on the geometric
+// normal's side and a ray reaches the open sky; BRDF x radiance x cos / (cos / pi).
+vec3 shadeEnvironmentSample(vec3 u, vec3 positionW, vec3 n, vec3 shading, vec3 diffuse,
+                            vec4 specular, vec3 wo, float rayFloorM) {
+    vec3 dir = sampleCosine(shading, u.y, u.z);
+    if (dot(n, dir) <= 0.0) return vec3(0.0);
+    vec3 radiance = lookUpEnvironment(dir);
+    if (all(equal(radiance, vec3(0.0)))) return vec3(0.0);
     float offset = computeRayOffset(positionW, rayFloorM);
+    if (isRayBlocked(positionW + n * offset, dir, kNoHitDistance)) return vec3(0.0);
+    return evaluateBrdf(diffuse, specular, shading, dir, wo) * radiance * kPi;
+}
+
+// Direct light from the environment at a surface point, the mean of `samples` samples (samples
+// first.. of the sequence seeded by `seeds`).
+vec3 computeEnvironmentRadiance(vec3 positionW, vec3 n, vec3 shading, vec3 diffuse,
+                                vec4 specular, vec3 wo, float rayFloorM, uint first,
+                                uint samples, uvec3 seeds) {
+    if (!hasEnvironment() || samples == 0u) return vec3(0.0);
     vec3 sum = vec3(0.0);
     for (uint i = 0u; i < samples; ++i) {
-        vec3 u = computeEmitterNumbers(first + i, seeds);
-        vec3 dir = sampleCosine(n, u.y, u.z);
-        vec3 radiance = lookUpEnvironment(dir);
-        if (all(equal(radiance, vec3(0.0)))) continue;
-        if (isRayBlocked(positionW + n * offset, dir, kNoHitDistance)) continue;
-        sum += evaluateBrdf(diffuse, specular, n, dir, wo) * radiance * kPi;
+        sum += shadeEnvironmentSample(computeEmitterNumbers(first + i, seeds), positionW, n,
+                                      shading, diffuse, specular, wo, rayFloorM);
     }
     return sum / float(samples);
 }

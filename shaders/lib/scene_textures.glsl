@@ -1,10 +1,11 @@
-// Texture coordinates per vertex and the scene's texture array (GpuScene): the diffuse
-// reflectance of a textured material at a point. Untextured materials never sample.
+// The scene's texture array (GpuScene) and the texture coordinates of its vertices
+// (vertex_attributes.glsl): the diffuse reflectance of a textured material at a
+// point. Untextured materials never sample.
 #ifndef ISPM_SCENE_TEXTURES_GLSL
 #define ISPM_SCENE_TEXTURES_GLSL
 // Include after lib/scene_buffers.glsl (its triangles and GpuMaterial).
+#include "vertex_attributes.glsl"
 
-layout(std430, binding = kBindingTexcoords) readonly buffer SceneTexcoords { vec2 texcoords[]; };
 layout(binding = kUnitSceneTextures) uniform sampler2DArray uSceneTextures;
 
 bool hasDiffuseTexture(GpuMaterial m) {
@@ -19,7 +20,8 @@ float getDiffuseTextureLayer(GpuMaterial m) {
 // intersectTriangle reports them).
 vec2 interpolateTexcoord(uint triangle, vec2 b) {
     uvec4 t = triangles[triangle];
-    return (1.0 - b.x - b.y) * texcoords[t.x] + b.x * texcoords[t.y] + b.y * texcoords[t.z];
+    return (1.0 - b.x - b.y) * vertexAttributes[t.x].xy + b.x * vertexAttributes[t.y].xy +
+           b.y * vertexAttributes[t.z].xy;
 }
 
 // The diffuse reflectance where a ray hit: a ray has no footprint, so the finest level.

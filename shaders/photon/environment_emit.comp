@@ -7,6 +7,8 @@
 // survivors are appended to the bounce buffer. Travel counts from the first hit, as the sun's.
 #include "lib/scene_buffers.glsl"
 #include "lib/frame_constants.glsl"
+// Before bvh.glsl, for its computeHitShadingNormal.
+#include "lib/vertex_attributes.glsl"
 #include "lib/bvh.glsl"
 #include "lib/scene_textures.glsl"
 #include "shared/photon_data.h"
@@ -56,6 +58,7 @@ void main() {
     vec3 geometric = computeHitNormal(hit);
     bool frontFace = dot(geometric, dir) < 0.0;
     vec3 n = frontFace ? geometric : -geometric;
+    vec3 shading = computeHitShadingNormal(hit, n); // the BRDF's; n decides sides
     GpuMaterial m = materials[triangles[hit.triangle].w];
     vec3 diffuse = getHitDiffuse(m, hit.triangle, hit.barycentric);
     vec3 numbers = vec3(nextRandom(rng, generator), nextRandom(rng, generator),
@@ -63,9 +66,11 @@ void main() {
     float albedo = computeLobeAlbedo(diffuse, m.specular, m.transmissive);
     if (!(albedo > 0.0)) return;
     float selectScale = params.firstBounce == kFirstBounceWeighted ? 1.0 / albedo : 1.0;
-    uint event = scatterSurfaceWith(dir, power, n, diffuse, m.specular, m.transmissive, frontFace,
-                                    numbers, selectScale);
-    if (event == kScatterAbsorbed) return;
+    vec3 wiHit = -dir;
+    uint event = scatterSurfaceWith(dir, power, shading, diffuse, m.specular, m.transmissive,
+                                    frontFace, numbers, selectScale);
+    if (event == kScatterAbsorbed || !isScatterOnGeometricSide(event, dir, n)) return;
+    if (shading != n) power *= computeShadingAdjoint(wiHit, dir, n, shading);
     uint slot = atomicAdd(counters.bounce.x, 1u);
     if (slot >= params.bounceCapacity) return; // photon_prepare.comp clamps the count
     bouncePhotons[slot].positionDistance = vec4(position, 0.0);

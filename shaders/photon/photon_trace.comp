@@ -3,6 +3,8 @@
 // that arrives there after k reflections, k = 1..bounces); between hits the photon scatters by
 // the same Russian roulette as the first bounce.
 #include "lib/scene_buffers.glsl"
+// Before bvh.glsl, for its computeHitShadingNormal.
+#include "lib/vertex_attributes.glsl"
 #include "lib/bvh.glsl"
 #include "lib/scene_textures.glsl"
 #include "shared/photon_data.h"
@@ -85,8 +87,11 @@ void main() {
         vec3 geometric = computeHitNormal(hit);
         bool frontFace = dot(geometric, dir) < 0.0;
         vec3 n = frontFace ? geometric : -geometric;
+        // The BRDF's normal, as the G-buffer holds it (stored photons meet that one); n
+        // decides sides.
+        vec3 shading = computeHitShadingNormal(hit, n);
         GpuMaterial m = materials[triangles[hit.triangle].w];
-        if (isStoredSurface(m)) storePhoton(position, travelled, n, density, dir, reflections, light, power);
+        if (isStoredSurface(m)) storePhoton(position, travelled, shading, density, dir, reflections, light, power);
         if (reflections == bounces) {
             reflections = 0u;
             continue;
@@ -97,12 +102,14 @@ void main() {
         uint key = params.rngMode == kRngObjectSpace ? hashObjectPoint(hit) : id;
         uint rng = seedRandom(key, reflections, params.seed);
         vec3 diffuse = getHitDiffuse(m, hit.triangle, hit.barycentric);
-        uint event = scatterPhoton(dir, power, n, diffuse, m.specular, m.transmissive,
+        vec3 wiHit = -dir;
+        uint event = scatterPhoton(dir, power, shading, diffuse, m.specular, m.transmissive,
                                    frontFace, rng, params.rngGenerator);
-        if (event == kScatterAbsorbed) {
+        if (event == kScatterAbsorbed || !isScatterOnGeometricSide(event, dir, n)) {
             reflections = 0u;
             continue;
         }
+        if (shading != n) power *= computeShadingAdjoint(wiHit, dir, n, shading);
         density = updatePathDensity(density, event, m.specular.w);
         ++reflections;
     }

@@ -5,6 +5,8 @@
 // mirrors (caustics) converge here, which camera paths with next-event estimation cannot do.
 // `bounces` B as everywhere: vertex k carries light reflected k - 1 times, kept for k <= B + 1.
 #include "lib/scene_buffers.glsl"
+// Before bvh.glsl, for its computeHitShadingNormal.
+#include "lib/vertex_attributes.glsl"
 #include "lib/frame_constants.glsl"
 #include "lib/bvh.glsl"
 #include "lib/brdf.glsl"
@@ -125,7 +127,9 @@ bool sampleLightRay(inout uint rng, out vec3 origin, out vec3 dir, out vec3 powe
 // Adds the radiance this vertex sends to the eye, W/(m^2 sr) averaged over the pixel it lands
 // in: power x BRDF x cos(surface) / (d^2 x pixel area on the image plane x cos^3(camera)) (the
 // pinhole's importance for a box-filtered pixel), over this sample's path count.
-void connectToCamera(vec3 position, vec3 n, vec3 wiLight, GpuMaterial m, vec3 powerW) {
+// n: the geometric normal on the side the light came from; shading: the BRDF's, on n's side.
+void connectToCamera(vec3 position, vec3 n, vec3 shading, vec3 wiLight, GpuMaterial m,
+                     vec3 powerW) {
     vec3 toEye = frame.cameraPosW - position;
     float d2 = dot(toEye, toEye);
     float d = sqrt(d2);
@@ -135,8 +139,11 @@ void connectToCamera(vec3 position, vec3 n, vec3 wiLight, GpuMaterial m, vec3 po
     if (cosSurface <= 0.0 || cosCamera <= 0.0) return;
     ivec2 pixel;
     if (!findViewerPixel(position, pixel)) return;
-    vec3 f = evaluateBrdf(m.diffuse.rgb, m.specular, n, wiLight, wo);
+    vec3 f = evaluateBrdf(m.diffuse.rgb, m.specular, shading, wiLight, wo);
     if (all(equal(f, vec3(0.0)))) return;
+    // The flux arrived over the geometric area; the camera path gathers it with the shading
+    // cosine (computeShadingAdjoint with wo's cosine left in `importance`).
+    if (shading != n) f *= abs(dot(wiLight, shading)) / abs(dot(wiLight, n));
     float offset = computeRayOffset(position, params.rayFloorM);
     if (isRayBlocked(position + n * offset, wo, d - offset)) return;
     float importance = cosSurface /
@@ -161,7 +168,7 @@ void main() {
         // What the camera sees of the emitter: a Lambertian source is a white diffuse surface
         // that sends out its power (f = 1 / pi).
         GpuMaterial white = GpuMaterial(vec4(1.0, 1.0, 1.0, 0.0), vec4(0.0), vec4(0.0), vec4(0.0));
-        connectToCamera(origin, gEmitterNormal, gEmitterNormal, white, powerW);
+        connectToCamera(origin, gEmitterNormal, gEmitterNormal, gEmitterNormal, white, powerW);
     }
     uint bounces = params.bounces;
     for (uint vertex = 1u; vertex <= bounces + 1u; ++vertex) {
@@ -171,16 +178,19 @@ void main() {
         vec3 geometric = computeHitNormal(hit);
         bool frontFace = dot(geometric, dir) < 0.0;
         vec3 n = frontFace ? geometric : -geometric;
+        vec3 shading = computeHitShadingNormal(hit, n); // the BRDF's; n decides sides
         GpuMaterial m = materials[triangles[hit.triangle].w];
         if (any(greaterThan(m.diffuse.rgb + m.specular.rgb, vec3(0.0)))) {
-            connectToCamera(position, n, -dir, m, powerW);
+            connectToCamera(position, n, shading, -dir, m, powerW);
         }
         if (vertex == bounces + 1u) break;
+        vec3 wiHit = -dir;
         // Photon roulette on the albedo: power stays an unbiased flux estimate (radiance's
         // 1/eta^2 across refraction does not apply to flux).
-        uint event = scatterPhoton(dir, powerW, n, m.diffuse.rgb, m.specular, m.transmissive,
-                                   frontFace, rng, kRngPcg);
-        if (event == kScatterAbsorbed) break;
+        uint event = scatterPhoton(dir, powerW, shading, m.diffuse.rgb, m.specular,
+                                   m.transmissive, frontFace, rng, kRngPcg);
+        if (event == kScatterAbsorbed || !isScatterOnGeometricSide(event, dir, n)) break;
+        if (shading != n) powerW *= computeShadingAdjoint(wiHit, dir, n, shading);
         float offset = computeRayOffset(position, params.rayFloorM);
         origin = position + (dot(dir, n) >= 0.0 ? n : -n) * offset;
     }

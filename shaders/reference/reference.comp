@@ -8,6 +8,8 @@
 // `bounces` B counts reflections between the light and the visible surface, as in ispm mode:
 // light is gathered at vertices 1..B+1 and the path stops there.
 #include "lib/scene_buffers.glsl"
+// Before bvh.glsl, for its computeHitShadingNormal.
+#include "lib/vertex_attributes.glsl"
 #include "lib/frame_constants.glsl"
 #include "lib/bvh.glsl"
 #include "lib/scene_textures.glsl"
@@ -51,6 +53,7 @@ vec3 traceCameraPath(vec2 pixel, inout uint rng) {
         vec3 geometric = computeHitNormal(hit);
         bool frontFace = dot(geometric, dir) < 0.0;
         vec3 n = frontFace ? geometric : -geometric;
+        vec3 shading = computeHitShadingNormal(hit, n); // the BRDF's; n decides sides
         GpuMaterial m = materials[triangles[hit.triangle].w];
         vec3 diffuse = getHitDiffuse(m, hit.triangle, hit.barycentric);
         if (any(greaterThan(m.emission.rgb, vec3(0.0)))) {
@@ -69,17 +72,18 @@ vec3 traceCameraPath(vec2 pixel, inout uint rng) {
             radiance += throughput * computeEmittedRadiance(m.emission, cosAtEmitter) * weight;
         }
         vec3 wo = -dir;
-        radiance += throughput * computeDirectRadiance(position, n, diffuse, m.specular, wo,
-                                                       params.rayOffsetM);
+        radiance += throughput * computeShadedDirectRadiance(position, n, shading, diffuse,
+                                                             m.specular, wo, params.rayOffsetM);
         float total = computeLobeAlbedo(diffuse, m.specular, m.transmissive);
         bool scatters = vertex <= bounces && total > 0.0;
         if (frame.emitterCount > 0u) {
             vec3 u = vec3(nextRandom(rng, kRngPcg), nextRandom(rng, kRngPcg), nextRandom(rng, kRngPcg));
             EmitterSample s = sampleEmitter(position, u, params.rayOffsetM);
-            vec3 light = shadeEmitterSample(s, position, n, diffuse, m.specular, wo, params.rayOffsetM);
+            vec3 light = shadeEmitterSample(s, position, n, shading, diffuse, m.specular, wo,
+                                            params.rayOffsetM);
             // Where the path goes on, BSDF sampling could reach the same point.
             if (scatters && any(greaterThan(light, vec3(0.0)))) {
-                light *= computeMisWeight(s.pdf, computeScatterPdf(dir, n, diffuse, m.specular, s.wi, 1.0 / total));
+                light *= computeMisWeight(s.pdf, computeScatterPdf(dir, shading, diffuse, m.specular, s.wi, 1.0 / total));
             }
             radiance += throughput * light;
         }
@@ -87,24 +91,18 @@ vec3 traceCameraPath(vec2 pixel, inout uint rng) {
             // The environment's light at this vertex: one cosine-weighted direction with a ray
             // to the open sky, as direct.frag samples it (at the last vertex too: B counts the
             // reflections after the light).
-            float u1 = nextRandom(rng, kRngPcg);
-            float u2 = nextRandom(rng, kRngPcg);
-            vec3 toSky = sampleCosine(n, u1, u2);
-            float skyOffset = computeRayOffset(position, params.rayOffsetM);
-            vec3 sky = lookUpEnvironment(toSky);
-            if (any(greaterThan(sky, vec3(0.0))) &&
-                !isRayBlocked(position + n * skyOffset, toSky, kNoHitDistance)) {
-                radiance += throughput * evaluateBrdf(diffuse, m.specular, n, toSky, wo) * sky * kPi;
-            }
+            vec3 u = vec3(0.0, nextRandom(rng, kRngPcg), nextRandom(rng, kRngPcg));
+            radiance += throughput * shadeEnvironmentSample(u, position, n, shading, diffuse,
+                                                            m.specular, wo, params.rayOffsetM);
         }
         float offset = computeRayOffset(position, params.rayOffsetM);
         if (!scatters) break;
         vec3 dirIn = dir;
-        uint event = scatterSurface(dir, throughput, n, diffuse, m.specular, m.transmissive,
-                                    frontFace, rng, kRngPcg, 1.0 / total);
-        if (event == kScatterAbsorbed) break;
+        uint event = scatterSurface(dir, throughput, shading, diffuse, m.specular,
+                                    m.transmissive, frontFace, rng, kRngPcg, 1.0 / total);
+        if (event == kScatterAbsorbed || !isScatterOnGeometricSide(event, dir, n)) break;
         lastPdf = event == kScatterDiffuse || event == kScatterSpecular
-                      ? computeScatterPdf(dirIn, n, diffuse, m.specular, dir, 1.0 / total)
+                      ? computeScatterPdf(dirIn, shading, diffuse, m.specular, dir, 1.0 / total)
                       : 0.0;
         if (event == kScatterRefract) {
             throughput *= computeRefractedRadianceScale(frontFace, m.transmissive.w);

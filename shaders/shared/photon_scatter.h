@@ -291,6 +291,26 @@ ISPM_INLINE uint scatterSurface(ISPM_INOUT(vec3) dir, ISPM_INOUT(vec3) weight, v
                               vec3(u, u1, u2), selectScale);
 }
 
+// Whether a path scattered (by scatterSurface with a shading normal) into `dir` leaves on the
+// side of its event against the geometric normal `n` facing the side it came from: a
+// reflection above the surface, a refraction below. A shading normal's lobe can reach across
+// the surface; such a path ends (absorbed), so no light passes through it. With n as the
+// shading normal (flat surfaces) every sampled direction passes.
+ISPM_INLINE bool isScatterOnGeometricSide(uint event, vec3 dir, vec3 n) {
+    float side = dot(dir, n);
+    return event == kScatterRefract ? side <= 0.0f : side >= 0.0f;
+}
+
+// A light path (photons, the light tracer) scattered with a shading normal carries flux, which
+// crossed the surface by the geometric normal: Veach's adjoint correction (thesis 1997, eq. 5.19)
+// |toPrevious.shading| |toNext.n| / (|toPrevious.n| |toNext.shading|) multiplies its weight, so
+// that it reaches the same light as a camera path would gather. 1 where shading is n.
+ISPM_INLINE float computeShadingAdjoint(vec3 toPrevious, vec3 toNext, vec3 n, vec3 shading) {
+    float denominator = abs(dot(toPrevious, n)) * abs(dot(toNext, shading));
+    if (!(denominator > 0.0f)) return 0.0f;
+    return abs(dot(toPrevious, shading)) * abs(dot(toNext, n)) / denominator;
+}
+
 // Photons: Russian roulette on the albedo, absorbed photons end.
 ISPM_INLINE uint scatterPhoton(ISPM_INOUT(vec3) dir, ISPM_INOUT(vec3) power, vec3 n, vec3 diffuse,
                                vec4 specular, vec4 transmissive, bool entering,

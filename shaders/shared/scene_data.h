@@ -71,9 +71,31 @@ ISPM_CONST int kBindingExposure = 6;   // tone-map statistics
 // mat4 per instance: its worldFromObject when the last frame was drawn (AccumulatePass
 // reprojects the history of moving objects with it).
 ISPM_CONST int kBindingPreviousTransforms = 21;
-// vec2 per vertex (as kBindingPositions): texture coordinates, u right and v down the image
-// (zero for meshes without textures).
-ISPM_CONST int kBindingTexcoords = 27; // after the gather buffers (gather_data.h)
+// vec4 per vertex (as kBindingPositions): xy the texture coordinates, u right and v down the
+// image (zero for meshes without textures); zw the object-space unit shading normal
+// (encodeOctahedral), or z = kNoShadingNormal where the mesh gives none (a triangle with such a
+// corner is flat-shaded). One buffer for both: the photon tracer, which reads both, is at
+// llvmpipe's 16 storage blocks per compute shader.
+ISPM_CONST int kBindingVertexAttributes = 34; // after the disc list (photon_data.h)
+ISPM_CONST float kNoShadingNormal = 2.0f;     // outside the octahedral square [-1, 1]^2
+
+// A unit vector in two numbers in [-1, 1]: its octahedral map (Cigolle et al. 2014, "A Survey
+// of Efficient Representations for Independent Unit Vectors"), exact to float's rounding.
+ISPM_INLINE vec2 encodeOctahedral(vec3 n) {
+    vec2 p = vec2(n.x, n.y) * (1.0f / (abs(n.x) + abs(n.y) + abs(n.z)));
+    if (n.z >= 0.0f) return p;
+    return vec2((1.0f - abs(p.y)) * (p.x >= 0.0f ? 1.0f : -1.0f),
+                (1.0f - abs(p.x)) * (p.y >= 0.0f ? 1.0f : -1.0f));
+}
+
+// The vector encodeOctahedral encoded, not unit length (callers normalise, after interpolating).
+ISPM_INLINE vec3 decodeOctahedral(vec2 e) {
+    vec3 n = vec3(e.x, e.y, 1.0f - abs(e.x) - abs(e.y));
+    float fold = max(-n.z, 0.0f);
+    n.x += n.x >= 0.0f ? -fold : fold;
+    n.y += n.y >= 0.0f ? -fold : fold;
+    return n;
+}
 // 7..10: the BVH (shared/bvh_data.h); 11..20: the photon and importance buffers
 // (shared/photon_data.h, shared/importance_data.h)
 

@@ -11,6 +11,8 @@
 // uSpecularLight, with the spread in pixels of a glossy lobe's ray in alpha (0 for glass and
 // untraced pixels); specular_filter.comp blurs it by that spread and adds it to the image.
 #include "lib/scene_buffers.glsl"
+// Before bvh.glsl, for its computeHitShadingNormal.
+#include "lib/vertex_attributes.glsl"
 #include "lib/scene_textures.glsl"
 #include "lib/frame_constants.glsl"
 #include "lib/bvh.glsl"
@@ -44,18 +46,22 @@ struct PendingRay {
 PendingRay gStack[kMaxSpecularDepth + 1u];
 uint gTop = 0u;
 
-void pushRay(vec3 position, vec3 n, vec3 dir, vec3 weight, uint level, float offset) {
+void pushRay(vec3 position, vec3 n, vec3 dir, vec3 weight, uint level, float offset,
+             uint event) {
     if (max(weight.r, max(weight.g, weight.b)) < kMinRayWeight) return;
+    if (!isScatterOnGeometricSide(event, dir, n)) return; // a shading normal's ray across
+
     // Leave on the side the new direction points to (refraction crosses the surface).
     vec3 origin = position + (dot(dir, n) >= 0.0 ? n : -n) * offset;
     gStack[gTop++] = PendingRay(origin, dir, weight, level);
 }
 
-// The rays a surface at `position` sends on for a ray along `dir`: n faces where `dir` came
-// from, `frontFace` says whether that is the geometric front (for the index of refraction).
-void scatterRays(vec3 position, vec3 n, bool frontFace, vec3 dir, vec3 diffuse, vec4 specular,
-                 vec4 transmissive, vec3 weight, uint level) {
-    float cosIn = clamp(-dot(dir, n), 0.0, 1.0);
+// The rays a surface at `position` sends on for a ray along `dir`: n (geometric) faces where
+// `dir` came from and decides the sides, `shading` (on n's side) reflects and refracts,
+// `frontFace` says whether that is the geometric front (for the index of refraction).
+void scatterRays(vec3 position, vec3 n, vec3 shading, bool frontFace, vec3 dir, vec3 diffuse,
+                 vec4 specular, vec4 transmissive, vec3 weight, uint level) {
+    float cosIn = clamp(-dot(dir, shading), 0.0, 1.0);
     float offset = computeRayOffset(position, params.rayFloorM);
     vec3 reflected = vec3(0.0);
     if (isMirrorLobe(specular)) reflected += computeMirrorWeight(diffuse, specular, cosIn);
@@ -65,14 +71,16 @@ void scatterRays(vec3 position, vec3 n, bool frontFace, vec3 dir, vec3 diffuse, 
         reflected += transmissive.rgb * fresnel;
         if (fresnel < 1.0) {
             float sin2T = eta * eta * (1.0 - cosIn * cosIn);
-            vec3 refracted = normalize(dir * eta + n * (eta * cosIn - sqrt(1.0 - sin2T)));
+            vec3 refracted =
+                normalize(dir * eta + shading * (eta * cosIn - sqrt(1.0 - sin2T)));
             pushRay(position, n, refracted,
                     weight * transmissive.rgb * ((1.0 - fresnel) *
                                                  computeRefractedRadianceScale(frontFace, transmissive.w)),
-                    level, offset);
+                    level, offset, kScatterRefract);
         }
     }
-    pushRay(position, n, reflect(dir, n), weight * reflected, level, offset);
+    pushRay(position, n, reflect(dir, shading), weight * reflected, level, offset,
+            kScatterReflect);
 }
 
 // The indirect light of a hit: that of the visible pixel it projects onto when that pixel shows
@@ -113,7 +121,8 @@ void main() {
     vec3 dir = normalize(position.xyz - frame.cameraPosW);
     uint levels = params.levels;
     gTop = 0u;
-    scatterRays(position.xyz, normal.xyz, normal.w > 0.0, dir, texelFetch(uDiffuse, pixel, 0).rgb,
+    // The G-buffer holds the shading normal alone (gbuffer.frag): it decides the sides too.
+    scatterRays(position.xyz, normal.xyz, normal.xyz, normal.w > 0.0, dir, texelFetch(uDiffuse, pixel, 0).rgb,
                 specular, transmissive, vec3(1.0), 1u);
     vec3 radiance = vec3(0.0);
     uvec3 emitterSeeds = computeEmitterSeeds(uint(pixel.y) * uint(frame.imageSizePx.x) + uint(pixel.x),
@@ -135,23 +144,24 @@ void main() {
         vec3 geometric = computeHitNormal(hit);
         bool frontFace = dot(geometric, ray.dir) < 0.0;
         vec3 n = frontFace ? geometric : -geometric;
+        vec3 shading = computeHitShadingNormal(hit, n);
         GpuMaterial m = materials[triangles[hit.triangle].w];
         // The hit's own reflectance, its texture's included (as the reference reads it).
         vec3 diffuse = getHitDiffuse(m, hit.triangle, hit.barycentric);
         // Direct light with a shadow ray per light (glass blocks them, as in the reference).
-        vec3 direct = computeDirectRadiance(hitPosition, n, diffuse, m.specular, -ray.dir,
-                                            params.rayFloorM);
+        vec3 direct = computeShadedDirectRadiance(hitPosition, n, shading, diffuse, m.specular,
+                                                  -ray.dir, params.rayFloorM);
         // The emitters' light at the hit from area_samples points, and what an emitter shows.
-        direct += computeEmitterRadiance(hitPosition, n, diffuse, m.specular, -ray.dir,
+        direct += computeEmitterRadiance(hitPosition, n, shading, diffuse, m.specular, -ray.dir,
                                          params.rayFloorM, gTop * frame.areaSamples,
                                          frame.areaSamples, emitterSeeds);
         direct += computeEmittedRadiance(m.emission, -dot(geometric, ray.dir));
-        direct += computeEnvironmentRadiance(hitPosition, n, diffuse, m.specular, -ray.dir,
-                                             params.rayFloorM, gTop * frame.areaSamples,
+        direct += computeEnvironmentRadiance(hitPosition, n, shading, diffuse, m.specular,
+                                             -ray.dir, params.rayFloorM, gTop * frame.areaSamples,
                                              frame.areaSamples, emitterSeeds.zxy);
         radiance += ray.weight * (direct + lookUpIndirect(hitPosition, diffuse));
         if (ray.level < levels) {
-            scatterRays(hitPosition, n, frontFace, ray.dir, diffuse, m.specular, m.transmissive,
+            scatterRays(hitPosition, n, shading, frontFace, ray.dir, diffuse, m.specular, m.transmissive,
                         ray.weight, ray.level + 1u);
         }
     }

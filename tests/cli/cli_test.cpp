@@ -220,6 +220,14 @@ TEST_F(CliTest, BadSceneFilesExitTwoWithFileAndPath) {
     expectBadInput("render " + writeScene("obj.json", text) + " -o x.png",
                    {"obj.json", "missing.obj"});
     expectBadInput("render " + (mDir / "nothere.json").string() + " -o x.png", {"nothere.json"});
+    // A normal of zero length: the OBJ file and the vn's index.
+    std::ofstream(mDir / "flat_vn.obj")
+        << "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 0\nf 1//1 2//1 3//1\n";
+    text = kGoodScene;
+    text.replace(text.find("{\"type\": \"box\""), 0,
+                 "{\"type\": \"mesh\", \"obj\": \"flat_vn.obj\", \"material\": \"grey\"}, ");
+    expectBadInput("render " + writeScene("vn.json", text) + " -o x.png",
+                   {"vn.json", "/objects/0/obj", "flat_vn.obj", "vn 1", "non-zero length"});
 }
 
 TEST_F(CliTest, BadCommandLineValuesExitTwo) {

@@ -3,6 +3,8 @@
 
 #include <tiny_gltf.h>
 
+#include <glm/gtc/constants.hpp>
+
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
@@ -196,6 +198,91 @@ void writeCheckerRoomGltf(const std::string& path, const CheckerRoom& room) {
     if (!writer.WriteGltfSceneToFile(&model, path, true, true, !binary, binary)) {
         throw std::runtime_error("tinygltf could not write " + path);
     }
+}
+
+int writeSphereGltf(const std::string& path, const TessellatedSphere& sphere) {
+    tinygltf::Model model;
+    model.asset.version = "2.0";
+    model.buffers.resize(1);
+    std::vector<float> positions;
+    std::vector<float> normals;
+    for (int r = 0; r <= sphere.rings; ++r) {
+        const float theta = glm::pi<float>() * float(r) / float(sphere.rings); // from +y
+        // The poles exactly on the axis (sin(pi) in float is not 0): one point each.
+        const bool pole = r == 0 || r == sphere.rings;
+        const float sinTheta = pole ? 0.0f : std::sin(theta);
+        for (int s = 0; s <= sphere.segments; ++s) {
+            // The seam's two columns at exactly the same points, as exporters write them.
+            const float phi =
+                glm::two_pi<float>() * float(s % sphere.segments) / float(sphere.segments);
+            const glm::vec3 n(sinTheta * std::cos(phi), std::cos(theta), -sinTheta * std::sin(phi));
+            const glm::vec3 p = sphere.radiusM * n;
+            positions.insert(positions.end(), {p.x, p.y, p.z});
+            const bool bad = int(normals.size() / 3) == sphere.badNormalIndex;
+            const glm::vec3 written = bad ? sphere.badNormal : n;
+            normals.insert(normals.end(), {written.x, written.y, written.z});
+        }
+    }
+    const int vertexCount = int(positions.size() / 3);
+    std::vector<uint32_t> indices;
+    const auto at = [&](int r, int s) { return uint32_t(r * (sphere.segments + 1) + s); };
+    for (int r = 0; r < sphere.rings; ++r) {
+        for (int s = 0; s < sphere.segments; ++s) {
+            // phi turns counter-clockwise seen from +y, theta runs down: (r, s), (r + 1, s),
+            // (r + 1, s + 1) is counter-clockwise seen from outside. The poles' zero-area
+            // triangles are left out.
+            if (r > 0) indices.insert(indices.end(), {at(r, s), at(r + 1, s), at(r, s + 1)});
+            if (r + 1 < sphere.rings) {
+                indices.insert(indices.end(), {at(r, s + 1), at(r + 1, s), at(r + 1, s + 1)});
+            }
+        }
+    }
+    tinygltf::Primitive prim;
+    prim.attributes["POSITION"] =
+        addFloatAccessor(model, positions, TINYGLTF_TYPE_VEC3, size_t(vertexCount));
+    if (sphere.withNormals) {
+        const int accessor =
+            addFloatAccessor(model, normals, TINYGLTF_TYPE_VEC3, size_t(vertexCount));
+        // Bounds are optional here, and a bad normal's NaN would not survive the JSON.
+        model.accessors[size_t(accessor)].minValues.clear();
+        model.accessors[size_t(accessor)].maxValues.clear();
+        prim.attributes["NORMAL"] = accessor;
+    }
+    tinygltf::Buffer& buffer = model.buffers[0];
+    const size_t offset = buffer.data.size();
+    buffer.data.resize(offset + indices.size() * sizeof(uint32_t));
+    std::memcpy(buffer.data.data() + offset, indices.data(), indices.size() * sizeof(uint32_t));
+    tinygltf::BufferView view;
+    view.buffer = 0;
+    view.byteOffset = offset;
+    view.byteLength = indices.size() * sizeof(uint32_t);
+    model.bufferViews.push_back(view);
+    tinygltf::Accessor accessor;
+    accessor.bufferView = static_cast<int>(model.bufferViews.size() - 1);
+    accessor.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+    accessor.type = TINYGLTF_TYPE_SCALAR;
+    accessor.count = indices.size();
+    model.accessors.push_back(accessor);
+    prim.indices = static_cast<int>(model.accessors.size() - 1);
+    prim.material = addMaterial(model, "sphere", -1);
+    const double albedo = sphere.albedo;
+    model.materials.back().pbrMetallicRoughness.baseColorFactor = {albedo, albedo, albedo, 1.0};
+    prim.mode = TINYGLTF_MODE_TRIANGLES;
+    tinygltf::Mesh mesh;
+    mesh.name = "sphere";
+    mesh.primitives.push_back(prim);
+    model.meshes.push_back(mesh);
+    model.nodes.emplace_back();
+    model.nodes.back().mesh = 0;
+    tinygltf::Scene scene;
+    scene.nodes.push_back(0);
+    model.scenes.push_back(scene);
+    model.defaultScene = 0;
+    tinygltf::TinyGLTF writer;
+    if (!writer.WriteGltfSceneToFile(&model, path, true, true, true, false)) {
+        throw std::runtime_error("tinygltf could not write " + path);
+    }
+    return vertexCount;
 }
 
 } // namespace ispm::test

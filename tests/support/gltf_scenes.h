@@ -1,6 +1,6 @@
 // glTF files written by the tests themselves (tinygltf's writer), so the importer is checked on
 // files it did not make: a floor with a checker base colour texture, a white ceiling, a spot
-// light and a camera.
+// light and a camera; a tessellated sphere with or without normals.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -34,5 +34,21 @@ void writeCheckerRoomGltf(const std::string& path, const CheckerRoom& room);
 
 // Linear colour of the checker square (i, j) (i along +x, j along +z), sRGB decoded.
 glm::vec3 getCheckerColor(const CheckerRoom& room, int i, int j);
+
+// A UV sphere centred on the origin: `segments` around the y axis, `rings` from pole to pole,
+// every vertex on the sphere, triangles counter-clockwise seen from outside, one diffuse
+// material of base colour `albedo`; no lights, no cameras.
+struct TessellatedSphere {
+    float radiusM = 1.0f;
+    int segments = 96;
+    int rings = 48;
+    float albedo = 0.5f;
+    bool withNormals = true; // NORMAL: the sphere's own normal at each vertex; else flat
+    int badNormalIndex = -1; // >= 0: that vertex's NORMAL is badNormal (error tests)
+    glm::vec3 badNormal{0.0f};
+};
+
+// Writes the sphere as a .gltf with an embedded buffer. Returns its vertex count.
+int writeSphereGltf(const std::string& path, const TessellatedSphere& sphere);
 
 } // namespace ispm::test
