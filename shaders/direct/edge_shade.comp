@@ -18,8 +18,8 @@
 // seam of two boxes) is the one thing missed: the surface behind it is shaded instead.
 #include "lib/scene_buffers.glsl"
 #include "lib/frame_constants.glsl"
-#include "lib/bvh.glsl"
 #include "lib/scene_textures.glsl"
+#include "lib/bvh.glsl"
 #include "lib/brdf.glsl"
 #include "lib/lights.glsl"
 #include "lib/direct_light.glsl"

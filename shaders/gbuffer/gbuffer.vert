@@ -30,6 +30,9 @@ flat out vec4 vTransmissive;
 #if !GBUFFER_LIGHT_VIEWS
 flat out vec3 vEmission;
 #endif
+#if GBUFFER_ALPHA_TEST
+flat out float vAlphaCutoff;
+#endif
 flat out uint vInstance;
 
 void main() {
@@ -53,6 +56,9 @@ void main() {
     vTransmissive = m.transmissive;
 #if !GBUFFER_LIGHT_VIEWS
     vEmission = m.emission.rgb;
+#endif
+#if GBUFFER_ALPHA_TEST
+    vAlphaCutoff = m.surface.x;
 #endif
     vInstance = instance;
     gl_Position = params.clipFromWorld * positionW;

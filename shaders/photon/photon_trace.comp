@@ -3,8 +3,8 @@
 // that arrives there after k reflections, k = 1..bounces); between hits the photon scatters by
 // the same Russian roulette as the first bounce.
 #include "lib/scene_buffers.glsl"
-#include "lib/bvh.glsl"
 #include "lib/scene_textures.glsl"
+#include "lib/bvh.glsl"
 #include "shared/photon_data.h"
 #include "shared/photon_scatter.h"
 #include "lib/photon_lights.glsl"

@@ -6,8 +6,8 @@
 // light is gathered at vertices 1..B+1 and the path stops there.
 #include "lib/scene_buffers.glsl"
 #include "lib/frame_constants.glsl"
-#include "lib/bvh.glsl"
 #include "lib/scene_textures.glsl"
+#include "lib/bvh.glsl"
 #include "lib/brdf.glsl"
 #include "lib/lights.glsl"
 #define SHADOW_RAYS 1 // next-event estimation: a shadow ray per light
