@@ -217,11 +217,18 @@ GBufferPrograms::GBufferPrograms(bool lightViews)
                                                   : "GBUFFER_LIGHT_VIEWS 0");
                      return defines;
                  }()}) {
-    get(false); // a broken shader fails here, at start-up
+    get(false, false); // a broken shader fails here, at start-up
 }
 
-const gl::Program& GBufferPrograms::get(bool textured) {
-    return mVariants.get({textured ? "GBUFFER_TEXTURES 1" : "GBUFFER_TEXTURES 0"}).get();
+const gl::Program& GBufferPrograms::get(bool textured, bool alphaTested) {
+    return mVariants
+        .get({textured ? "GBUFFER_TEXTURES 1" : "GBUFFER_TEXTURES 0",
+              alphaTested ? "GBUFFER_ALPHA_TEST 1" : "GBUFFER_ALPHA_TEST 0"})
+        .get();
+}
+
+const gl::Program& GBufferPrograms::get(const GpuScene& scene) {
+    return get(scene.hasTextures(), scene.hasAlphaTest());
 }
 
 void GBufferPrograms::reloadIfChanged(ShaderReloadReport& report) {

@@ -112,19 +112,22 @@ void drawSceneGBuffer(const gl::Program& program, const GpuScene& scene,
                       const ParamBlocks<gpu::GBufferParams>& blocks, size_t first,
                       std::span<const uint32_t> order);
 
-// The G-buffer program in two variants: without textures (GBUFFER_TEXTURES 0: no texture
-// coordinates fetched or interpolated, as fast as before textures existed) and with them, built
-// when a scene with textures is first drawn.
+// The G-buffer program in variants: without textures (GBUFFER_TEXTURES 0: no texture
+// coordinates fetched or interpolated, as fast as before textures existed) and with them, and
+// with the alpha test (GBUFFER_ALPHA_TEST 1: its discard would cost opaque scenes their early
+// depth test), each built when a scene that needs it is first drawn.
 class GBufferPrograms {
   public:
     // lightViews: the light cameras' variant (GBUFFER_LIGHT_VIEWS 1), which writes no
     // viewer-only channel and interpolates nothing for them.
     explicit GBufferPrograms(bool lightViews);
-    const gl::Program& get(bool textured);
+    const gl::Program& get(bool textured, bool alphaTested);
+    const gl::Program& get(const GpuScene& scene); // the variant the scene's materials need
     void reloadIfChanged(ShaderReloadReport& report);
 
   private:
-    ProgramVariants mVariants; // by GBUFFER_TEXTURES; the plain one built with the object
+    ProgramVariants mVariants; // by GBUFFER_TEXTURES and GBUFFER_ALPHA_TEST; the plain one built
+                               // with the object
 };
 
 } // namespace ispm

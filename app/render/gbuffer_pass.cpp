@@ -40,7 +40,7 @@ void GBufferPass::execute(const FrameInputs& inputs) {
                         glm::vec4(inputs.cameraPosition, 1.0f), previous,
                         glm::vec2(inputs.width, inputs.height), jitterMotion);
     mParams.upload(blocks);
-    drawSceneGBuffer(mPrograms.get(inputs.scene.hasTextures()), inputs.scene, mParams, 0,
+    drawSceneGBuffer(mPrograms.get(inputs.scene), inputs.scene, mParams, 0,
                      computeDrawOrder(inputs.scene, glm::vec4(inputs.cameraPosition, 1.0f)));
 }
 
@@ -75,7 +75,7 @@ void LightViewPass::executeViews(const FrameInputs& inputs, size_t firstView, si
         } else {
             mGBuffer.bindTarget(layer);
         }
-        drawSceneGBuffer(mPrograms.get(inputs.scene.hasTextures()), inputs.scene, mParams,
+        drawSceneGBuffer(mPrograms.get(inputs.scene), inputs.scene, mParams,
                          i * inputs.scene.getInstanceCount(), mDrawOrders[i]);
     }
 }

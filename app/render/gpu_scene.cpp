@@ -19,15 +19,24 @@ namespace {
 // Camera rays on the CPU whose first hits fit the sun's shadow view (a few ms in a box city).
 constexpr int kViewerSamplesPerSide = 64;
 
+// Whether a triangle of the mesh has an alpha-tested material: only such instances make rays
+// read materials and textures at their hits, so opaque scenes trace as fast as before.
+bool hasAlphaTest(const Scene& scene, const Mesh& mesh) {
+    return std::any_of(mesh.triangleMaterials.begin(), mesh.triangleMaterials.end(),
+                       [&](uint32_t m) { return scene.materials[m].alphaCutoff > 0.0f; });
+}
+
 std::vector<gpu::GpuInstance> buildInstances(const Scene& scene, const BvhScene& bvh) {
     std::vector<gpu::GpuInstance> instances;
     for (const Instance& inst : scene.instances) {
+        const Mesh& mesh = scene.meshes[inst.meshIndex];
         gpu::GpuInstance g{};
         g.worldFromObject = inst.worldFromObject;
         g.objectFromWorld = glm::inverse(inst.worldFromObject);
         g.range = glm::uvec4(bvh.meshFirstTriangles[inst.meshIndex],
-                             static_cast<uint32_t>(scene.meshes[inst.meshIndex].triangles.size()),
-                             bvh.meshBlasRoots[inst.meshIndex], 0u);
+                             static_cast<uint32_t>(mesh.triangles.size()),
+                             bvh.meshBlasRoots[inst.meshIndex],
+                             hasAlphaTest(scene, mesh) ? gpu::kInstanceAlphaTested : 0u);
         instances.push_back(g);
     }
     return instances;
@@ -151,7 +160,8 @@ GpuScene::GpuScene(const Scene& scene, int lightResolution) : mLightResolution(l
         const float layer = m.diffuseTexture == kNoTexture ? 0.0f : float(m.diffuseTexture) + 1.0f;
         materials.push_back({glm::vec4(m.diffuse, layer), glm::vec4(m.specular, m.phongExponent),
                              glm::vec4(m.transmissive, m.ior),
-                             glm::vec4(m.emission, m.emissionTwoSided ? 1.0f : 0.0f)});
+                             glm::vec4(m.emission, m.emissionTwoSided ? 1.0f : 0.0f),
+                             glm::vec4(m.alphaCutoff, m.doubleSided ? 1.0f : 0.0f, 0.0f, 0.0f)});
     }
     mPositions = gl::Buffer::fromSpan<glm::vec4>("scene positions", positions);
     mTriangles = gl::Buffer::fromSpan<glm::uvec4>("scene triangles", triangles);
@@ -160,6 +170,8 @@ GpuScene::GpuScene(const Scene& scene, int lightResolution) : mLightResolution(l
     mTextures = buildSceneTextureArray(scene.textures);
     mHasTextures = std::any_of(scene.materials.begin(), scene.materials.end(),
                                [](const Material& m) { return m.diffuseTexture != kNoTexture; });
+    mHasAlphaTest = std::any_of(scene.materials.begin(), scene.materials.end(),
+                                [](const Material& m) { return m.alphaCutoff > 0.0f; });
     mHasSpecularLobes = std::any_of(materials.begin(), materials.end(), [](const auto& m) {
         return gpu::hasSpecularLobe(glm::vec3(m.specular));
     });
@@ -362,6 +374,11 @@ void GpuScene::keepTransformsAsPrevious() {
 std::vector<std::string> GpuScene::getSurfaceDefines() const {
     if (mHasSpecularLobes) return {};
     return {"SURFACE_SPECULAR 0"};
+}
+
+std::vector<std::string> GpuScene::getRayDefines() const {
+    if (mHasAlphaTest) return {};
+    return {"BVH_ALPHA_TEST 0"};
 }
 
 void GpuScene::bind() const {

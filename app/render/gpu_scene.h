@@ -31,6 +31,9 @@ class GpuScene {
     void bind() const; // binds every buffer (scene and BVH) to its kBinding* point
     // Whether any material has a texture (the G-buffer then draws with its textured variant).
     bool hasTextures() const { return mHasTextures; }
+    // Whether any material is alpha tested (Material::alphaCutoff): the G-buffers then draw with
+    // the variant that cuts its points out.
+    bool hasAlphaTest() const { return mHasAlphaTest; }
     // Whether any material is a mirror-like lobe or transmissive (isMirrorLobe, isTransmissive
     // of shared/specular_data.h): the surfaces SpecularPass traces; without one it does nothing.
     bool hasTracedSpecular() const { return mHasTracedSpecular; }
@@ -44,6 +47,10 @@ class GpuScene {
     // The shader defines of the scene's reflection model: {"SURFACE_SPECULAR 0"} without
     // specular parts (lib/brdf.glsl), else none.
     std::vector<std::string> getSurfaceDefines() const;
+    // The shader defines of the scene's ray tests (lib/bvh.glsl): {"BVH_ALPHA_TEST 0"} without
+    // alpha-tested materials, so that their traversal compiles without the test (llvmpipe runs
+    // both sides of a branch), else none.
+    std::vector<std::string> getRayDefines() const;
 
     // The instances' transforms of the frame drawn last (kBindingPreviousTransforms), which
     // reproject its pixels onto objects that moved since: FrameRunner keeps them after each
@@ -145,6 +152,7 @@ class GpuScene {
     gl::Buffer mVertexAttributes; // kBindingVertexAttributes
     gl::Texture mTextures;
     bool mHasTextures = false; // kUnitSceneTextures (scene_texture_array.h)
+    bool mHasAlphaTest = false;
     bool mHasSpecularLobes = true;
     bool mHasTracedSpecular = false;
     bool mHasTransmissive = true;

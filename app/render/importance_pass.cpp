@@ -125,7 +125,9 @@ void ImportancePass::buildMaps(const FrameInputs& inputs, bool keepMaps, bool ke
     mLights.bindTextures(gpu::kUnitLightGBufferFirst);
     if (share > 0.0f) {
         mHits.clearToZero();
-        mGather.get({getShadowRaysDefine(inputs.settings)}).use();
+        std::vector<std::string> defines = inputs.scene.getRayDefines();
+        defines.push_back(getShadowRaysDefine(inputs.settings));
+        mGather.get(defines).use();
         const uint32_t count = across * down;
         gl::dispatchCompute((count + gpu::kImportanceGroupSize - 1) / gpu::kImportanceGroupSize);
         gl::memoryBarrier(gl::Barrier::Storage);

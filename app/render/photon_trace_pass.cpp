@@ -20,9 +20,8 @@ PhotonTracePass::PhotonTracePass(PhotonBuffers& buffers)
       mPrepare(ReloadableProgram(
           {.label = "photon prepare",
            .stages = {{gl::ShaderStage::Compute, "photon/photon_prepare.comp"}}})),
-      mTrace(
-          ReloadableProgram({.label = "photon trace",
-                             .stages = {{gl::ShaderStage::Compute, "photon/photon_trace.comp"}}})),
+      mTrace({.label = "photon trace",
+              .stages = {{gl::ShaderStage::Compute, "photon/photon_trace.comp"}}}),
       mPrepareParams("photon prepare parameters", sizeof(gpu::PrepareParams)),
       mTraceParams("photon trace parameters", sizeof(gpu::TraceParams)),
       mPhotonsPerLane(gl::isCurrentRendererSoftware() ? gpu::kTracePhotonsPerLaneSoftware : 1u) {}
@@ -61,7 +60,7 @@ void PhotonTracePass::executeSlice(const FrameInputs& inputs, uint32_t slice, ui
         gl::memoryBarrier(gl::Barrier::Command | gl::Barrier::Storage);
     }
 
-    mTrace.use();
+    mTrace.get(inputs.scene.getRayDefines()).use();
     mTraceParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
     if (slices == 1) {
         gl::dispatchComputeIndirect(mBuffers.getCounters(),

@@ -24,7 +24,7 @@ class PhotonTracePass final : public Pass {
   private:
     PhotonBuffers& mBuffers;
     ReloadableProgram mPrepare;
-    ReloadableProgram mTrace;
+    ProgramVariants mTrace;    // by the scene's ray tests (GpuScene::getRayDefines)
     gl::Buffer mPrepareParams; // gpu::PrepareParams
     gl::Buffer mTraceParams;   // gpu::TraceParams
     uint32_t mPhotonsPerLane;  // photon_trace.comp: 1, or kTracePhotonsPerLaneSoftware on llvmpipe

@@ -44,16 +44,19 @@ ReferencePass::ReferencePass(const Scene& scene, std::unique_ptr<GpuScene> owned
       mWidth(settings.width), mHeight(settings.height),
       mBounces(settings.bouncesSet ? settings.bounces : kReferenceDefaultBounces),
       mSeed(settings.seed), mMethod(settings.referenceMethod) {
+    std::vector<std::string> defines = getGBufferDefines();
+    const std::vector<std::string> rays = mGpuScene.getRayDefines();
+    defines.insert(defines.end(), rays.begin(), rays.end());
     if (mMethod == gpu::kReferenceLight) {
         mProgram = gl::Program::build(
             getShaderRoot(), {.label = "reference light tracer",
                               .stages = {{gl::ShaderStage::Compute, "reference/light_trace.comp"}},
-                              .defines = getGBufferDefines()});
+                              .defines = defines});
         mResolveProgram = gl::Program::build(
             getShaderRoot(),
             {.label = "reference light resolve",
              .stages = {{gl::ShaderStage::Compute, "reference/light_resolve.comp"}},
-             .defines = getGBufferDefines()});
+             .defines = defines});
         mSplat = gl::Buffer("reference light splat", static_cast<size_t>(mWidth) *
                                                          static_cast<size_t>(mHeight) *
                                                          kSplatFloatsPerPixel * sizeof(float));
@@ -66,7 +69,7 @@ ReferencePass::ReferencePass(const Scene& scene, std::unique_ptr<GpuScene> owned
         mProgram = gl::Program::build(
             getShaderRoot(), {.label = "reference path tracer",
                               .stages = {{gl::ShaderStage::Compute, "reference/reference.comp"}},
-                              .defines = getGBufferDefines()});
+                              .defines = defines});
     }
     mAccumulation =
         gl::Texture::create2D("reference accumulation", gl::Format::RGBA32F, mWidth, mHeight);

@@ -78,6 +78,16 @@ std::vector<DirectDraw> planDirectDraws(const FrameInputs& inputs) {
     return draws;
 }
 
+// The defines of direct.frag and edge_shade.comp: the scene's reflection model, how shadows are
+// found, and the scene's ray tests.
+std::vector<std::string> getTracingDefines(const FrameInputs& inputs) {
+    std::vector<std::string> defines = inputs.scene.getSurfaceDefines();
+    defines.push_back(getShadowRaysDefine(inputs.settings));
+    const std::vector<std::string> rays = inputs.scene.getRayDefines();
+    defines.insert(defines.end(), rays.begin(), rays.end());
+    return defines;
+}
+
 } // namespace
 
 DirectPass::DirectPass(const GBuffer& viewer, const GBuffer& lights)
@@ -109,8 +119,7 @@ void DirectPass::execute(const FrameInputs& inputs) {
         // Each draw compiles in its lights' types (lights.glsl's LIGHT_TYPES): the sun's
         // compiles out the point and spot lights' code, a spot's the others'. A draw without
         // lights writes coverage alone: the plain program does.
-        std::vector<std::string> defines = inputs.scene.getSurfaceDefines();
-        defines.push_back(getShadowRaysDefine(inputs.settings));
+        std::vector<std::string> defines = getTracingDefines(inputs);
         if (draws[i].lightTypes != 0)
             defines.push_back("LIGHT_TYPES " + std::to_string(draws[i].lightTypes) + "u");
         // The first draw shades the emitting triangles and the environment too (direct.frag).
@@ -150,8 +159,7 @@ void DirectPass::shadeEdges(const FrameInputs& inputs) {
     params.rayFloorM = inputs.scene.getRayEpsilon();
     mEdgeParams.upload(0, sizeof(params), &params);
     mEdgeParams.bindBase(gl::BufferTarget::Uniform, gpu::kBindingPassParams);
-    std::vector<std::string> defines = inputs.scene.getSurfaceDefines();
-    defines.push_back(getShadowRaysDefine(inputs.settings));
+    std::vector<std::string> defines = getTracingDefines(inputs);
     defines.push_back(edgeEmission);
     mEdgeShade.get(defines).use();
     mTarget.getTexture().bindImage(gpu::kImageDirect, false, true);

@@ -45,10 +45,9 @@ SpecularPass::SpecularPass(const GBuffer& viewer, const gl::Texture& indirect,
           {.label = "specular ambient",
            .stages = {{gl::ShaderStage::Compute, "specular/specular_ambient.comp"}},
            .defines = getGBufferDefines()})),
-      mProgram(
-          ReloadableProgram({.label = "specular trace",
-                             .stages = {{gl::ShaderStage::Compute, "specular/specular_trace.comp"}},
-                             .defines = getGBufferDefines()})),
+      mProgram({.label = "specular trace",
+                .stages = {{gl::ShaderStage::Compute, "specular/specular_trace.comp"}},
+                .defines = getGBufferDefines()}),
       mFilter(ReloadableProgram(
           {.label = "specular filter",
            .stages = {{gl::ShaderStage::Compute, "specular/specular_filter.comp"}},
@@ -87,7 +86,7 @@ void SpecularPass::execute(const FrameInputs& inputs) {
     gl::memoryBarrier(gl::Barrier::ImageAccess);
     mAmbient.bindImage(gpu::kSpecularAmbientImage, true, false);
     mLight.bindImage(kImageUnit, false, true);
-    mProgram.use();
+    mProgram.get(inputs.scene.getRayDefines()).use();
     const auto groups = [](int size) {
         return (static_cast<unsigned>(size) + gpu::kSpecularGroupSize - 1) /
                gpu::kSpecularGroupSize;

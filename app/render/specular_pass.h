@@ -35,7 +35,7 @@ class SpecularPass final : public Pass {
     const gl::Texture& mIndirect;
     const gl::Texture& mTotal;
     ReloadableProgram mAmbientProgram;
-    ReloadableProgram mProgram;
+    ProgramVariants mProgram; // by the scene's ray tests (GpuScene::getRayDefines)
     ReloadableProgram mFilter;
     gl::Buffer mParams;
     gl::Texture mAmbient; // 1x1: the view's indirect light per unit reflectance

@@ -18,6 +18,11 @@ constexpr double kMaxLightPower = 1e12; // W/sr or W/m^2, as scene files' lights
 // A spot's light camera sees twice its outer angle; 90 degrees degenerates the projection, so
 // glTF's widest spot (pi/2) is narrowed to this, as scene files' spots are bounded.
 constexpr float kMaxSpotHalfAngleDeg = 89.9f;
+// glTF's alpha test for alphaMode BLEND, which ispm cannot draw partly transparent.
+constexpr double kBlendAlphaCutoff = 0.5;
+// A cutoff on the texture's alpha that no texel passes (alpha is at most 1): the whole material
+// is cut out, as glTF's would be with its factor's alpha below the cutoff.
+constexpr double kNothingPasses = 2.0;
 
 double readUnit(const GltfFile& file, double value, const std::string& path) {
     if (!(value >= 0.0 && value <= 1.0)) {
@@ -75,6 +80,28 @@ float readExtensionNumber(const GltfFile& file, const tinygltf::ExtensionMap& ex
     return float(value);
 }
 
+// The material's alpha test as Material::alphaCutoff, a bound on the texture's alpha alone:
+// glTF's alpha is baseColorFactor's alpha x the texture's, so a cutoff c on it is c / factor
+// on the texture's (above 1: nothing passes). BLEND is tested as MASK at 0.5: ispm has no
+// partly transparent surface, and a blended leaf or fence is mostly 0 or 1 (docs/scene-format.md).
+float readAlphaCutoff(const GltfFile& file, const tinygltf::Material& in, double factorAlpha,
+                      const std::string& at) {
+    double cutoff = 0.0;
+    if (in.alphaMode == "MASK") {
+        cutoff = in.alphaCutoff;
+        if (!(cutoff >= 0.0 && std::isfinite(cutoff))) {
+            file.fail(at + "/alphaCutoff", strCat("a number >= 0, got ", cutoff));
+        }
+    } else if (in.alphaMode == "BLEND") {
+        cutoff = kBlendAlphaCutoff;
+    } else if (in.alphaMode != "OPAQUE") {
+        file.fail(at + "/alphaMode", strCat("OPAQUE, MASK or BLEND, got '", in.alphaMode, "'"));
+    }
+    if (cutoff <= 0.0) return 0.0f;
+    return factorAlpha > 0.0 ? float(std::min(cutoff / factorAlpha, kNothingPasses))
+                             : float(kNothingPasses);
+}
+
 } // namespace
 
 GltfMaterials importGltfMaterials(const GltfFile& file, const std::string& prefix, Scene& scene) {
@@ -102,6 +129,9 @@ GltfMaterials importGltfMaterials(const GltfFile& file, const std::string& prefi
         }
         Material m = convertMetallicRoughness(base, metallic, roughness, textureMean);
         m.diffuseTexture = texture;
+        m.alphaCutoff = readAlphaCutoff(
+            file, in, readUnit(file, pbr.baseColorFactor[3], pbrAt + "/baseColorFactor/3"), at);
+        m.doubleSided = in.doubleSided;
         // Emission: radiance W/(m^2 sr) = factor x KHR_materials_emissive_strength (x the
         // emissive texture's mean: it cannot vary per point).
         glm::vec3 emission = readUnitColor(file, in.emissiveFactor, 3, at + "/emissiveFactor");

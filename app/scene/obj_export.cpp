@@ -103,6 +103,8 @@ void exportObj(const Scene& scene, const std::string& objPath) {
         appendVec3(mtl, "Kd", m.diffuse);
         if (m.diffuseTexture != kNoTexture) {
             mtl += "map_Kd " + textureFiles.at(m.diffuseTexture) + "\n";
+            // The texture's alpha cuts the surface out (read back at a cutoff of 0.5).
+            if (m.alphaCutoff > 0.0f) mtl += "map_d " + textureFiles.at(m.diffuseTexture) + "\n";
         }
         appendVec3(mtl, "Ks", m.specular);
         mtl += "Ns ";

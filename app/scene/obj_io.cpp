@@ -26,6 +26,7 @@ namespace ispm {
 namespace {
 
 constexpr uint32_t kUnmapped = 0xffffffffu;
+constexpr float kMtlAlphaCutoff = 0.5f; // map_d's alpha test: glTF's default alphaCutoff
 
 // MTL illumination models that refract (4: glass, 6: refraction, 7: refraction + Fresnel,
 // 9: glass without ray-traced reflection): only these make Tf and Ni mean transmission.
@@ -171,6 +172,12 @@ ObjModel importObj(const std::string& objPath) {
             }
             model.materials.back().diffuseTexture =
                 static_cast<uint32_t>(model.textures.size() - 1);
+            // map_d naming the map_Kd image: its alpha cuts the surface out, as glTF's MASK at
+            // its default cutoff (exporters write leaves so). A map_d of its own and `d` are
+            // not read: ispm has no partly transparent surface.
+            if (m.alpha_texname == m.diffuse_texname) {
+                model.materials.back().alphaCutoff = kMtlAlphaCutoff;
+            }
         }
     }
     const std::vector<tinyobj::real_t>& uvs = reader.GetAttrib().texcoords;

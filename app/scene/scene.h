@@ -92,6 +92,14 @@ struct Material {
     // Index into Scene::textures whose colour multiplies `diffuse` (glTF base colour, MTL
     // map_Kd), or kNoTexture. Meshes with such materials carry texture coordinates.
     uint32_t diffuseTexture = kNoTexture;
+    // Alpha test (glTF alphaMode MASK, leaves and fences): a point whose base colour texture's
+    // alpha (1 without a texture) is below it is not there, for the camera, the lights and every
+    // ray. 0: opaque; above 1: nothing of the material is there.
+    float alphaCutoff = 0.0f;
+    // glTF doubleSided, kept as the file said it. Every surface is drawn and traced two-sided
+    // whatever it says: a one-sided surface lets light through one way and not the other
+    // (docs/design.md "Alpha-tested and one-sided surfaces").
+    bool doubleSided = true;
 };
 
 enum class LightType : uint32_t { Point = 0, Spot = 1, Sun = 2 };

@@ -25,8 +25,8 @@
 // Before bvh.glsl, for its computeHitShadingNormal.
 #include "lib/vertex_attributes.glsl"
 #include "lib/frame_constants.glsl"
-#include "lib/bvh.glsl"
 #include "lib/scene_textures.glsl"
+#include "lib/bvh.glsl"
 #include "lib/brdf.glsl"
 #include "lib/lights.glsl"
 #include "lib/direct_light.glsl"

@@ -24,6 +24,9 @@ flat in vec4 vTransmissive;
 #if !GBUFFER_LIGHT_VIEWS
 flat in vec4 vEmission; // w = 1: both sides emit
 #endif
+#if GBUFFER_ALPHA_TEST
+flat in float vAlphaCutoff;
+#endif
 flat in uint vInstance;
 
 layout(location = GBUFFER_POSITION) out vec4 outPosition;
@@ -53,7 +56,13 @@ void main() {
     // One-sided emitters emit from the side their winding faces (lib/emitters.glsl).
     vec3 emission = frontFace || vEmission.w > 0.5 ? vEmission.rgb : vec3(0.0);
 #endif
-    GpuMaterial m = GpuMaterial(vDiffuse, vSpecular, vTransmissive, vec4(emission, 0.0));
+    GpuMaterial m = GpuMaterial(vDiffuse, vSpecular, vTransmissive, vec4(emission, 0.0),
+#if GBUFFER_ALPHA_TEST
+                                vec4(vAlphaCutoff, 0.0, 0.0, 0.0)
+#else
+                                vec4(0.0)
+#endif
+    );
     // Instance + 1: >= 1 on a surface (exact in float up to 2^24 instances).
     outPosition = vec4(vPositionW, float(vInstance + 1u));
     outNormal = vec4(n, frontFace ? 1.0 : -1.0);
@@ -62,10 +71,18 @@ void main() {
     // branch is uniform over each 2x2 quad (a quad is one triangle's, the material is flat), so
     // the implicit derivatives are defined, and untextured surfaces pay for no lookup.
     vec3 diffuse = m.diffuse.rgb;
+    float alpha = 1.0;
 #if GBUFFER_TEXTURES
     if (hasDiffuseTexture(m)) {
-        diffuse *= texture(uSceneTextures, vec3(vTexcoord, getDiffuseTextureLayer(m))).rgb;
+        vec4 texel = texture(uSceneTextures, vec3(vTexcoord, getDiffuseTextureLayer(m)));
+        diffuse *= texel.rgb;
+        alpha = texel.a;
     }
+#endif
+#if GBUFFER_ALPHA_TEST
+    // Cut out as the rays' test cuts it (isHitCutOut), but at the pixel's mip level: a leaf
+    // seen from afar keeps the shape its filtered texels give it.
+    if (alpha < vAlphaCutoff) discard;
 #endif
     outDiffuse = vec4(diffuse, 0.0);
     outSpecular = m.specular;

@@ -36,6 +36,9 @@ flat out vec4 vTransmissive;
 #if !GBUFFER_LIGHT_VIEWS
 flat out vec4 vEmission; // w = 1: both sides emit
 #endif
+#if GBUFFER_ALPHA_TEST
+flat out float vAlphaCutoff;
+#endif
 flat out uint vInstance;
 
 void main() {
@@ -63,6 +66,9 @@ void main() {
     vTransmissive = m.transmissive;
 #if !GBUFFER_LIGHT_VIEWS
     vEmission = m.emission;
+#endif
+#if GBUFFER_ALPHA_TEST
+    vAlphaCutoff = m.surface.x;
 #endif
     vInstance = instance;
     gl_Position = params.clipFromWorld * positionW;

@@ -1,8 +1,19 @@
 // Ray traversal of the two-level BVH (shared/bvh_data.h): a stack over the top level's instance
 // boxes, and for each instance leaf a stack over its mesh's bottom level, in object space. The
 // object-space direction is not renormalised, so hit distances stay world-space distances.
-// Needs scene_buffers.glsl included before.
+// Needs scene_buffers.glsl included before. Alpha-tested materials (GpuMaterial::surface.x) are
+// cut out where their texture says so, for every ray. BVH_ALPHA_TEST 0 compiles the test out:
+// for scenes without such materials (GpuScene::getRayDefines), and in a shader with no storage
+// block to spare for the texture coordinates (llvmpipe allows 16), which then sees them whole.
 #include "../shared/bvh_data.h"
+#ifndef BVH_ALPHA_TEST
+#define BVH_ALPHA_TEST 1
+#endif
+#if BVH_ALPHA_TEST
+// (The loader takes a file once, where it is first named: a shader under BVH_ALPHA_TEST 0 that
+// reads textures includes scene_textures.glsl before this file.)
+#include "scene_textures.glsl"
+#endif
 
 layout(std430, binding = kBindingBlasNodes) readonly buffer BlasNodes { GpuBvhNode blasNodes[]; };
 layout(std430, binding = kBindingBlasTriangleOrder) readonly buffer BlasOrder { uint blasTriangleOrder[]; };
@@ -104,6 +115,8 @@ bool intersectInstance(uint instanceIndex, vec3 originW, vec3 dirW, inout RayHit
     float stackT[kBvhStackSize];
     int top = 0;
     uint current = inst.range.z;
+    // Read once per instance, so an opaque one pays a branch per hit and no material load.
+    bool alphaTested = BVH_ALPHA_TEST != 0 && inst.range.w == kInstanceAlphaTested;
     GpuBvhNode root = blasNodes[current];
     if (intersectBox(origin, invDir, root.lo.xyz, root.hi.xyz, hit.t) >= kNoHitDistance) return false;
     while (true) {
@@ -116,8 +129,14 @@ bool intersectInstance(uint instanceIndex, vec3 originW, vec3 dirW, inout RayHit
                 uint tri = blasTriangleOrder[i];
                 uvec4 t = triangles[tri];
                 vec2 bc;
+                float tHit = hit.t;
                 if (intersectTriangle(origin, dir, positions[t.x].xyz, positions[t.y].xyz,
-                                      positions[t.z].xyz, hit.t, bc)) {
+                                      positions[t.z].xyz, tHit, bc)) {
+                    // A cut-out point is no hit: the ray goes on through the leaf's gaps.
+#if BVH_ALPHA_TEST
+                    if (alphaTested && isHitCutOut(materials[t.w], tri, bc)) continue;
+#endif
+                    hit.t = tHit;
                     hit.triangle = tri;
                     hit.instance = instanceIndex;
                     hit.barycentric = bc;

@@ -31,4 +31,15 @@ vec3 getHitDiffuse(GpuMaterial m, uint triangle, vec2 barycentric) {
     return m.diffuse.rgb *
            textureLod(uSceneTextures, vec3(uv, getDiffuseTextureLayer(m)), 0.0).rgb;
 }
+
+// Whether the material's alpha test cuts the point where a ray hit out (GpuMaterial::surface.x;
+// the finest level, as getHitDiffuse). Only alpha-tested instances ask (bvh.glsl).
+bool isHitCutOut(GpuMaterial m, uint triangle, vec2 barycentric) {
+    float alpha = 1.0;
+    if (hasDiffuseTexture(m)) {
+        vec2 uv = interpolateTexcoord(triangle, barycentric);
+        alpha = textureLod(uSceneTextures, vec3(uv, getDiffuseTextureLayer(m)), 0.0).a;
+    }
+    return alpha < m.surface.x;
+}
 #endif

@@ -29,6 +29,9 @@
 // rays of the clip, met against the triangles of one BVH box query around the disc.
 #include "lib/constants.glsl"
 #define ISPM_BVH_BOX_VISITOR
+// Its box queries see alpha-tested cards whole (a disc that crosses a leaf card's gap is clipped
+// there as by the whole card), and it has no storage block to spare for texture coordinates.
+#define BVH_ALPHA_TEST 0
 #include "lib/scene_buffers.glsl"
 #include "lib/bvh.glsl"
 #include "lib/frame_constants.glsl"

@@ -5,8 +5,9 @@
 #include "lib/scene_buffers.glsl"
 // Before bvh.glsl, for its computeHitShadingNormal.
 #include "lib/vertex_attributes.glsl"
-#include "lib/bvh.glsl"
+// Before bvh.glsl, which under BVH_ALPHA_TEST 0 would leave it out (the loader takes a file once).
 #include "lib/scene_textures.glsl"
+#include "lib/bvh.glsl"
 #include "shared/photon_data.h"
 #include "shared/photon_scatter.h"
 #include "lib/photon_lights.glsl"

@@ -167,7 +167,8 @@ void main() {
     if (gFromEmitter) {
         // What the camera sees of the emitter: a Lambertian source is a white diffuse surface
         // that sends out its power (f = 1 / pi).
-        GpuMaterial white = GpuMaterial(vec4(1.0, 1.0, 1.0, 0.0), vec4(0.0), vec4(0.0), vec4(0.0));
+        GpuMaterial white =
+            GpuMaterial(vec4(1.0, 1.0, 1.0, 0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
         connectToCamera(origin, gEmitterNormal, gEmitterNormal, gEmitterNormal, white, powerW);
     }
     uint bounces = params.bounces;

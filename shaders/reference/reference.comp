@@ -11,8 +11,8 @@
 // Before bvh.glsl, for its computeHitShadingNormal.
 #include "lib/vertex_attributes.glsl"
 #include "lib/frame_constants.glsl"
-#include "lib/bvh.glsl"
 #include "lib/scene_textures.glsl"
+#include "lib/bvh.glsl"
 #include "lib/brdf.glsl"
 #include "lib/lights.glsl"
 #define SHADOW_RAYS 1 // next-event estimation: a shadow ray per light

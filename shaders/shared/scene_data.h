@@ -15,17 +15,24 @@ struct GpuMaterial {
     vec4 transmissive; // rgb transmittance, w = index of refraction
     vec4 emission;     // rgb radiance W/(m^2 sr), w = 1: both sides emit (else the side the
                        // winding faces)
+    vec4 surface;      // x = alpha cutoff: a point whose base colour texture's alpha (1 without
+                       // a texture) is below it is cut out (0: opaque; Material::alphaCutoff),
+                       // y = 1 if the file called it double-sided (every surface is two-sided),
+                       // z, w unused
 };
-ISPM_STATIC_ASSERT_SIZE(GpuMaterial, 64);
+ISPM_STATIC_ASSERT_SIZE(GpuMaterial, 80);
 
 // One placed mesh: its triangles are triangles[firstTriangle .. firstTriangle + triangleCount).
 // Normals transform by transpose(mat3(objectFromWorld)).
 struct GpuInstance {
     mat4 worldFromObject;
     mat4 objectFromWorld;
-    uvec4 range; // x = firstTriangle, y = triangleCount, z = bottom-level BVH root node
+    uvec4 range; // x = firstTriangle, y = triangleCount, z = bottom-level BVH root node,
+                 // w = kInstanceAlphaTested if some triangle's material is alpha tested (rays
+                 // read its texture at their hits), else 0
 };
 ISPM_STATIC_ASSERT_SIZE(GpuInstance, 144);
+ISPM_CONST uint kInstanceAlphaTested = 1u;
 
 ISPM_CONST uint kLightPoint = 0u;
 ISPM_CONST uint kLightSpot = 1u;

@@ -105,6 +105,55 @@ tinygltf::Node makeVerticalNode(glm::vec3 position, bool up) {
     return node;
 }
 
+// A spot light shining down (or up) from `position`, in the scene.
+void addSpotNode(tinygltf::Model& model, tinygltf::Scene& scene, glm::vec3 position, bool up,
+                 float candela, float innerConeRad, float outerConeRad) {
+    tinygltf::Light light;
+    light.name = "spot";
+    light.type = "spot";
+    light.color = {1.0, 1.0, 1.0};
+    light.intensity = candela;
+    light.spot.innerConeAngle = innerConeRad;
+    light.spot.outerConeAngle = outerConeRad;
+    model.lights.push_back(light);
+    tinygltf::Node lightNode = makeVerticalNode(position, up);
+    lightNode.name = "spot";
+    tinygltf::Value::Object lightRef;
+    lightRef["light"] = tinygltf::Value(static_cast<int>(model.lights.size() - 1));
+    lightNode.extensions["KHR_lights_punctual"] = tinygltf::Value(lightRef);
+    model.nodes.push_back(lightNode);
+    scene.nodes.push_back(static_cast<int>(model.nodes.size() - 1));
+}
+
+// A camera looking down (or up) from `position`, in the scene.
+void addCameraNode(tinygltf::Model& model, tinygltf::Scene& scene, glm::vec3 position, bool up,
+                   float yFovRad) {
+    tinygltf::Camera camera;
+    camera.name = "eye";
+    camera.type = "perspective";
+    camera.perspective.yfov = yFovRad;
+    camera.perspective.znear = 0.01;
+    camera.perspective.zfar = 100.0;
+    camera.perspective.aspectRatio = 1.0;
+    model.cameras.push_back(camera);
+    tinygltf::Node cameraNode = makeVerticalNode(position, up);
+    cameraNode.camera = static_cast<int>(model.cameras.size() - 1);
+    // The image's up is the node's +y turned: -z looking down, +z looking up.
+    model.nodes.push_back(cameraNode);
+    scene.nodes.push_back(static_cast<int>(model.nodes.size() - 1));
+}
+
+void writeModel(tinygltf::Model& model, tinygltf::Scene scene, const std::string& path) {
+    model.scenes.push_back(std::move(scene));
+    model.defaultScene = 0;
+    model.extensionsUsed.push_back("KHR_lights_punctual");
+    tinygltf::TinyGLTF writer;
+    const bool binary = path.size() > 4 && path.substr(path.size() - 4) == ".glb";
+    if (!writer.WriteGltfSceneToFile(&model, path, true, true, !binary, binary)) {
+        throw std::runtime_error("tinygltf could not write " + path);
+    }
+}
+
 } // namespace
 
 glm::vec3 getCheckerColor(const CheckerRoom& room, int i, int j) {
@@ -159,45 +208,61 @@ void writeCheckerRoomGltf(const std::string& path, const CheckerRoom& room) {
         scene.nodes.push_back(static_cast<int>(model.nodes.size() - 1));
     }
 
-    tinygltf::Light light;
-    light.name = "spot";
-    light.type = "spot";
-    light.color = {1.0, 1.0, 1.0};
-    light.intensity = room.candela;
-    light.spot.innerConeAngle = room.innerConeRad;
-    light.spot.outerConeAngle = room.outerConeRad;
-    model.lights.push_back(light);
-    tinygltf::Node lightNode =
-        makeVerticalNode(glm::vec3(0.0f, room.lightHeightM, 0.0f), room.lightUp);
-    lightNode.name = "spot";
-    tinygltf::Value::Object lightRef;
-    lightRef["light"] = tinygltf::Value(0);
-    lightNode.extensions["KHR_lights_punctual"] = tinygltf::Value(lightRef);
-    model.nodes.push_back(lightNode);
-    scene.nodes.push_back(static_cast<int>(model.nodes.size() - 1));
+    addSpotNode(model, scene, glm::vec3(0.0f, room.lightHeightM, 0.0f), room.lightUp, room.candela,
+                room.innerConeRad, room.outerConeRad);
+    addCameraNode(model, scene, room.cameraPositionM, room.cameraUp, room.cameraYFovRad);
+    writeModel(model, std::move(scene), path);
+}
 
-    tinygltf::Camera camera;
-    camera.name = "eye";
-    camera.type = "perspective";
-    camera.perspective.yfov = room.cameraYFovRad;
-    camera.perspective.znear = 0.01;
-    camera.perspective.zfar = 100.0;
-    camera.perspective.aspectRatio = 1.0;
-    model.cameras.push_back(camera);
-    tinygltf::Node cameraNode = makeVerticalNode(room.cameraPositionM, room.cameraUp);
-    cameraNode.camera = 0;
-    // The image's up is the node's +y turned: -z looking down, +z looking up.
-    model.nodes.push_back(cameraNode);
-    scene.nodes.push_back(static_cast<int>(model.nodes.size() - 1));
+void writeLeafCardGltf(const std::string& path, const LeafCard& card) {
+    tinygltf::Model model;
+    model.asset.version = "2.0";
+    model.buffers.resize(1);
 
-    model.scenes.push_back(scene);
-    model.defaultScene = 0;
-    model.extensionsUsed.push_back("KHR_lights_punctual");
-    tinygltf::TinyGLTF writer;
-    const bool binary = path.size() > 4 && path.substr(path.size() - 4) == ".glb";
-    if (!writer.WriteGltfSceneToFile(&model, path, true, true, !binary, binary)) {
-        throw std::runtime_error("tinygltf could not write " + path);
+    tinygltf::Image image;
+    image.name = "leaf";
+    image.width = card.texelsPerSide;
+    image.height = card.texelsPerSide;
+    image.component = 4;
+    image.bits = 8;
+    image.pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+    image.mimeType = "image/png";
+    constexpr uint8_t kLeafGreen[3] = {60, 160, 60}; // sRGB
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            const float u = (float(x) + 0.5f) / float(image.width) - 0.5f;
+            const float v = (float(y) + 0.5f) / float(image.height) - 0.5f;
+            const bool inside = u * u + v * v < card.discRadius * card.discRadius;
+            image.image.insert(image.image.end(), {kLeafGreen[0], kLeafGreen[1], kLeafGreen[2],
+                                                   uint8_t(inside ? 255 : 0)});
+        }
     }
+    model.images.push_back(image);
+    tinygltf::Texture texture;
+    texture.source = 0;
+    model.textures.push_back(texture);
+
+    const int floorMaterial = addMaterial(model, "floor", -1);
+    const int leafMaterial = addMaterial(model, "leaf", 0);
+    tinygltf::Material& leaf = model.materials[static_cast<size_t>(leafMaterial)];
+    leaf.alphaMode = card.alphaMode;
+    leaf.alphaCutoff = card.alphaCutoff;
+    leaf.pbrMetallicRoughness.baseColorFactor[3] = card.factorAlpha;
+    tinygltf::Scene scene;
+    model.nodes.emplace_back();
+    model.nodes.back().mesh = addSquareMesh(model, card.floorHalfM, 0.0f, true, floorMaterial);
+    model.nodes.back().name = "floor";
+    scene.nodes.push_back(0);
+    model.nodes.emplace_back();
+    model.nodes.back().mesh =
+        addSquareMesh(model, card.cardHalfM, card.cardHeightM, true, leafMaterial);
+    model.nodes.back().name = "leaf";
+    scene.nodes.push_back(1);
+    addSpotNode(model, scene, glm::vec3(0.0f, card.lightHeightM, 0.0f), false, card.candela,
+                card.innerConeRad, card.outerConeRad);
+    addCameraNode(model, scene, glm::vec3(0.0f, card.cameraHeightM, 0.0f), false,
+                  card.cameraYFovRad);
+    writeModel(model, std::move(scene), path);
 }
 
 int writeSphereGltf(const std::string& path, const TessellatedSphere& sphere) {

@@ -1,6 +1,7 @@
 // glTF files written by the tests themselves (tinygltf's writer), so the importer is checked on
 // files it did not make: a floor with a checker base colour texture, a white ceiling, a spot
-// light and a camera; a tessellated sphere with or without normals.
+// light and a camera; a tessellated sphere with or without normals; and a leaf card, a square
+// whose texture's alpha cuts a disc out of it, over a floor.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -31,6 +32,30 @@ struct CheckerRoom {
 // Writes the room as a .gltf with embedded buffers and image (data URIs), or as a binary .glb
 // when the path ends in .glb.
 void writeCheckerRoomGltf(const std::string& path, const CheckerRoom& room);
+
+// A white floor (y = 0, x and z in [-floorHalf, floorHalf]), above it a card facing up at
+// cardHeight whose texture is green inside a disc (alpha 1) and transparent outside (alpha 0), and
+// a spot light pointing down at (0, lightHeight, 0); the camera looks down from cameraHeight.
+struct LeafCard {
+    float floorHalfM = 1.0f;
+    float cardHalfM = 0.25f;
+    float cardHeightM = 0.5f;
+    float discRadius = 0.4f; // in the texture's size: the disc fills 0.5 of the card's area
+    int texelsPerSide = 64;
+    std::string alphaMode = "MASK";
+    double alphaCutoff = 0.5;
+    double factorAlpha = 1.0; // baseColorFactor's alpha
+    float lightHeightM = 1.0f;
+    float candela = 683.0f; // 1 W/sr in ispm's units
+    float outerConeRad = 1.2f;
+    float innerConeRad = 1.1f;
+    float cameraHeightM = 2.5f;
+    float cameraYFovRad = 0.75f;
+};
+
+// Writes the card as a .gltf with embedded buffers and image. The floor is node (and instance)
+// 0, the card 1.
+void writeLeafCardGltf(const std::string& path, const LeafCard& card);
 
 // Linear colour of the checker square (i, j) (i along +x, j along +z), sRGB decoded.
 glm::vec3 getCheckerColor(const CheckerRoom& room, int i, int j);

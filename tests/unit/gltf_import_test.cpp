@@ -132,6 +132,44 @@ TEST(GltfImport, ObjectInSceneFileIsPlacedByItsTransform) {
     EXPECT_EQ(scene.namedCameras.size(), 1u);
 }
 
+// alphaMode and alphaCutoff as Material::alphaCutoff, a bound on the texture's alpha alone: the
+// factor's alpha divides glTF's cutoff; BLEND is MASK at 0.5; OPAQUE has none. doubleSided is
+// kept as written (every surface is two-sided all the same).
+TEST(GltfImport, AlphaModesBecomeCutoffsOnTheTexturesAlpha) {
+    ScratchDir dir;
+    struct Case {
+        const char* mode;
+        double cutoff;
+        double factorAlpha;
+        float expected;
+    };
+    const Case cases[] = {{"MASK", 0.5, 1.0, 0.5f},   {"MASK", 0.3, 0.5, 0.6f},
+                          {"MASK", 0.8, 0.4, 2.0f},   {"BLEND", 0.9, 1.0, 0.5f},
+                          {"OPAQUE", 0.7, 0.5, 0.0f}, {"MASK", 0.0, 1.0, 0.0f}};
+    for (const Case& c : cases) {
+        LeafCard card;
+        card.alphaMode = c.mode;
+        card.alphaCutoff = c.cutoff;
+        card.factorAlpha = c.factorAlpha;
+        const std::string path = dir.getPath("leaf.gltf");
+        writeLeafCardGltf(path, card);
+        const Scene scene = loadScene(path);
+        ASSERT_EQ(scene.meshes.size(), 2u);
+        const Material& leaf = scene.materials[scene.meshes[1].triangleMaterials[0]];
+        const Material& floor = scene.materials[scene.meshes[0].triangleMaterials[0]];
+        EXPECT_FLOAT_EQ(leaf.alphaCutoff, c.expected) << c.mode << " " << c.cutoff;
+        EXPECT_EQ(floor.alphaCutoff, 0.0f);
+        EXPECT_TRUE(leaf.doubleSided);
+    }
+    // glTF's default is one-sided: read as written.
+    writeLeafCardGltf(dir.getPath("leaf.gltf"), LeafCard{});
+    std::ifstream in(dir.getPath("leaf.gltf"));
+    nlohmann::json doc = nlohmann::json::parse(in);
+    doc["materials"][1].erase("doubleSided");
+    const Scene oneSided = loadScene(dir.write("one_sided.gltf", doc.dump()));
+    EXPECT_FALSE(oneSided.materials[oneSided.meshes[1].triangleMaterials[0]].doubleSided);
+}
+
 // The glTF file as JSON, to be broken field by field.
 nlohmann::json readRoomJson(const ScratchDir& dir) {
     const std::string path = dir.getPath("room.gltf");
@@ -163,6 +201,19 @@ TEST(GltfImport, MalformedFilesNameFileAndJsonPath) {
              d["materials"][0]["pbrMetallicRoughness"]["baseColorFactor"] = {1.0, 2.0, 1.0, 1.0};
          },
          "/materials/0/pbrMetallicRoughness/baseColorFactor/1"},
+        {"base colour's alpha above 1",
+         [](nlohmann::json& d) {
+             d["materials"][0]["pbrMetallicRoughness"]["baseColorFactor"] = {1.0, 1.0, 1.0, 1.5};
+         },
+         "/materials/0/pbrMetallicRoughness/baseColorFactor/3"},
+        {"negative alpha cutoff",
+         [](nlohmann::json& d) {
+             d["materials"][0]["alphaMode"] = "MASK";
+             d["materials"][0]["alphaCutoff"] = -0.5;
+         },
+         "/materials/0/alphaCutoff"},
+        {"unknown alpha mode", [](nlohmann::json& d) { d["materials"][0]["alphaMode"] = "CUTOUT"; },
+         "/materials/0/alphaMode"},
         {"accessor longer than its view",
          [](nlohmann::json& d) { d["accessors"][0]["count"] = 1000; }, "/accessors/0"},
         {"index beyond the vertices",

@@ -81,6 +81,29 @@ TEST(ObjTexture, MissingImageOrCoordinatesAreErrors) {
     EXPECT_TRUE(contains(noVt, "needs vt coordinates")) << noVt;
 }
 
+// map_d naming the map_Kd image cuts the surface out where its alpha is below 0.5 (glTF's MASK
+// default); `d` and a map_d of another image are not read. Export writes the map_d back.
+TEST(ObjTexture, MapDOfTheColourImageIsAnAlphaTest) {
+    ScratchDir dir;
+    dir.write("t.obj", kTexturedObj);
+    writeTinyPng(dir.getPath("tiny.png"));
+    writeTinyPng(dir.getPath("other.png"));
+    const auto readCutoff = [&](const std::string& mtl) {
+        dir.write("t.mtl", mtl);
+        const Scene scene = loadScene(dir.write("s.json", makeScene()));
+        return scene.materials.at(scene.meshes.at(0).triangleMaterials[0]).alphaCutoff;
+    };
+    EXPECT_EQ(readCutoff("newmtl tex\nKd 1 1 1\nmap_Kd tiny.png\nmap_d tiny.png\n"), 0.5f);
+    EXPECT_EQ(readCutoff("newmtl tex\nKd 1 1 1\nmap_Kd tiny.png\nmap_d other.png\n"), 0.0f);
+    EXPECT_EQ(readCutoff("newmtl tex\nKd 1 1 1\nmap_Kd tiny.png\nd 0.3\n"), 0.0f);
+
+    const Scene scene = loadScene(dir.write("s.json", makeScene()));
+    Scene masked = scene;
+    masked.materials.at(0).alphaCutoff = 0.5f;
+    exportObj(masked, dir.getPath("out.obj"));
+    EXPECT_EQ(importObj(dir.getPath("out.obj")).materials.at(0).alphaCutoff, 0.5f);
+}
+
 TEST(ObjTexture, ExportWritesTexturesAndCoordinates) {
     ScratchDir dir;
     writeCheckerRoomGltf(dir.getPath("room.gltf"), CheckerRoom{});
