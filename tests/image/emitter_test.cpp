@@ -90,35 +90,38 @@ Means compareWithClosedForm(const Scene& scene, const Image& image, float halfM)
 
 class EmitterTest : public GlTest {};
 
+// ispm's direct light and the path tracer's, each within 1% of the closed form over the image
+// (the bar; the sampling noise of 8 stratified samples per pixel averages out over the
+// 1,024 pixels far below it). Returns ispm's image.
+Image expectDirectLightMatchesClosedForm(const Scene& scene, float halfM) {
+    const Image direct =
+        renderAov(scene, makeTestSettings({{"width", kSize}, {"height", kSize}, {"bounces", 0}}),
+                  Aov::Direct);
+    const Means ispm = compareWithClosedForm(scene, direct, halfM);
+    EXPECT_NEAR(ispm.actual, ispm.expected, 0.01 * ispm.expected) << "ispm";
+    const Image reference = renderReference(scene, "path", kSize, 16, 0);
+    const Means path = compareWithClosedForm(scene, reference, halfM);
+    EXPECT_NEAR(path.actual, path.expected, 0.01 * path.expected) << "path tracer";
+    return direct;
+}
+
 TEST_F(EmitterTest, PlaneEmitterLightsTheFloorWithPiL) {
     // A 200 m emitter 1 m above: E = pi L within 1e-4, so the floor shows rho L. Sampled by
     // area alone it would take thousands of samples (the light comes from the few square metres
     // overhead); by solid angle it takes a few.
     constexpr float kHalf = 100.0f;
     const Scene scene = makeEmitterOverFloor(kHalf);
-    const Image direct =
-        renderAov(scene, makeTestSettings({{"width", kSize}, {"height", kSize}, {"bounces", 0}}),
-                  Aov::Direct);
-    const Means ispm = compareWithClosedForm(scene, direct, kHalf);
-    EXPECT_NEAR(ispm.expected, kRho * kRadiance, 1e-3 * kRho * kRadiance);
-    // 1%: the bar; the sampling noise of 8 stratified samples per pixel averages out
-    // over the 1,024 pixels far below it.
-    EXPECT_NEAR(ispm.actual, ispm.expected, 0.01 * ispm.expected);
-    const Image reference = renderReference(scene, "path", kSize, 16, 0);
-    const Means path = compareWithClosedForm(scene, reference, kHalf);
-    EXPECT_NEAR(path.actual, path.expected, 0.01 * path.expected);
+    EXPECT_NEAR(compareWithClosedForm(scene, Image(kSize, kSize), kHalf).expected, kRho * kRadiance,
+                1e-3 * kRho * kRadiance);
+    expectDirectLightMatchesClosedForm(scene, kHalf);
 }
 
 TEST_F(EmitterTest, SmallSquareMatchesTheFormFactor) {
     // A 20 cm square 1 m above: the irradiance falls off over the image (form factor 0.0127 on
-    // the axis); ispm's direct light and the path tracer each within 1% of the closed form.
+    // the axis).
     constexpr float kHalf = 0.1f;
     const Scene scene = makeEmitterOverFloor(kHalf);
-    const Image direct =
-        renderAov(scene, makeTestSettings({{"width", kSize}, {"height", kSize}, {"bounces", 0}}),
-                  Aov::Direct);
-    const Means ispm = compareWithClosedForm(scene, direct, kHalf);
-    EXPECT_NEAR(ispm.actual, ispm.expected, 0.01 * ispm.expected);
+    const Image direct = expectDirectLightMatchesClosedForm(scene, kHalf);
     // Every pixel within 3%: the solid angle sampling leaves a pixel's noise in the cosines alone.
     for (int y = 0; y < kSize; ++y) {
         for (int x = 0; x < kSize; ++x) {
@@ -129,9 +132,6 @@ TEST_F(EmitterTest, SmallSquareMatchesTheFormFactor) {
                 << "pixel " << x << "," << y;
         }
     }
-    const Image reference = renderReference(scene, "path", kSize, 16, 0);
-    const Means path = compareWithClosedForm(scene, reference, kHalf);
-    EXPECT_NEAR(path.actual, path.expected, 0.01 * path.expected);
 }
 
 TEST_F(EmitterTest, OneSidedEmitterLightsOnlyItsFront) {

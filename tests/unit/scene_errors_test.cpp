@@ -92,6 +92,27 @@ std::vector<ErrorCase> getErrorCases() {
         {"UnknownLightType",
          mutate([](json& d) { d["lights"][0]["type"] = "laser"; }),
          {"/lights/0/type", "laser"}},
+        {"NegativeEnvironmentRadiance",
+         mutate([](json& d) {
+             d["environment"] = {{"type", "constant"}, {"radiance", {1, -1, 1}}};
+         }),
+         {"/environment/radiance/1", "-1"}},
+        {"SkyWithoutSun",
+         mutate([](json& d) {
+             d["environment"] = {{"type", "sky"}};
+         }),
+         {"/environment", "sun_direction"}},
+        {"AreaLightWithRadianceAndPower",
+         mutate([](json& d) {
+             d["lights"][0] = {{"type", "area"}, {"position", {0, 1, 0}}, {"normal", {0, -1, 0}},
+                               {"size", {1, 1}}, {"radiance", {1, 1, 1}}, {"power", {1, 1, 1}}};
+         }),
+         {"/lights/0", "one of radiance"}},
+        {"NanEmission",
+         mutate([](json& d) {
+             d["materials"]["white"]["emission"] = {1, "nan", 1};
+         }),
+         {"/materials/white/emission/1"}},
         {"UnknownObjectType",
          mutate([](json& d) { d["objects"][0]["type"] = "sphere"; }),
          {"/objects/0/type", "sphere"}},
