@@ -1,12 +1,15 @@
 // Ends one sample of the light tracer: adds the sample's splat buffer (reference/light_trace.comp)
 // to the accumulation image as one sample (rgb sum, count), clears it for the next, and adds what
 // light paths cannot reach: emission and background seen through a jittered camera ray (the
-// path tracer's first vertex, reference.comp).
+// path tracer's first vertex, reference.comp): an emitter's front (or either side of a two-sided
+// one), the environment, or the background.
 #include "lib/scene_buffers.glsl"
 #include "lib/frame_constants.glsl"
 #include "lib/bvh.glsl"
 #include "shared/photon_scatter.h"
 #include "shared/light_trace_data.h"
+#define ENVIRONMENT_LOOKUP_ONLY 1
+#include "lib/environment.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 0, rgba32f) uniform image2D uAccumulation;
@@ -17,8 +20,12 @@ layout(std430, binding = kBindingLightSplat) buffer LightSplat { float splat[]; 
 vec3 traceEmission(vec2 pixel) {
     vec3 dir = normalize(computeEyeToNear(pixel));
     RayHit hit;
-    if (!traceRay(frame.cameraPosW, dir, kNoHitDistance, hit)) return frame.backgroundRadiance;
-    return materials[triangles[hit.triangle].w].emission.rgb;
+    if (!traceRay(frame.cameraPosW, dir, kNoHitDistance, hit)) {
+        return hasEnvironment() ? lookUpEnvironment(dir) : frame.backgroundRadiance;
+    }
+    vec4 emission = materials[triangles[hit.triangle].w].emission;
+    bool front = dot(computeHitNormal(hit), dir) < 0.0;
+    return front || emission.w > 0.5 ? emission.rgb : vec3(0.0);
 }
 
 void main() {

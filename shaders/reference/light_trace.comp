@@ -42,10 +42,6 @@ float computeLightPowerW(GpuLight light) {
     return mean * 2.0 * kTwoPiF;
 }
 
-// Set by sampleLightRay for a path that leaves an emitter: the point it leaves and the side.
-bool gFromEmitter = false;
-vec3 gEmitterNormal = vec3(0.0);
-
 // A ray leaving a light: origin, unit direction and power (W) divided by the probability of
 // choosing it. False when the scene has no light with power.
 bool sampleLightRay(inout uint rng, out vec3 origin, out vec3 dir, out vec3 powerW) {
@@ -69,8 +65,6 @@ bool sampleLightRay(inout uint rng, out vec3 origin, out vec3 dir, out vec3 powe
         origin = point + normal * computeRayOffset(point, params.rayFloorM);
         float choice = emitterPower / total;
         powerW = e.radiance.rgb * (emitterPower / (computeMean(e.radiance.rgb) * choice));
-        gFromEmitter = true;
-        gEmitterNormal = normal;
         return true;
     }
     u -= emitterPower;
@@ -164,13 +158,6 @@ void main() {
     vec3 powerW;
     if (!sampleLightRay(rng, origin, dir, powerW)) return;
     if (all(equal(powerW, vec3(0.0)))) return;
-    if (gFromEmitter) {
-        // What the camera sees of the emitter: a Lambertian source is a white diffuse surface
-        // that sends out its power (f = 1 / pi).
-        GpuMaterial white =
-            GpuMaterial(vec4(1.0, 1.0, 1.0, 0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
-        connectToCamera(origin, gEmitterNormal, gEmitterNormal, gEmitterNormal, white, powerW);
-    }
     uint bounces = params.bounces;
     for (uint vertex = 1u; vertex <= bounces + 1u; ++vertex) {
         RayHit hit;
