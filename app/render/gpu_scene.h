@@ -9,6 +9,8 @@
 #include "scene/emitters.h"
 #include "scene/scene.h"
 
+#include <glm/gtc/constants.hpp>
+
 #include <shared/emitter_data.h>
 #include <shared/scene_data.h>
 
@@ -79,7 +81,7 @@ class GpuScene {
     bool hasEnvironment() const { return mEnvironmentMean.solidAngleSr > 0.0; }
     double getEnvironmentPowerW() const {
         const double r = getBoundingRadius();
-        return mEnvironmentMean.luminance * mEnvironmentMean.solidAngleSr * 3.141592653589793 * r *
+        return mEnvironmentMean.luminance * mEnvironmentMean.solidAngleSr * glm::pi<double>() * r *
                r;
     }
     // The radius of the sphere around getBounds (m).

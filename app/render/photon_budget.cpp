@@ -141,11 +141,6 @@ std::vector<EmissionGrid> computeEmissionGrids(const Scene& scene,
     return grids;
 }
 
-double computeEnvironmentPower(const Environment& environment, double radiusM) {
-    const EnvironmentMean mean = computeEnvironmentMean(environment);
-    return mean.luminance * mean.solidAngleSr * glm::pi<double>() * radiusM * radiusM;
-}
-
 uint32_t countPhotons(const std::vector<EmissionGrid>& grids) {
     uint32_t total = 0;
     for (const EmissionGrid& g : grids)

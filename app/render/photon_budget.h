@@ -39,16 +39,13 @@ double computeLightViewPower(const Light& light, const std::vector<LightCamera>&
 // lights or power). An emitter group's power is what its triangles send out (its material's
 // photon_share, when set, as a light's).
 // The environment comes last, by the luminance of the power it sends through the disc its
-// photons enter by (computeEnvironmentPower).
+// photons enter by (GpuScene::getEnvironmentPowerW).
 std::vector<double> computeLightShares(const Scene& scene, const std::vector<LightCamera>& cameras,
                                        int resolution, const Emitters& emitters = {},
                                        double environmentPowerW = 0.0);
 
-// Luminance-weighted power (W) the environment sends through a disc of `radiusM` facing each
-// direction it shines from (0 without one).
-double computeEnvironmentPower(const Environment& environment, double radiusM);
-
-// The light views' grids, then a row of photons per emitter group, in photon order.
+// The light views' grids, then a row of photons per emitter group, then the environment's row,
+// in photon order.
 std::vector<EmissionGrid> computeEmissionGrids(const Scene& scene,
                                                const std::vector<LightCamera>& cameras,
                                                int resolution, uint32_t photons,

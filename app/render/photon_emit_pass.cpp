@@ -112,7 +112,6 @@ void PhotonEmitPass::emitFromSurfacesAndSky(const FrameInputs& inputs) {
     const GpuScene& scene = inputs.scene;
     const Emitters& emitters = scene.getEmitters();
     std::vector<gpu::EmitterEmitParams> params;
-    std::vector<uint32_t> counts;
     for (const EmissionGrid& g : mGrids) {
         if (!g.isEmitterGroup()) continue;
         const EmitterGroup& group = emitters.groups[g.emitterGroup];
@@ -131,7 +130,6 @@ void PhotonEmitPass::emitFromSurfacesAndSky(const FrameInputs& inputs) {
         p.groupWeight = float(group.weight);
         p.bounceCapacity = uint32_t(mBuffers.getBounce().getSize() / sizeof(gpu::BouncePhoton));
         params.push_back(p);
-        counts.push_back(g.getCount());
     }
     const auto environment = std::find_if(mGrids.begin(), mGrids.end(),
                                           [](const EmissionGrid& g) { return g.isEnvironment(); });
@@ -146,7 +144,7 @@ void PhotonEmitPass::emitFromSurfacesAndSky(const FrameInputs& inputs) {
         mEmitterProgram.use();
         for (size_t i = 0; i < params.size(); ++i) {
             mEmitterParams.bind(i);
-            gl::dispatchCompute((counts[i] + gpu::kEmitterEmitGroupSize - 1) /
+            gl::dispatchCompute((params[i].photons + gpu::kEmitterEmitGroupSize - 1) /
                                 gpu::kEmitterEmitGroupSize);
         }
     }
@@ -165,8 +163,8 @@ void PhotonEmitPass::emitFromSurfacesAndSky(const FrameInputs& inputs) {
         mEnvironmentParams.upload(std::span(&p, 1));
         mEnvironmentProgram.use();
         mEnvironmentParams.bind(0);
-        gl::dispatchCompute((p.photons + gpu::kEmitterEmitGroupSize - 1) /
-                            gpu::kEmitterEmitGroupSize);
+        gl::dispatchCompute((p.photons + gpu::kEnvironmentEmitGroupSize - 1) /
+                            gpu::kEnvironmentEmitGroupSize);
     }
     gl::memoryBarrier(gl::Barrier::Storage);
 }

@@ -16,7 +16,7 @@
 #include "shared/environment_data.h"
 #include "lib/photon_lights.glsl"
 
-layout(local_size_x = 64) in;
+layout(local_size_x = kEnvironmentEmitGroupSize) in;
 
 layout(std430, binding = kBindingBouncePhotons) writeonly buffer BounceBuffer { BouncePhoton bouncePhotons[]; };
 layout(std430, binding = kBindingPhotonCounters) buffer CounterBuffer { PhotonCounters counters; };

@@ -84,6 +84,8 @@ struct EnvironmentEmitParams {
 };
 ISPM_STATIC_ASSERT_SIZE(EnvironmentEmitParams, 48);
 
+ISPM_CONST uint kEnvironmentEmitGroupSize = 64u;
+
 ISPM_NAMESPACE_END
 
 #endif
