@@ -76,16 +76,14 @@ class GpuScene {
         return mLightCount + uint32_t(mEmitters.groups.size()) + (hasEnvironment() ? 1u : 0u);
     }
     // Whether the scene has an environment (kBindingEnvironment), and the power (W, luminance)
-    // it sends through a disc of the scene's bounding sphere facing each direction: its share
-    // of the photons, which enter through that disc.
+    // it sends into the scene's bounding box, its photons' share: the mean radiance x the solid
+    // angle x the box's mean outline, a quarter of its surface (exact for a constant).
     bool hasEnvironment() const { return mEnvironmentMean.solidAngleSr > 0.0; }
     double getEnvironmentPowerW() const {
-        const double r = getBoundingRadius();
-        return mEnvironmentMean.luminance * mEnvironmentMean.solidAngleSr * glm::pi<double>() * r *
-               r;
+        const glm::dvec3 e(mBounds.getExtent());
+        const double surfaceM2 = 2.0 * (e.x * e.y + e.y * e.z + e.z * e.x);
+        return mEnvironmentMean.luminance * mEnvironmentMean.solidAngleSr * 0.25 * surfaceM2;
     }
-    // The radius of the sphere around getBounds (m).
-    double getBoundingRadius() const { return 0.5 * double(glm::length(mBounds.getExtent())); }
     // Light camera `view`'s projection, moved by the light jitter (setLightJitter).
     glm::mat4 getLightClipFromWorld(size_t view) const;
     // Moves every light camera by `texels` of its G-buffer (accumulated frames'

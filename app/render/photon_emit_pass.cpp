@@ -150,8 +150,8 @@ void PhotonEmitPass::emitFromSurfacesAndSky(const FrameInputs& inputs) {
     }
     if (environment != mGrids.end()) {
         gpu::EnvironmentEmitParams p{};
-        p.sceneCentreW = scene.getBounds().getCenter();
-        p.sceneRadiusM = float(scene.getBoundingRadius());
+        p.sceneMinW = scene.getBounds().lo;
+        p.sceneExtentM = scene.getBounds().getExtent();
         p.firstPhoton = environment->firstPhoton;
         p.photons = environment->getCount();
         p.light = scene.getPhotonSourceCount() - 1u;

@@ -1,8 +1,8 @@
 // Photon emission from the environment (docs/design.md "Environment"): photon i comes from a
 // direction uniform over those the environment shines from (the sphere for a constant, the upper
-// hemisphere for the sky), enters through a disc of the scene's bounding sphere's radius facing
-// that direction, from outside the sphere, with the power that direction sends through the disc
-// over the photons (radiance x disc area x solid angle / photons), finds its first hit through
+// hemisphere for the sky), enters the scene's bounding box through a point uniform over the
+// box's outline seen along that direction, with the power that direction sends through the
+// outline over the photons (radiance x outline area x solid angle / photons), finds its first hit through
 // the BVH and makes the first bounce there as a light view's photon does (photon_emit.geom);
 // survivors are appended to the bounce buffer. Travel counts from the first hit, as the sun's.
 #include "lib/scene_buffers.glsl"
@@ -42,15 +42,13 @@ void main() {
     vec3 radiance = evaluateEnvironment(environment, toward);
     if (all(equal(radiance, vec3(0.0)))) return;
     vec3 dir = -toward;
-    vec3 t;
-    vec3 b;
-    buildBasis(dir, t, b);
-    float radius = params.sceneRadiusM;
-    float rr = radius * sqrt(nextRandom(rng, generator));
-    float phiDisc = kTwoPiF * nextRandom(rng, generator);
-    vec3 origin = params.sceneCentreW + toward * (2.0 * radius) + t * (rr * cos(phiDisc)) +
-                  b * (rr * sin(phiDisc));
-    vec3 power = radiance * (3.14159265358979 * radius * radius * solidAngle / float(params.photons));
+    vec3 u = vec3(nextRandom(rng, generator), nextRandom(rng, generator),
+                  nextRandom(rng, generator));
+    vec3 entry = sampleBoxEntry(params.sceneMinW, params.sceneExtentM, dir, u);
+    // From just outside the box, so that a surface on its face is hit.
+    vec3 origin = entry - dir * computeRayOffset(entry, params.rayOffsetM);
+    float outline = computeBoxOutlineArea(params.sceneExtentM, dir);
+    vec3 power = radiance * (outline * solidAngle / float(params.photons));
 
     RayHit hit;
     if (!traceRay(origin, dir, kNoHitDistance, hit)) return;

@@ -66,13 +66,14 @@ ISPM_INLINE vec3 evaluateEnvironment(GpuEnvironment env, vec3 toward) {
 }
 
 // Photons from the environment (shaders/photon/environment_emit.comp, std140 at
-// kBindingPassParams): each leaves a disc of the scene's bounding sphere's radius facing its
-// direction, outside the sphere, travelling along a direction uniform over the sphere (a sky:
-// over the downward hemisphere), with the radiance from where it comes x disc area x 4 pi (2 pi)
-// / photons.
+// kBindingPassParams): each travels along a direction uniform over those the environment shines
+// from (the sphere; a sky: the downward hemisphere) and enters the scene's bounding box through
+// a point uniform over the box's outline seen along it (computeBoxOutlineArea,
+// sampleBoxEntry), with the radiance from where it comes x that area x 4 pi (2 pi) / photons.
 struct EnvironmentEmitParams {
-    vec3 sceneCentreW;
-    float sceneRadiusM;
+    vec3 sceneMinW;
+    float rayOffsetM;
+    vec3 sceneExtentM;
     uint firstPhoton;
     uint photons;
     uint light; // the index its photons count under (after the lights and emitter groups)
@@ -80,9 +81,33 @@ struct EnvironmentEmitParams {
     uint rngGenerator;
     uint firstBounce;
     uint bounceCapacity;
-    float rayOffsetM;
+    uint pad0;
+    uint pad1;
 };
-ISPM_STATIC_ASSERT_SIZE(EnvironmentEmitParams, 48);
+ISPM_STATIC_ASSERT_SIZE(EnvironmentEmitParams, 64);
+
+// The area (m^2) of a box of extent `extent` seen along unit direction `dir`: its faces facing
+// `dir`, each by its cosine. Over all directions it averages a quarter of the box's surface
+// (Cauchy), over a hemisphere's as well.
+ISPM_INLINE float computeBoxOutlineArea(vec3 extent, vec3 dir) {
+    return abs(dir.x) * extent.y * extent.z + abs(dir.y) * extent.x * extent.z +
+           abs(dir.z) * extent.x * extent.y;
+}
+
+// A point uniform over the outline of the box (corner boxMin, extent `extent`) seen along unit
+// `dir`, on the face a ray along `dir` enters by: the face among the three facing against `dir`
+// picked by its share of computeBoxOutlineArea (u.x), a uniform point on it (u.yz).
+ISPM_INLINE vec3 sampleBoxEntry(vec3 boxMin, vec3 extent, vec3 dir, vec3 u) {
+    vec3 shares = abs(dir) * vec3(extent.y * extent.z, extent.x * extent.z, extent.x * extent.y);
+    float pick = u.x * (shares.x + shares.y + shares.z);
+    vec3 side = vec3(dir.x > 0.0f ? 0.0f : 1.0f, dir.y > 0.0f ? 0.0f : 1.0f,
+                     dir.z > 0.0f ? 0.0f : 1.0f);
+    vec3 at = pick < shares.x              ? vec3(side.x, u.y, u.z)
+              : pick < shares.x + shares.y ? vec3(u.y, side.y, u.z)
+                                           : vec3(u.y, u.z, side.z);
+    vec3 p = boxMin + extent * at;
+    return p;
+}
 
 ISPM_CONST uint kEnvironmentEmitGroupSize = 64u;
 
