@@ -100,8 +100,8 @@ ISPM_INLINE float computeBoxOutlineArea(vec3 extent, vec3 dir) {
 ISPM_INLINE vec3 sampleBoxEntry(vec3 boxMin, vec3 extent, vec3 dir, vec3 u) {
     vec3 shares = abs(dir) * vec3(extent.y * extent.z, extent.x * extent.z, extent.x * extent.y);
     float pick = u.x * (shares.x + shares.y + shares.z);
-    vec3 side = vec3(dir.x > 0.0f ? 0.0f : 1.0f, dir.y > 0.0f ? 0.0f : 1.0f,
-                     dir.z > 0.0f ? 0.0f : 1.0f);
+    vec3 side =
+        vec3(dir.x > 0.0f ? 0.0f : 1.0f, dir.y > 0.0f ? 0.0f : 1.0f, dir.z > 0.0f ? 0.0f : 1.0f);
     vec3 at = pick < shares.x              ? vec3(side.x, u.y, u.z)
               : pick < shares.x + shares.y ? vec3(u.y, side.y, u.z)
                                            : vec3(u.y, u.z, side.z);
