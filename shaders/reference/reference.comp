@@ -38,6 +38,9 @@ vec3 traceCameraPath(vec2 pixel, inout uint rng) {
     // The pdf of the direction the path left its last vertex by; 0 for the eye's ray and a
     // mirror's or glass's (delta) directions, whose emitter hits light sampling cannot find.
     float lastPdf = 0.0;
+    // The last vertex itself (the ray leaves from `origin`, moved off it by the ray offset):
+    // the light pdf of an emitter the ray hits is the one sampleEmitter gave from there.
+    vec3 lastPosition = origin;
     for (uint vertex = 1u; ; ++vertex) {
         RayHit hit;
         if (!traceRay(origin, dir, kNoHitDistance, hit)) {
@@ -62,11 +65,11 @@ vec3 traceCameraPath(vec2 pixel, inout uint rng) {
             if (lastPdf > 0.0 && frame.emitterCount > 0u) {
                 uvec4 tri = triangles[hit.triangle];
                 mat4 world = instances[hit.instance].worldFromObject;
-                float lightPdf = computeEmitterPdf(m.emission, origin,
+                float lightPdf = computeEmitterPdf(m.emission, lastPosition,
                                                    (world * vec4(positions[tri.x].xyz, 1.0)).xyz,
                                                    (world * vec4(positions[tri.y].xyz, 1.0)).xyz,
                                                    (world * vec4(positions[tri.z].xyz, 1.0)).xyz,
-                                                   hit.t, cosAtEmitter);
+                                                   distance(lastPosition, position), cosAtEmitter);
                 weight = computeMisWeight(lastPdf, lightPdf);
             }
             radiance += throughput * computeEmittedRadiance(m.emission, cosAtEmitter) * weight;
@@ -114,6 +117,7 @@ vec3 traceCameraPath(vec2 pixel, inout uint rng) {
         }
         // Leave on the side the new direction points to (refraction crosses the surface).
         origin = position + (dot(dir, n) >= 0.0 ? n : -n) * offset;
+        lastPosition = position;
     }
     return radiance;
 }
