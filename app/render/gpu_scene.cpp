@@ -134,9 +134,9 @@ uint32_t getGpuLightType(LightType type) {
 
 GpuScene::GpuScene(const Scene& scene, int lightResolution) : mLightResolution(lightResolution) {
     std::vector<glm::vec4> positions;
-    // One per position: texture coordinates (zero for meshes without textures) and the shading
-    // normal (kNoShadingNormal where a mesh gives none).
-    std::vector<glm::vec4> attributes;
+    // One per position: texture coordinates (zero for meshes without textures), the shading
+    // normal (kNoShadingNormal where a mesh gives none) and the tangent (w = 0: none).
+    std::vector<gpu::GpuVertexAttributes> attributes;
     std::vector<glm::uvec4> triangles;
     for (const Mesh& mesh : scene.meshes) {
         const auto base = static_cast<uint32_t>(positions.size());
@@ -147,28 +147,39 @@ GpuScene::GpuScene(const Scene& scene, int lightResolution) : mLightResolution(l
             const glm::vec3 n = v < mesh.normals.size() ? mesh.normals[v] : glm::vec3(0.0f);
             const glm::vec2 encoded =
                 n == glm::vec3(0.0f) ? glm::vec2(gpu::kNoShadingNormal) : gpu::encodeOctahedral(n);
-            attributes.emplace_back(uv, encoded);
+            const glm::vec4 tangent = v < mesh.tangents.size() ? mesh.tangents[v] : glm::vec4(0.0f);
+            attributes.push_back({uv, encoded, tangent});
         }
         for (size_t t = 0; t < mesh.triangles.size(); ++t) {
             const glm::uvec3 tri = mesh.triangles[t] + base;
             triangles.emplace_back(tri, mesh.triangleMaterials[t]);
         }
     }
+    const SceneTextureLayers layers = assignSceneTextureLayers(scene);
     std::vector<gpu::GpuMaterial> materials;
     for (const Material& m : scene.materials) {
-        // diffuse.w: the texture's layer + 1, or 0 (shaders/shared/scene_data.h).
-        const float layer = m.diffuseTexture == kNoTexture ? 0.0f : float(m.diffuseTexture) + 1.0f;
-        materials.push_back({glm::vec4(m.diffuse, layer), glm::vec4(m.specular, m.phongExponent),
-                             glm::vec4(m.transmissive, m.ior),
-                             glm::vec4(m.emission, m.emissionTwoSided ? 1.0f : 0.0f),
-                             glm::vec4(m.alphaCutoff, m.doubleSided ? 1.0f : 0.0f, 0.0f, 0.0f)});
+        // diffuse.w and surface.z: the texture's layer + 1, or 0 (shaders/shared/scene_data.h).
+        const auto getLayer = [](const std::vector<int>& layerOf, uint32_t texture) {
+            return texture == kNoTexture ? 0.0f : float(layerOf[texture]) + 1.0f;
+        };
+        materials.push_back(
+            {glm::vec4(m.diffuse, getLayer(layers.colorLayer, m.diffuseTexture)),
+             glm::vec4(m.specular, m.phongExponent), glm::vec4(m.transmissive, m.ior),
+             glm::vec4(m.emission, m.emissionTwoSided ? 1.0f : 0.0f),
+             glm::vec4(m.alphaCutoff, m.doubleSided ? 1.0f : 0.0f,
+                       getLayer(layers.normalLayer, m.normalTexture), m.normalScale)});
     }
     mPositions = gl::Buffer::fromSpan<glm::vec4>("scene positions", positions);
     mTriangles = gl::Buffer::fromSpan<glm::uvec4>("scene triangles", triangles);
     mMaterials = gl::Buffer::fromSpan<gpu::GpuMaterial>("scene materials", materials);
-    mVertexAttributes = gl::Buffer::fromSpan<glm::vec4>("scene vertex attributes", attributes);
-    mTextures = buildSceneTextureArray(scene.textures);
-    mHasTextures = std::any_of(scene.materials.begin(), scene.materials.end(),
+    mVertexAttributes =
+        gl::Buffer::fromSpan<gpu::GpuVertexAttributes>("scene vertex attributes", attributes);
+    mTextures = buildSceneTextureArray(scene.textures, layers.colorTextures, TextureEncoding::Srgb);
+    mNormalMaps =
+        buildSceneTextureArray(scene.textures, layers.normalTextures, TextureEncoding::Linear);
+    mHasNormalMaps = !layers.normalTextures.empty();
+    mHasTextures = mHasNormalMaps ||
+                   std::any_of(scene.materials.begin(), scene.materials.end(),
                                [](const Material& m) { return m.diffuseTexture != kNoTexture; });
     mHasAlphaTest = std::any_of(scene.materials.begin(), scene.materials.end(),
                                 [](const Material& m) { return m.alphaCutoff > 0.0f; });
@@ -377,8 +388,10 @@ std::vector<std::string> GpuScene::getSurfaceDefines() const {
 }
 
 std::vector<std::string> GpuScene::getRayDefines() const {
-    if (mHasAlphaTest) return {};
-    return {"BVH_ALPHA_TEST 0"};
+    std::vector<std::string> defines;
+    if (!mHasAlphaTest) defines.emplace_back("BVH_ALPHA_TEST 0");
+    if (!mHasNormalMaps) defines.emplace_back("SCENE_NORMAL_MAPS 0");
+    return defines;
 }
 
 void GpuScene::bind() const {
@@ -390,6 +403,7 @@ void GpuScene::bind() const {
     mMaterials.bindBase(BufferTarget::Storage, gpu::kBindingMaterials);
     mVertexAttributes.bindBase(BufferTarget::Storage, gpu::kBindingVertexAttributes);
     mTextures.bindUnit(gpu::kUnitSceneTextures);
+    mNormalMaps.bindUnit(gpu::kUnitSceneNormalMaps);
     mLights.bindBase(BufferTarget::Storage, gpu::kBindingLights);
     mLightViews.bindBase(BufferTarget::Storage, gpu::kBindingLightViews);
     mBlasNodes.bindBase(BufferTarget::Storage, gpu::kBindingBlasNodes);

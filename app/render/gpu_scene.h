@@ -31,8 +31,10 @@ class GpuScene {
     void updateDynamic(const Scene& scene);
 
     void bind() const; // binds every buffer (scene and BVH) to its kBinding* point
-    // Whether any material has a texture (the G-buffer then draws with its textured variant).
+    // Whether any material has a texture or a normal map (the G-buffer then draws with its
+    // textured variant), and whether any has a normal map.
     bool hasTextures() const { return mHasTextures; }
+    bool hasNormalMaps() const { return mHasNormalMaps; }
     // Whether any material is alpha tested (Material::alphaCutoff): the G-buffers then draw with
     // the variant that cuts its points out.
     bool hasAlphaTest() const { return mHasAlphaTest; }
@@ -49,9 +51,10 @@ class GpuScene {
     // The shader defines of the scene's reflection model: {"SURFACE_SPECULAR 0"} without
     // specular parts (lib/brdf.glsl), else none.
     std::vector<std::string> getSurfaceDefines() const;
-    // The shader defines of the scene's ray tests (lib/bvh.glsl): {"BVH_ALPHA_TEST 0"} without
-    // alpha-tested materials, so that their traversal compiles without the test (llvmpipe runs
-    // both sides of a branch), else none.
+    // The shader defines of the scene's ray tests and hits (lib/bvh.glsl): "BVH_ALPHA_TEST 0"
+    // without alpha-tested materials, so that their traversal compiles without the test
+    // (llvmpipe runs both sides of a branch), and "SCENE_NORMAL_MAPS 0" without normal maps
+    // (computeHitShadingNormal reads no material).
     std::vector<std::string> getRayDefines() const;
 
     // The instances' transforms of the frame drawn last (kBindingPreviousTransforms), which
@@ -150,8 +153,10 @@ class GpuScene {
     gl::Buffer mPreviousTransforms;
     gl::Buffer mMaterials;
     gl::Buffer mVertexAttributes; // kBindingVertexAttributes
-    gl::Texture mTextures;
-    bool mHasTextures = false; // kUnitSceneTextures (scene_texture_array.h)
+    gl::Texture mTextures;        // kUnitSceneTextures (scene_texture_array.h)
+    gl::Texture mNormalMaps;      // kUnitSceneNormalMaps
+    bool mHasTextures = false;    // a material reads a colour texture or a normal map
+    bool mHasNormalMaps = false;
     bool mHasAlphaTest = false;
     bool mHasSpecularLobes = true;
     bool mHasTracedSpecular = false;

@@ -1,4 +1,4 @@
-// Packing the scene's textures into one mipmapped sRGB array.
+// Packing the scene's textures into mipmapped arrays: colour (sRGB) and normal maps (linear).
 #include "render/scene_texture_array.h"
 
 #include <algorithm>
@@ -49,26 +49,55 @@ std::vector<uint8_t> resampleTexture(const SceneTexture& texture, int width, int
     return out;
 }
 
-gl::Texture buildSceneTextureArray(std::span<const SceneTexture> textures) {
-    if (textures.empty()) {
-        gl::Texture white =
-            gl::Texture::createMipmapped2DArray("scene textures", gl::Format::SRGB8A8, 1, 1, 1, 1);
-        const std::vector<uint8_t> texel(kRgbaBytes, kWhite);
-        white.uploadRgba8(texel, 0);
-        return white;
+SceneTextureLayers assignSceneTextureLayers(const Scene& scene) {
+    SceneTextureLayers layers;
+    layers.colorLayer.assign(scene.textures.size(), -1);
+    layers.normalLayer.assign(scene.textures.size(), -1);
+    for (const Material& m : scene.materials) {
+        if (m.diffuseTexture != kNoTexture) layers.colorLayer[m.diffuseTexture] = 0;
+        if (m.normalTexture != kNoTexture) layers.normalLayer[m.normalTexture] = 0;
+    }
+    for (uint32_t t = 0; t < scene.textures.size(); ++t) {
+        // Textures no material reads (an emissive texture's, its mean taken) stay in the colour
+        // array, as before normal maps.
+        const bool normalOnly = layers.normalLayer[t] == 0 && layers.colorLayer[t] < 0;
+        if (!normalOnly) {
+            layers.colorLayer[t] = static_cast<int>(layers.colorTextures.size());
+            layers.colorTextures.push_back(t);
+        }
+        if (layers.normalLayer[t] == 0) {
+            layers.normalLayer[t] = static_cast<int>(layers.normalTextures.size());
+            layers.normalTextures.push_back(t);
+        }
+    }
+    return layers;
+}
+
+gl::Texture buildSceneTextureArray(std::span<const SceneTexture> textures,
+                                   std::span<const uint32_t> which, TextureEncoding encoding) {
+    const bool linear = encoding == TextureEncoding::Linear;
+    const gl::Format format = linear ? gl::Format::RGBA8 : gl::Format::SRGB8A8;
+    const char* label = linear ? "scene normal maps" : "scene textures";
+    if (which.empty()) {
+        gl::Texture single = gl::Texture::createMipmapped2DArray(label, format, 1, 1, 1, 1);
+        constexpr uint8_t kHalf = 128; // 2 x 128 / 255 - 1: 0.004, normalised away
+        const std::vector<uint8_t> texel = linear
+                                               ? std::vector<uint8_t>{kHalf, kHalf, kWhite, kWhite}
+                                               : std::vector<uint8_t>(kRgbaBytes, kWhite);
+        single.uploadRgba8(texel, 0);
+        return single;
     }
     int width = 1;
     int height = 1;
-    for (const SceneTexture& t : textures) {
-        width = std::max(width, std::min(t.width, kMaxTextureLayerPx));
-        height = std::max(height, std::min(t.height, kMaxTextureLayerPx));
+    for (const uint32_t t : which) {
+        width = std::max(width, std::min(textures[t].width, kMaxTextureLayerPx));
+        height = std::max(height, std::min(textures[t].height, kMaxTextureLayerPx));
     }
     const int levels = std::bit_width(static_cast<unsigned>(std::max(width, height)));
-    gl::Texture array =
-        gl::Texture::createMipmapped2DArray("scene textures", gl::Format::SRGB8A8, width, height,
-                                            static_cast<int>(textures.size()), levels);
-    for (size_t i = 0; i < textures.size(); ++i)
-        array.uploadRgba8(resampleTexture(textures[i], width, height), static_cast<int>(i));
+    gl::Texture array = gl::Texture::createMipmapped2DArray(label, format, width, height,
+                                                            static_cast<int>(which.size()), levels);
+    for (size_t i = 0; i < which.size(); ++i)
+        array.uploadRgba8(resampleTexture(textures[which[i]], width, height), static_cast<int>(i));
     array.generateMipmaps();
     return array;
 }

@@ -226,6 +226,7 @@ void SplatPass::bindRaster(const FrameInputs& inputs) {
     gl::applyState({.blend = gl::Blend::Additive, .cull = isBox ? gl::Cull::Front : gl::Cull::Off});
     std::vector<std::string> defines = inputs.scene.getSurfaceDefines();
     defines.push_back(inputs.settings.splatClip ? "SPLAT_CLIP_LINES 1" : "SPLAT_CLIP_LINES 0");
+    defines.push_back(inputs.scene.hasNormalMaps() ? "SCENE_NORMAL_MAPS 1" : "SCENE_NORMAL_MAPS 0");
     mPrograms.get(defines).use();
     (isBox ? mCubeVertexArray : mDiscVertexArray).bind();
     mBuffers.bind();

@@ -161,6 +161,29 @@ std::vector<glm::vec3> readNormals(const GltfFile& file, int accessor, const std
     return normals;
 }
 
+std::vector<glm::vec4> readTangents(const GltfFile& file, int accessor,
+                                    const std::string& usePath) {
+    const AccessorView v =
+        viewAccessor(file, accessor, TINYGLTF_TYPE_VEC4, usePath, "VEC4 tangents");
+    if (v.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT) {
+        file.fail(strCat("/accessors/", accessor, "/componentType"), "5126 (float tangents)");
+    }
+    std::vector<glm::vec4> tangents = readFloatVectors<4>(file, v, accessor);
+    for (size_t i = 0; i < tangents.size(); ++i) {
+        // As normals: any length but zero; w is the handedness, +-1 (its sign is kept).
+        const float length = glm::length(glm::vec3(tangents[i]));
+        if (!(length > 0.0f && std::isfinite(length)) || tangents[i].w == 0.0f) {
+            file.fail(strCat("/accessors/", accessor),
+                      strCat("tangents of non-zero length with w = +-1, element ", i, " is (",
+                             tangents[i].x, ", ", tangents[i].y, ", ", tangents[i].z, ", ",
+                             tangents[i].w, ")"));
+        }
+        tangents[i] =
+            glm::vec4(glm::vec3(tangents[i]) / length, tangents[i].w < 0.0f ? -1.0f : 1.0f);
+    }
+    return tangents;
+}
+
 std::vector<glm::vec2> readTexcoords(const GltfFile& file, int accessor,
                                      const std::string& usePath) {
     const AccessorView v =

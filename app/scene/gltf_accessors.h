@@ -25,6 +25,9 @@ std::vector<glm::vec3> readPositions(const GltfFile& file, int accessor,
                                      const std::string& usePath);
 // NORMAL: VEC3 of floats, each finite, normalised; one of zero length fails naming its index.
 std::vector<glm::vec3> readNormals(const GltfFile& file, int accessor, const std::string& usePath);
+// TANGENT: VEC4 of floats, each finite, xyz normalised, w the handedness (+-1); a tangent of
+// zero length or w = 0 fails naming its index.
+std::vector<glm::vec4> readTangents(const GltfFile& file, int accessor, const std::string& usePath);
 // TEXCOORD_n: VEC2 of floats, or of normalised unsigned bytes or shorts.
 std::vector<glm::vec2> readTexcoords(const GltfFile& file, int accessor,
                                      const std::string& usePath);

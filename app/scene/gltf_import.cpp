@@ -7,6 +7,7 @@
 #include "scene/gltf_accessors.h"
 #include "scene/gltf_materials.h"
 #include "scene/mesh_builder.h"
+#include "scene/mesh_tangents.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -93,6 +94,28 @@ bool isInvertible(const glm::mat4& m) {
     return std::fabs(glm::determinant(linear)) > kMinRelativeDeterminant * scale;
 }
 
+// A normal-mapped primitive's tangents: its TANGENT, or generated from its positions and
+// texture coordinates where it has none (computeVertexTangents; docs/design.md "Normal maps").
+std::vector<glm::vec4> readOrComputeTangents(const GltfFile& file, const tinygltf::Primitive& prim,
+                                             const std::string& at,
+                                             const std::vector<glm::vec3>& positions,
+                                             const std::vector<glm::vec2>& texcoords,
+                                             const std::vector<glm::vec3>& normals,
+                                             const std::vector<uint32_t>& indices) {
+    if (const auto tangent = prim.attributes.find("TANGENT"); tangent != prim.attributes.end()) {
+        std::vector<glm::vec4> tangents =
+            readTangents(file, tangent->second, at + "/attributes/TANGENT");
+        if (tangents.size() != positions.size()) {
+            file.fail(at + "/attributes/TANGENT", "as many tangents as positions");
+        }
+        return tangents;
+    }
+    std::vector<glm::uvec3> triangles;
+    for (size_t t = 0; t + 2 < indices.size(); t += 3)
+        triangles.emplace_back(indices[t], indices[t + 1], indices[t + 2]);
+    return computeVertexTangents(positions, texcoords, normals, triangles);
+}
+
 // The importer's state while it walks the nodes.
 struct GltfImporter {
     const GltfFile& file;
@@ -153,9 +176,8 @@ uint32_t GltfImporter::convertMesh(int index, const std::string& usePath) {
             const std::string name = strCat("TEXCOORD_", texcoordSet);
             const auto uv = prim.attributes.find(name);
             if (uv == prim.attributes.end()) {
-                file.fail(
-                    at + "/attributes",
-                    strCat("a ", name, " attribute (its material's base colour texture uses it)"));
+                file.fail(at + "/attributes",
+                          strCat("a ", name, " attribute (its material's textures use it)"));
             }
             texcoords = readTexcoords(file, uv->second, at + "/attributes/" + name);
             if (texcoords.size() != positions.size()) {
@@ -172,12 +194,23 @@ uint32_t GltfImporter::convertMesh(int index, const std::string& usePath) {
             }
             mesh.normals.resize(mesh.positions.size()); // earlier primitives: flat (zero)
         }
+        std::vector<glm::vec4> tangents;
+        if (scene.materials[material].normalTexture != kNoTexture) {
+            tangents =
+                readOrComputeTangents(file, prim, at, positions, texcoords, normals, indices);
+            mesh.tangents.resize(mesh.positions.size()); // earlier primitives: none (w = 0)
+        }
         const auto base = static_cast<uint32_t>(mesh.positions.size());
         mesh.positions.insert(mesh.positions.end(), positions.begin(), positions.end());
         if (!normals.empty()) {
             mesh.normals.insert(mesh.normals.end(), normals.begin(), normals.end());
         } else if (!mesh.normals.empty()) {
             mesh.normals.resize(mesh.positions.size());
+        }
+        if (!tangents.empty()) {
+            mesh.tangents.insert(mesh.tangents.end(), tangents.begin(), tangents.end());
+        } else if (!mesh.tangents.empty()) {
+            mesh.tangents.resize(mesh.positions.size());
         }
         if (!texcoords.empty()) {
             mesh.texcoords.insert(mesh.texcoords.end(), texcoords.begin(), texcoords.end());

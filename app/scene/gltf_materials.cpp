@@ -23,6 +23,9 @@ constexpr double kBlendAlphaCutoff = 0.5;
 // A cutoff on the texture's alpha that no texel passes (alpha is at most 1): the whole material
 // is cut out, as glTF's would be with its factor's alpha below the cutoff.
 constexpr double kNothingPasses = 2.0;
+// normalTexture.scale beyond this tilts every texel's normal to the surface's plane (x and y
+// outweigh z a hundredfold): a typing slip rather than a wish.
+constexpr double kMaxNormalScale = 100.0;
 
 double readUnit(const GltfFile& file, double value, const std::string& path) {
     if (!(value >= 0.0 && value <= 1.0)) {
@@ -102,6 +105,38 @@ float readAlphaCutoff(const GltfFile& file, const tinygltf::Material& in, double
                              : float(kNothingPasses);
 }
 
+// A material's normalTexture (docs/design.md "Normal maps"): its image as a linear RGB texture,
+// its scale, and TEXCOORD_0, the set ispm reads for it, which the base colour texture must share
+// (one set per material).
+void readNormalTexture(const GltfFile& file, const tinygltf::NormalTextureInfo& in,
+                       const std::string& at, int& texcoordSet,
+                       std::vector<uint32_t>& imageTextures, Scene& scene, Material& m) {
+    if (in.texCoord != 0) {
+        file.fail(at + "/texCoord",
+                  strCat("0 (ispm reads normal maps at TEXCOORD_0), got ", in.texCoord));
+    }
+    if (texcoordSet > 0) {
+        file.fail(at + "/texCoord",
+                  strCat("the base colour texture's set ", texcoordSet,
+                         " (ispm reads one set per material and normal maps at TEXCOORD_0)"));
+    }
+    if (!(std::isfinite(in.scale) && std::abs(in.scale) <= kMaxNormalScale)) {
+        file.fail(at + "/scale", strCat("a number in [-", kMaxNormalScale, ", ", kMaxNormalScale,
+                                        "], got ", in.scale));
+    }
+    m.normalTexture = importTexture(file, in.index, at + "/index", imageTextures, scene);
+    // A grey image has no direction to give: the normal needs x, y and z.
+    const int source = file.model.textures[static_cast<size_t>(in.index)].source;
+    const int channels = file.model.images[static_cast<size_t>(source)].component;
+    if (channels < 3) {
+        file.fail(strCat("/images/", source),
+                  strCat("an RGB or RGBA image (normalTexture ", in.index, " at ", at,
+                         " uses it as a normal map), got ", channels, " channel(s)"));
+    }
+    m.normalScale = float(in.scale);
+    texcoordSet = 0;
+}
+
 } // namespace
 
 GltfMaterials importGltfMaterials(const GltfFile& file, const std::string& prefix, Scene& scene) {
@@ -129,6 +164,10 @@ GltfMaterials importGltfMaterials(const GltfFile& file, const std::string& prefi
         }
         Material m = convertMetallicRoughness(base, metallic, roughness, textureMean);
         m.diffuseTexture = texture;
+        if (in.normalTexture.index >= 0) {
+            readNormalTexture(file, in.normalTexture, at + "/normalTexture", texcoordSet,
+                              imageTextures, scene, m);
+        }
         m.alphaCutoff = readAlphaCutoff(
             file, in, readUnit(file, pbr.baseColorFactor[3], pbrAt + "/baseColorFactor/3"), at);
         m.doubleSided = in.doubleSided;

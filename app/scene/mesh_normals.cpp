@@ -78,6 +78,7 @@ void generateSmoothNormals(Mesh& mesh, float maxAngleDeg) {
     std::vector<glm::vec3> positions;
     std::vector<glm::vec2> texcoords;
     std::vector<glm::vec3> normals;
+    std::vector<glm::vec4> tangents;
     std::map<std::pair<uint32_t, PositionKey>, uint32_t> vertexOf;
     for (size_t t = 0; t < triangleCount; ++t) {
         for (int k = 0; k < 3; ++k) {
@@ -88,6 +89,7 @@ void generateSmoothNormals(Mesh& mesh, float maxAngleDeg) {
             if (added) {
                 positions.push_back(mesh.positions[old]);
                 if (!mesh.texcoords.empty()) texcoords.push_back(mesh.texcoords[old]);
+                if (!mesh.tangents.empty()) tangents.push_back(mesh.tangents[old]);
                 normals.push_back(n);
             }
             mesh.triangles[t][k] = it->second;
@@ -96,6 +98,7 @@ void generateSmoothNormals(Mesh& mesh, float maxAngleDeg) {
     mesh.positions = std::move(positions);
     mesh.texcoords = std::move(texcoords);
     mesh.normals = std::move(normals);
+    mesh.tangents = std::move(tangents);
 }
 
 } // namespace ispm

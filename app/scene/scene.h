@@ -63,9 +63,9 @@ struct Camera {
 
 inline constexpr uint32_t kNoTexture = 0xffffffffu;
 
-// An 8-bit RGBA image whose RGB is sRGB-encoded (PNG and JPEG colour textures), row 0 at the top
-// as image files store it (texture coordinate v = 0 is the top row, as in glTF; OBJ's v runs
-// up and is flipped on import).
+// An 8-bit RGBA image whose RGB is sRGB-encoded (PNG and JPEG colour textures) or linear (a
+// material's normal map: Material::normalTexture), row 0 at the top as image files store it
+// (texture coordinate v = 0 is the top row, as in glTF; OBJ's v runs up and is flipped on import).
 struct SceneTexture {
     std::string name;
     std::string sourcePath; // the file it was read from; empty when embedded (glTF buffers)
@@ -100,6 +100,12 @@ struct Material {
     // whatever it says: a one-sided surface lets light through one way and not the other
     // (docs/design.md "Alpha-tested and one-sided surfaces").
     bool doubleSided = true;
+    // Index into Scene::textures of a tangent-space normal map (glTF normalTexture), or
+    // kNoTexture: its linear RGB in [0, 1] is the shading normal (2 rgb - 1) in the frame of the
+    // mesh's tangent, bitangent and normal (Mesh::tangents), x and y scaled by normalScale
+    // (docs/design.md "Normal maps"). Meshes with such materials carry tangents.
+    uint32_t normalTexture = kNoTexture;
+    float normalScale = 1.0f;
 };
 
 enum class LightType : uint32_t { Point = 0, Spot = 1, Sun = 2 };
@@ -136,6 +142,10 @@ struct Mesh {
     // with such a corner is flat-shaded (its geometric normal), as is every triangle of a mesh
     // without normals.
     std::vector<glm::vec3> normals;
+    // Per position: the unit tangent along +u and in w the handedness (+-1): the bitangent,
+    // up the image (-v), is w cross(normal, tangent), as glTF's TANGENT; w = 0 where a position
+    // has none. Empty for a mesh without normal-mapped materials.
+    std::vector<glm::vec4> tangents;
     std::vector<glm::uvec3> triangles;
     std::vector<uint32_t> triangleMaterials;
     Aabb computeBounds() const;

@@ -10,6 +10,9 @@ layout(std140, binding = kBindingPassParams) uniform GBufferParamsBlock { GBuffe
 in vec3 vPositionW;
 #if GBUFFER_TEXTURES
 in vec2 vTexcoord;
+in vec3 vTangentW;
+flat in float vHandedness;
+flat in vec2 vNormalMap;
 #endif
 #if !GBUFFER_LIGHT_VIEWS
 in vec4 vClip;
@@ -44,12 +47,25 @@ void main() {
     vec3 toEye = eye.w > 0.5 ? eye.xyz - vPositionW : eye.xyz;
     // Surfaces are two-sided: the normal faces whoever looks at it.
     bool frontFace = dot(vNormalW, toEye) >= 0.0;
-    vec3 n = frontFace ? vNormalW : -vNormalW;
+    vec3 geometric = frontFace ? vNormalW : -vNormalW;
+    vec3 n = geometric;
     // The channel holds the shading normal, on the geometric normal's side (the side the eye
     // sees); w keeps which face that is. Readers use it for the BRDF's cosines and for their
     // hemisphere tests and ray offsets alike: a second normal would cost a channel on every
     // scene, and the shading normal on the seen side still offsets rays to that side.
-    if (vSmooth != 0u) n = orientShadingNormal(vShadingNormalW, n);
+    if (vSmooth != 0u) n = orientShadingNormal(vShadingNormalW, geometric);
+#if GBUFFER_TEXTURES
+    // A normal map turns the front's normal in its tangent frame, then the result is turned to
+    // the seen side as any shading normal (the back of a two-sided surface: reversed). The
+    // branch is uniform over each triangle, as the colour texture's below.
+    if (vNormalMap.x > 0.0 && vHandedness != 0.0) {
+        vec3 front = vSmooth != 0u ? vShadingNormalW : vNormalW;
+        vec3 mapped = decodeNormalTexel(
+            texture(uSceneNormalMaps, vec3(vTexcoord, vNormalMap.x - 1.0)).rgb, vNormalMap.y);
+        n = orientShadingNormal(perturbNormal(front, vec4(vTangentW, vHandedness), mapped),
+                                geometric);
+    }
+#endif
 #if GBUFFER_LIGHT_VIEWS
     const vec3 emission = vec3(0.0); // light views keep no emission
 #else

@@ -1,6 +1,6 @@
 // G-buffer vertex stage: pulls the triangle's three vertices from the scene buffers, so the flat
-// face normal needs no extra vertex data; the corners' shading normals, where the mesh has them,
-// are interpolated beside it. One draw per instance.
+// face normal needs no extra vertex data; the corners' shading normals and tangents, where the
+// mesh has them, are interpolated beside it. One draw per instance.
 #include "lib/scene_buffers.glsl"
 #include "lib/vertex_attributes.glsl"
 #if GBUFFER_TEXTURES
@@ -16,6 +16,11 @@ layout(std430, binding = kBindingPreviousTransforms) readonly buffer PreviousTra
 out vec3 vPositionW;
 #if GBUFFER_TEXTURES
 out vec2 vTexcoord;
+// The corner's world-space tangent (not unit), the frame's handedness in world space (0: the
+// triangle has no tangent frame), and the material's normal map (GpuMaterial::surface.zw).
+out vec3 vTangentW;
+flat out float vHandedness;
+flat out vec2 vNormalMap;
 #endif
 #if !GBUFFER_LIGHT_VIEWS
 // This frame's and the last frame's clip positions (velocity), divided per fragment.
@@ -52,7 +57,15 @@ void main() {
     uint vertex = corner == 0u ? tri.x : (corner == 1u ? tri.y : tri.z);
     vec3 p = corner == 0u ? p0 : (corner == 1u ? p1 : p2);
 #if GBUFFER_TEXTURES
-    vTexcoord = vertexAttributes[vertex].xy;
+    vTexcoord = vertexAttributes[vertex].texcoord;
+    vec4 tangent = vertexAttributes[vertex].tangent;
+    bool framed = vertexAttributes[tri.x].tangent.w != 0.0 &&
+                  vertexAttributes[tri.y].tangent.w != 0.0 &&
+                  vertexAttributes[tri.z].tangent.w != 0.0;
+    // A mirroring transform turns cross(n, t) around: the handedness follows it.
+    float mirror = determinant(mat3(inst.worldFromObject)) < 0.0 ? -1.0 : 1.0;
+    vHandedness = framed ? mirror * vertexAttributes[tri.x].tangent.w : 0.0;
+    vTangentW = mat3(inst.worldFromObject) * tangent.xyz;
 #endif
     vec4 positionW = inst.worldFromObject * vec4(p, 1.0);
     vPositionW = positionW.xyz;
@@ -69,6 +82,9 @@ void main() {
 #endif
 #if GBUFFER_ALPHA_TEST
     vAlphaCutoff = m.surface.x;
+#endif
+#if GBUFFER_TEXTURES
+    vNormalMap = m.surface.zw;
 #endif
     vInstance = instance;
     gl_Position = params.clipFromWorld * positionW;

@@ -204,10 +204,25 @@ vec3 computeHitNormal(RayHit hit) {
     return normalize(transpose(mat3(instances[hit.instance].objectFromWorld)) * n);
 }
 
-// The hit's shading normal on the side of `geometric` (computeHitNormal turned to either side);
-// needs lib/vertex_attributes.glsl included before.
+// The hit's shading normal on the side of `geometric` (computeHitNormal turned to either side),
+// normal maps applied; needs lib/vertex_attributes.glsl included before, and
+// lib/scene_textures.glsl unless SCENE_NORMAL_MAPS is 0 (a scene without normal maps,
+// GpuScene::getRayDefines: then no material is read here).
+#ifndef SCENE_NORMAL_MAPS
+#define SCENE_NORMAL_MAPS 1
+#endif
 #ifdef ISPM_VERTEX_ATTRIBUTES_GLSL
+#if SCENE_NORMAL_MAPS && !defined(ISPM_SCENE_TEXTURES_GLSL)
+#error "computeHitShadingNormal reads normal maps: include lib/scene_textures.glsl before bvh.glsl"
+#endif
 vec3 computeHitShadingNormal(RayHit hit, vec3 geometric) {
+#if SCENE_NORMAL_MAPS
+    GpuMaterial m = materials[triangles[hit.triangle].w];
+    if (hasNormalMap(m)) {
+        return computeMappedShadingNormal(m, hit.triangle, hit.instance, hit.barycentric,
+                                          geometric);
+    }
+#endif
     return computeShadingNormal(hit.triangle, hit.instance, hit.barycentric, geometric);
 }
 #endif

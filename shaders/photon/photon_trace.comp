@@ -92,7 +92,16 @@ void main() {
         // decides sides.
         vec3 shading = computeHitShadingNormal(hit, n);
         GpuMaterial m = materials[triangles[hit.triangle].w];
-        if (isStoredSurface(m)) storePhoton(position, travelled, shading, density, dir, reflections, light, power);
+#if SCENE_NORMAL_MAPS
+        // A stored photon's disc lies in the surface's plane, so it takes the normal without the
+        // normal map: the map's turn, up to tens of degrees at a brick's bevel, would tilt the
+        // flattened disc out of the wall and leave it a strip (docs/design.md "Normal maps").
+        // The splats shade with the pixel's own mapped normal.
+        vec3 discNormal = computeShadingNormal(hit.triangle, hit.instance, hit.barycentric, n);
+#else
+        vec3 discNormal = shading;
+#endif
+        if (isStoredSurface(m)) storePhoton(position, travelled, discNormal, density, dir, reflections, light, power);
         if (reflections == bounces) {
             reflections = 0u;
             continue;

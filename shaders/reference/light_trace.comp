@@ -5,8 +5,9 @@
 // mirrors (caustics) converge here, which camera paths with next-event estimation cannot do.
 // `bounces` B as everywhere: vertex k carries light reflected k - 1 times, kept for k <= B + 1.
 #include "lib/scene_buffers.glsl"
-// Before bvh.glsl, for its computeHitShadingNormal.
+// Before bvh.glsl, for its computeHitShadingNormal (normal maps read the textures).
 #include "lib/vertex_attributes.glsl"
+#include "lib/scene_textures.glsl"
 #include "lib/frame_constants.glsl"
 #include "lib/bvh.glsl"
 #include "lib/brdf.glsl"

@@ -18,7 +18,8 @@ struct GpuMaterial {
     vec4 surface;      // x = alpha cutoff: a point whose base colour texture's alpha (1 without
                        // a texture) is below it is cut out (0: opaque; Material::alphaCutoff),
                        // y = 1 if the file called it double-sided (every surface is two-sided),
-                       // z, w unused
+                       // z = the normal map's layer + 1 in the scene's normal map array (0:
+                       // none; exact in float), w = its scale (glTF normalTexture.scale)
 };
 ISPM_STATIC_ASSERT_SIZE(GpuMaterial, 80);
 
@@ -78,13 +79,22 @@ ISPM_CONST int kBindingExposure = 6;   // tone-map statistics
 // mat4 per instance: its worldFromObject when the last frame was drawn (AccumulatePass
 // reprojects the history of moving objects with it).
 ISPM_CONST int kBindingPreviousTransforms = 21;
-// vec4 per vertex (as kBindingPositions): xy the texture coordinates, u right and v down the
-// image (zero for meshes without textures); zw the object-space unit shading normal
-// (encodeOctahedral), or z = kNoShadingNormal where the mesh gives none (a triangle with such a
-// corner is flat-shaded). One buffer for both: the photon tracer, which reads both, is at
-// llvmpipe's 16 storage blocks per compute shader.
+// GpuVertexAttributes per vertex (as kBindingPositions). One buffer for all: the photon tracer,
+// which reads them all, is at llvmpipe's 16 storage blocks per compute shader.
 ISPM_CONST int kBindingVertexAttributes = 34; // after the disc list (photon_data.h)
 ISPM_CONST float kNoShadingNormal = 2.0f;     // outside the octahedral square [-1, 1]^2
+
+// What a vertex carries besides its position (docs/design.md "Shading normals", "Normal maps").
+struct GpuVertexAttributes {
+    vec2 texcoord; // u right and v down the image (zero for meshes without textures)
+    vec2 normal;   // the object-space unit shading normal (encodeOctahedral), or x =
+                   // kNoShadingNormal where the mesh gives none (a triangle with such a corner
+                   // is flat-shaded)
+    vec4 tangent;  // xyz the object-space unit tangent along +u, w the handedness (+-1: the
+                   // bitangent, up the image, is w cross(normal, tangent)); w = 0: none (a
+                   // triangle with such a corner takes no normal map)
+};
+ISPM_STATIC_ASSERT_SIZE(GpuVertexAttributes, 32);
 
 // A unit vector in two numbers in [-1, 1]: its octahedral map (Cigolle et al. 2014, "A Survey
 // of Efficient Representations for Independent Unit Vectors"), exact to float's rounding.
@@ -132,6 +142,9 @@ ISPM_CONST int kUnitCaustics = 29; // the caustic photons' splats, at the image'
 // The filter guide (denoise/filter_input.frag): the surface each splat buffer pixel stands for.
 ISPM_CONST int kUnitFilterGuide = 30;
 ISPM_CONST int kUnitSceneTextures = 28; // after the post passes' 25..27 (post_data.h)
+// The scene's normal maps: one linear (not sRGB) 2D array, a layer per map
+// (GpuMaterial::surface.z).
+ISPM_CONST int kUnitSceneNormalMaps = 31;
 
 // Per-frame values every pass may read (std140).
 struct FrameConstants {

@@ -6,6 +6,9 @@
 #include "shared/photon_data.h"
 #include "shared/photon_scatter.h"
 #include "shared/splat_clip.h"
+#ifndef SCENE_NORMAL_MAPS
+#define SCENE_NORMAL_MAPS 1
+#endif
 
 layout(std140, binding = kBindingPassParams) uniform SplatParamsBlock { SplatParams params; };
 
@@ -50,5 +53,14 @@ void main() {
     vec3 wo = normalize(frame.cameraPosW - position.xyz);
     vec3 f = evaluateSplatBrdf(texelFetch(uDiffuse, pixel, 0).rgb, texelFetch(uSpecular, pixel, 0), n,
                                wi, wo, frame.specularTraceMinExponent);
+#if SCENE_NORMAL_MAPS
+    // A normal map turns the pixel's normal n from the surface's (the photon's disc normal): the
+    // flux that crossed the surface lights the turned normal by |wi.n| / |wi.surface|, Veach's
+    // adjoint factor at the receiving end (docs/design.md "Normal maps"); light from below the
+    // turned normal's horizon lights nothing, as in the path tracer. Without maps the factor is
+    // 1 but for the G-buffer's rounding, and is left out.
+    const float kMinSurfaceCos = 0.01; // a photon this grazing would weigh a hundredfold
+    f *= max(dot(wi, n), 0.0) / max(abs(dot(wi, vNormal)), kMinSurfaceCos);
+#endif
     outRadiance = vec4(f * vPower * weight, 1.0);
 }

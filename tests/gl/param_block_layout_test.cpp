@@ -192,6 +192,12 @@ std::vector<Block> getBlocks() {
          {ISPM_FIELD(PhotonPointsParams, tint), ISPM_FIELD(PhotonPointsParams, pointSizePx),
           ISPM_FIELD(PhotonPointsParams, powerScale), ISPM_FIELD(PhotonPointsParams, inverseGamma),
           ISPM_FIELD(PhotonPointsParams, colouring)}},
+        // A storage buffer's element (std430), checked here as std140: for two vec2 and a vec4
+        // the two rules place every field alike.
+        {"GpuVertexAttributes",
+         sizeof(gpu::GpuVertexAttributes),
+         {ISPM_FIELD(GpuVertexAttributes, texcoord), ISPM_FIELD(GpuVertexAttributes, normal),
+          ISPM_FIELD(GpuVertexAttributes, tangent)}},
     };
 }
 

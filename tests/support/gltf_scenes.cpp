@@ -350,4 +350,107 @@ int writeSphereGltf(const std::string& path, const TessellatedSphere& sphere) {
     return vertexCount;
 }
 
+glm::vec4 getPlaneTangent(PlaneUv uv) {
+    switch (uv) {
+    case PlaneUv::Standard:
+        return {1.0f, 0.0f, 0.0f, 1.0f};
+    case PlaneUv::FlippedV:
+        return {1.0f, 0.0f, 0.0f, -1.0f};
+    case PlaneUv::Rotated:
+        return {0.0f, 0.0f, 1.0f, 1.0f};
+    }
+    return {};
+}
+
+void writeNormalMappedPlaneGltf(const std::string& path, const NormalMappedPlane& plane) {
+    tinygltf::Model model;
+    model.asset.version = "2.0";
+    model.buffers.resize(1);
+    tinygltf::Image image;
+    image.name = "normal_map";
+    image.width = plane.texelsPerSide;
+    image.height = plane.texelsPerSide;
+    image.component = 4;
+    image.bits = 8;
+    image.pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+    image.mimeType = "image/png";
+    for (int i = 0; i < image.width * image.height; ++i)
+        image.image.insert(image.image.end(),
+                           {plane.texel[0], plane.texel[1], plane.texel[2], 255});
+    model.images.push_back(image);
+    tinygltf::Texture texture;
+    texture.source = 0;
+    model.textures.push_back(texture);
+    const int material = addMaterial(model, "bumpy", -1);
+    model.materials.back().normalTexture.index = 0;
+
+    const float h = plane.halfM;
+    const std::vector<float> positions = {-h, 0, -h, h, 0, -h, h, 0, h, -h, 0, h};
+    // Corner (x, z) in {-h, h}^2 to (u, v) as the layouts above say.
+    std::vector<float> uvs;
+    for (size_t c = 0; c < 4; ++c) {
+        const float x = positions[3 * c] > 0.0f ? 1.0f : 0.0f;
+        const float z = positions[3 * c + 2] > 0.0f ? 1.0f : 0.0f;
+        switch (plane.uv) {
+        case PlaneUv::Standard:
+            uvs.insert(uvs.end(), {x, z});
+            break;
+        case PlaneUv::FlippedV:
+            uvs.insert(uvs.end(), {x, 1.0f - z});
+            break;
+        case PlaneUv::Rotated:
+            uvs.insert(uvs.end(), {z, 1.0f - x});
+            break;
+        }
+    }
+    tinygltf::Primitive prim;
+    prim.attributes["POSITION"] = addFloatAccessor(model, positions, TINYGLTF_TYPE_VEC3, 4);
+    prim.attributes["TEXCOORD_0"] = addFloatAccessor(model, uvs, TINYGLTF_TYPE_VEC2, 4);
+    if (plane.writeNormals) {
+        const std::vector<float> normals = {0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0};
+        prim.attributes["NORMAL"] = addFloatAccessor(model, normals, TINYGLTF_TYPE_VEC3, 4);
+    }
+    if (plane.writeTangents) {
+        const glm::vec4 t = getPlaneTangent(plane.uv);
+        std::vector<float> tangents;
+        for (int c = 0; c < 4; ++c)
+            tangents.insert(tangents.end(), {t.x, t.y, t.z, t.w});
+        prim.attributes["TANGENT"] = addFloatAccessor(model, tangents, TINYGLTF_TYPE_VEC4, 4);
+    }
+    // Counter-clockwise seen from +y, as unsigned ints in their own view.
+    const std::vector<uint32_t> indices = {0, 2, 1, 0, 3, 2};
+    tinygltf::Buffer& buffer = model.buffers[0];
+    const size_t offset = buffer.data.size();
+    buffer.data.resize(offset + indices.size() * sizeof(uint32_t));
+    std::memcpy(buffer.data.data() + offset, indices.data(), indices.size() * sizeof(uint32_t));
+    tinygltf::BufferView view;
+    view.buffer = 0;
+    view.byteOffset = offset;
+    view.byteLength = indices.size() * sizeof(uint32_t);
+    model.bufferViews.push_back(view);
+    tinygltf::Accessor accessor;
+    accessor.bufferView = static_cast<int>(model.bufferViews.size() - 1);
+    accessor.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+    accessor.type = TINYGLTF_TYPE_SCALAR;
+    accessor.count = indices.size();
+    model.accessors.push_back(accessor);
+    prim.indices = static_cast<int>(model.accessors.size() - 1);
+    prim.material = material;
+    prim.mode = TINYGLTF_MODE_TRIANGLES;
+    tinygltf::Mesh mesh;
+    mesh.name = "plane";
+    mesh.primitives.push_back(prim);
+    model.meshes.push_back(mesh);
+    model.nodes.emplace_back();
+    model.nodes.back().mesh = 0;
+    tinygltf::Scene scene;
+    scene.nodes.push_back(0);
+    model.scenes.push_back(scene);
+    model.defaultScene = 0;
+    tinygltf::TinyGLTF writer;
+    if (!writer.WriteGltfSceneToFile(&model, path, true, true, true, false)) {
+        throw std::runtime_error("tinygltf could not write " + path);
+    }
+}
+
 } // namespace ispm::test

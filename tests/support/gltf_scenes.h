@@ -1,7 +1,7 @@
 // glTF files written by the tests themselves (tinygltf's writer), so the importer is checked on
 // files it did not make: a floor with a checker base colour texture, a white ceiling, a spot
 // light and a camera; a tessellated sphere with or without normals; and a leaf card, a square
-// whose texture's alpha cuts a disc out of it, over a floor.
+// whose texture's alpha cuts a disc out of it, over a floor; a normal-mapped square.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -75,5 +75,30 @@ struct TessellatedSphere {
 
 // Writes the sphere as a .gltf with an embedded buffer. Returns its vertex count.
 int writeSphereGltf(const std::string& path, const TessellatedSphere& sphere);
+
+// A square on y = 0 facing up (x and z in [-half, half]), white, with a normal map whose every
+// texel is `texel` (linear RGB bytes: the tangent-space normal 2 rgb / 255 - 1); no lights, no
+// cameras. How its texture coordinates lie on it decides the tangent frame:
+// - Standard: u along +x, v along +z. Tangent +x; the bitangent, up the image (-v), is -z =
+//   cross(+y, +x): handedness +1, TANGENT (1, 0, 0, 1).
+// - FlippedV: u along +x, v along -z. Tangent +x; the bitangent is +z = -cross(+y, +x):
+//   handedness -1, TANGENT (1, 0, 0, -1).
+// - Rotated (the standard layout turned by 90 degrees): u along +z, v along -x. Tangent +z; the
+//   bitangent is +x = cross(+y, +z): handedness +1, TANGENT (0, 0, 1, 1).
+enum class PlaneUv { Standard, FlippedV, Rotated };
+struct NormalMappedPlane {
+    float halfM = 1.0f;
+    std::array<uint8_t, 3> texel{128, 128, 255};
+    int texelsPerSide = 4;
+    PlaneUv uv = PlaneUv::Standard;
+    bool writeTangents = false; // TANGENT as listed above; else the importer generates them
+    bool writeNormals = true;   // NORMAL (0, 1, 0) at every corner; else flat
+};
+
+// Writes the plane as a .gltf with embedded buffer and image.
+void writeNormalMappedPlaneGltf(const std::string& path, const NormalMappedPlane& plane);
+
+// The tangent TANGENT holds for `uv` (as listed above).
+glm::vec4 getPlaneTangent(PlaneUv uv);
 
 } // namespace ispm::test

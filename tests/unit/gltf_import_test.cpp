@@ -241,6 +241,28 @@ TEST(GltfImport, MalformedFilesNameFileAndJsonPath) {
          "/nodes/0"},
         {"strip primitives", [](nlohmann::json& d) { d["meshes"][0]["primitives"][0]["mode"] = 5; },
          "/meshes/0/primitives/0/mode"},
+        {"normal map naming a texture past the end",
+         [](nlohmann::json& d) {
+             d["materials"][0]["normalTexture"] = {{"index", 5}};
+         },
+         "/materials/0/normalTexture/index"},
+        {"normal map on a texture coordinate set ispm does not read",
+         [](nlohmann::json& d) {
+             d["materials"][0]["normalTexture"] = {{"index", 0}, {"texCoord", 1}};
+         },
+         "/materials/0/normalTexture/texCoord"},
+        {"normal map scale beyond reason",
+         [](nlohmann::json& d) {
+             d["materials"][0]["normalTexture"] = {{"index", 0}, {"scale", 1e6}};
+         },
+         "/materials/0/normalTexture/scale"},
+        {"tangents of three components",
+         [](nlohmann::json& d) {
+             d["materials"][0]["normalTexture"] = {{"index", 0}};
+             auto& attributes = d["meshes"][0]["primitives"][0]["attributes"];
+             attributes["TANGENT"] = attributes["POSITION"];
+         },
+         "/accessors/0/type"}, // "... (used at /meshes/0/primitives/0/attributes/TANGENT)"
         {"textured primitive without texture coordinates",
          [](nlohmann::json& d) {
              d["meshes"][0]["primitives"][0]["attributes"].erase("TEXCOORD_0");
