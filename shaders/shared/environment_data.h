@@ -35,7 +35,8 @@ ISPM_CONST int kBindingEnvironment = 37;
 // The image environment's texture (RGBA32F, width x (height + 1), texelFetch only): rows
 // 0..height-1 the image, top row (the zenith) first, rgb its radiance W/(m^2 sr) (scale
 // applied), a the row's conditional CDF at the texel's end; row `height`, r at x = row: the
-// marginal CDF over rows at that row's end (docs/design.md "Environment").
+// marginal CDF over rows at that row's end (docs/design.md "Environment"). The last of the 32
+// units a llvmpipe stage has, past scene_data.h's (0..30), so that no pass's own unit meets it.
 ISPM_CONST int kUnitEnvironmentImage = 31;
 
 ISPM_CONST float kEnvironmentPi = 3.14159265358979f;
