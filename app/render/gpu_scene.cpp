@@ -211,6 +211,12 @@ GpuScene::GpuScene(const Scene& scene, int lightResolution) : mLightResolution(l
     mEnvironmentMean = computeEnvironmentMean(scene.environment);
     mEnvironment =
         gl::Buffer::fromSpan<gpu::GpuEnvironment>("scene environment", std::span(&environment, 1));
+    if (scene.environment.type == EnvironmentType::Image) {
+        const EnvironmentImage& image = *scene.environment.image;
+        mEnvironmentImage = gl::Texture::create2D("environment image", gl::Format::RGBA32F,
+                                                  image.width, image.height + 1);
+        mEnvironmentImage.uploadRgba(packEnvironmentTexels(image));
+    }
 }
 
 void GpuScene::uploadEmitters(const Scene& scene) {
@@ -412,6 +418,7 @@ void GpuScene::bind() const {
     mTlasOrder.bindBase(BufferTarget::Storage, gpu::kBindingTlasInstanceOrder);
     mEmitterBuffer.bindBase(BufferTarget::Storage, gpu::kBindingEmitters);
     mEnvironment.bindBase(BufferTarget::Storage, gpu::kBindingEnvironment);
+    if (mEnvironmentImage.getId() != 0) mEnvironmentImage.bindUnit(gpu::kUnitEnvironmentImage);
 }
 
 size_t GpuScene::getGpuBytes() const {
@@ -419,7 +426,9 @@ size_t GpuScene::getGpuBytes() const {
            mPreviousTransforms.getSize() + mMaterials.getSize() + mLights.getSize() +
            mLightViews.getSize() + mBlasNodes.getSize() + mBlasOrder.getSize() +
            mTlasNodes.getSize() + mTlasOrder.getSize() + mVertexAttributes.getSize() +
-           mEmitterBuffer.getSize() + mEnvironment.getSize() + getTextureBytes();
+           mEmitterBuffer.getSize() + mEnvironment.getSize() + getTextureBytes() +
+           size_t(mEnvironmentImage.getWidth()) * size_t(mEnvironmentImage.getHeight()) *
+               sizeof(glm::vec4);
 }
 
 size_t GpuScene::getTextureBytes() const {

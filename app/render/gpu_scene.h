@@ -163,7 +163,8 @@ class GpuScene {
     bool mHasTransmissive = true;
     bool mHasEmission = true;
     gl::Buffer mLights;
-    gl::Buffer mEnvironment; // kBindingEnvironment
+    gl::Buffer mEnvironment;       // kBindingEnvironment
+    gl::Texture mEnvironmentImage; // kUnitEnvironmentImage (an image environment's)
     EnvironmentMean mEnvironmentMean;
     Emitters mEmitters;
     std::vector<gpu::GpuEmitter> mEmitterRows; // as last uploaded

@@ -3,6 +3,7 @@
 
 #include <glm/gtc/constants.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace ispm {
@@ -60,6 +61,14 @@ gpu::GpuEnvironment makeGpuEnvironment(const Environment& environment) {
         return g;
     case EnvironmentType::Sky:
         break;
+    case EnvironmentType::Image: {
+        const EnvironmentImage& image = *environment.image;
+        const float alpha = glm::radians(environment.rotationDeg);
+        g.type =
+            glm::uvec4(gpu::kEnvironmentImage, uint32_t(image.width), uint32_t(image.height), 0u);
+        g.image = glm::vec4(std::cos(alpha), std::sin(alpha), float(image.normaliser), 0.0f);
+        return g;
+    }
     }
     g.type.x = gpu::kEnvironmentSky;
     g.radiance = glm::vec4(0.0f, 0.0f, 0.0f, environment.scale);
@@ -81,6 +90,14 @@ gpu::GpuEnvironment makeGpuEnvironment(const Environment& environment) {
 }
 
 glm::vec3 evaluateEnvironment(const Environment& environment, const glm::vec3& toward) {
+    if (environment.type == EnvironmentType::Image) {
+        const EnvironmentImage& image = *environment.image;
+        const gpu::GpuEnvironment g = makeGpuEnvironment(environment);
+        const glm::vec2 uv = gpu::computeEnvironmentUv(toward, glm::vec2(g.image));
+        const int x = std::min(int(uv.x * float(image.width)), image.width - 1);
+        const int y = std::min(int(uv.y * float(image.height)), image.height - 1);
+        return image.radiance[size_t(y) * size_t(image.width) + size_t(x)];
+    }
     return gpu::evaluateEnvironment(makeGpuEnvironment(environment), toward);
 }
 
@@ -88,6 +105,11 @@ EnvironmentMean computeEnvironmentMean(const Environment& environment) {
     EnvironmentMean mean;
     if (environment.type == EnvironmentType::None) return mean;
     const glm::vec3 rec709(0.2126f, 0.7152f, 0.0722f);
+    if (environment.type == EnvironmentType::Image) {
+        mean.solidAngleSr = 4.0 * glm::pi<double>();
+        mean.luminance = environment.image->luminanceIntegral / mean.solidAngleSr;
+        return mean;
+    }
     if (environment.type == EnvironmentType::Constant) {
         mean.luminance = double(glm::dot(environment.radiance, rec709));
         mean.solidAngleSr = 4.0 * glm::pi<double>();

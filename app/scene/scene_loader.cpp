@@ -4,9 +4,12 @@
 
 #include "core/input_error.h"
 #include "core/strings.h"
+#include "image/image_io.h"
 #include "scene/gltf_import.h"
 #include "scene/scene_parse.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -180,12 +183,70 @@ void parseRender(const JsonNode& node, Settings& settings) {
     }
 }
 
-// `environment`: a constant radiance, or the sky tied to a sun (its own `sun_direction`, else the
-// scene's first sun light's).
-Environment parseEnvironment(const JsonNode& node, const std::vector<Light>& lights) {
+// An image environment: an equirectangular EXR or PFM image, 2:1, every texel finite and >= 0,
+// found beside the scene file when its path is relative (as OBJ files are).
+Environment parseImageEnvironment(const JsonNode& node, const std::string& baseDir) {
+    node.checkKeys({"type", "image", "rotation_deg", "scale"}, "an image environment");
+    const JsonNode imageNode = node.get("image");
+    std::filesystem::path path(imageNode.readString());
+    if (path.is_relative()) path = std::filesystem::path(baseDir) / path;
+    const std::string file = path.string();
+    const std::string ext = path.extension().string();
+    const auto isExtension = [&](const char* e) {
+        return ext.size() == 4 && std::equal(ext.begin(), ext.end(), e, [](char a, char b) {
+                   return std::tolower(static_cast<unsigned char>(a)) == b;
+               });
+    };
+    if (!isExtension(".exr") && !isExtension(".pfm")) {
+        imageNode.fail(strCat("an EXR or PFM image (.exr, .pfm), got '", file, "'"));
+    }
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) {
+        imageNode.fail(strCat("an existing EXR or PFM image, cannot open '", file, "'"));
+    }
+    Image image;
+    try {
+        image = readImage(file);
+    } catch (const std::runtime_error& e) {
+        imageNode.fail(strCat("a readable EXR or PFM image, '", file, "': ", e.what()));
+    }
+    if (image.height < 1 || image.width != 2 * image.height) {
+        imageNode.fail(strCat("an equirectangular image twice as wide as it is high, '", file,
+                              "' is ", image.width, " x ", image.height));
+    }
+    float scale = 1.0f;
+    if (auto s = node.find("scale")) scale = s->readFloat(NumberRange::getClosed(0.0, 1e6));
+    float rotationDeg = 0.0f;
+    if (auto r = node.find("rotation_deg")) {
+        rotationDeg = r->readFloat(NumberRange::getClosed(-360.0, 360.0));
+    }
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            const glm::vec3 texel = image.at(x, y);
+            for (int c = 0; c < 3; ++c) {
+                if (std::isfinite(texel[c]) && texel[c] >= 0.0f &&
+                    std::isfinite(texel[c] * scale)) {
+                    continue;
+                }
+                imageNode.fail(strCat("an image of finite radiance >= 0 (x scale), '", file,
+                                      "' has ", texel[c], " at texel (", x, ", ", y, ") channel ",
+                                      c));
+            }
+        }
+    }
+    return makeImageEnvironment(image, scale, rotationDeg);
+}
+
+// `environment`: a constant radiance, the sky tied to a sun (its own `sun_direction`, else the
+// scene's first sun light's), or an equirectangular image.
+Environment parseEnvironment(const JsonNode& node, const std::vector<Light>& lights,
+                             const std::string& baseDir) {
     node.requireObject("an environment");
+    const auto typeFound = node.find("type");
+    if (!typeFound && node.find("image")) return parseImageEnvironment(node, baseDir);
     const JsonNode typeNode = node.get("type");
     const std::string type = typeNode.readString();
+    if (type == "image") return parseImageEnvironment(node, baseDir);
     Environment environment;
     if (type == "constant") {
         node.checkKeys({"type", "radiance"}, "a constant environment");
@@ -194,7 +255,7 @@ Environment parseEnvironment(const JsonNode& node, const std::vector<Light>& lig
             node.get("radiance").readVec3(NumberRange::getClosed(0.0, kMaxLightPower));
         return environment;
     }
-    if (type != "sky") typeNode.failGot("an environment type: constant or sky");
+    if (type != "sky") typeNode.failGot("an environment type: constant, sky or image");
     node.checkKeys({"type", "turbidity", "scale", "sun_direction"}, "a sky environment");
     environment.type = EnvironmentType::Sky;
     if (auto t = node.find("turbidity")) {
@@ -274,7 +335,7 @@ Scene parseScene(const nlohmann::json& doc, const std::string& file, const std::
         }
     }
     if (auto environment = root.find("environment")) {
-        scene.environment = parseEnvironment(*environment, scene.lights);
+        scene.environment = parseEnvironment(*environment, scene.lights, baseDir);
     }
     if (auto render = root.find("render")) parseRender(*render, scene.settings);
     // A loaded scene is its state at t = 0 (an oscillation's phase may already move it).

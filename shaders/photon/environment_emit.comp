@@ -1,8 +1,9 @@
 // Photon emission from the environment (docs/design.md "Environment"): photon i comes from a
 // direction uniform over those the environment shines from (the sphere for a constant, the upper
-// hemisphere for the sky), enters the scene's bounding box through a point uniform over the
-// box's outline seen along that direction, with the power that direction sends through the
-// outline over the photons (radiance x outline area x solid angle / photons), finds its first hit through
+// hemisphere for the sky) or drawn from an image's pdf, enters the scene's bounding box through
+// a point uniform over the box's outline seen along that direction, with the power that
+// direction sends through the outline over the photons (radiance x outline area x solid angle /
+// photons; for an image radiance / pdf stands for the solid angle), finds its first hit through
 // the BVH and makes the first bounce there as a light view's photon does (photon_emit.geom);
 // survivors are appended to the bounce buffer. Travel counts from the first hit, as the sun's.
 #include "lib/scene_buffers.glsl"
@@ -13,14 +14,14 @@
 #include "lib/scene_textures.glsl"
 #include "shared/photon_data.h"
 #include "shared/photon_scatter.h"
-#include "shared/environment_data.h"
 #include "lib/photon_lights.glsl"
+#define ENVIRONMENT_LOOKUP_ONLY 1
+#include "lib/environment.glsl"
 
 layout(local_size_x = kEnvironmentEmitGroupSize) in;
 
 layout(std430, binding = kBindingBouncePhotons) writeonly buffer BounceBuffer { BouncePhoton bouncePhotons[]; };
 layout(std430, binding = kBindingPhotonCounters) buffer CounterBuffer { PhotonCounters counters; };
-layout(std430, binding = kBindingEnvironment) readonly buffer SceneEnvironment { GpuEnvironment environment; };
 
 layout(std140, binding = kBindingPassParams) uniform EnvironmentEmitParamsBlock { EnvironmentEmitParams params; };
 
@@ -32,14 +33,27 @@ void main() {
     uint generator = params.rngGenerator;
     // The direction the light comes from: uniform in z over [-1, 1] (a sphere) or [0, 1] (the
     // sky's hemisphere), stratified over the photons.
+    // An image's: from its pdf, the row's number stratified the same way; 1 / pdf stands for
+    // the solid angle.
     bool sky = environment.type.x == kEnvironmentSky;
     float z = (float(index) + nextRandom(rng, generator)) / float(params.photons);
-    z = sky ? z : 2.0 * z - 1.0;
-    float r = sqrt(max(1.0 - z * z, 0.0));
-    float phi = kTwoPiF * nextRandom(rng, generator);
-    vec3 toward = vec3(r * cos(phi), z, r * sin(phi));
-    float solidAngle = sky ? kTwoPiF : 2.0 * kTwoPiF;
-    vec3 radiance = evaluateEnvironment(environment, toward);
+    vec3 toward;
+    float solidAngle;
+    vec3 radiance;
+    if (hasEnvironmentImage()) {
+        EnvironmentSample s = sampleEnvironmentImage(vec2(z, nextRandom(rng, generator)));
+        if (!(s.pdf > 0.0)) return;
+        toward = s.toward;
+        solidAngle = 1.0 / s.pdf;
+        radiance = s.radiance;
+    } else {
+        z = sky ? z : 2.0 * z - 1.0;
+        float r = sqrt(max(1.0 - z * z, 0.0));
+        float phi = kTwoPiF * nextRandom(rng, generator);
+        toward = vec3(r * cos(phi), z, r * sin(phi));
+        solidAngle = sky ? kTwoPiF : 2.0 * kTwoPiF;
+        radiance = evaluateEnvironment(environment, toward);
+    }
     if (all(equal(radiance, vec3(0.0)))) return;
     vec3 dir = -toward;
     vec3 u = vec3(nextRandom(rng, generator), nextRandom(rng, generator),

@@ -4,7 +4,9 @@
 // them), and to one point on the emitting triangles picked by power (lib/emitters.glsl), whose
 // light a BSDF-sampled ray that hits an emitter gathers too: the two weighed by the power
 // heuristic (MIS), so that small bright emitters and large dim ones both converge. BSDF sampling
-// by the shared scatterSurface, Russian roulette after a few vertices.
+// by the shared scatterSurface, Russian roulette after a few vertices. An image environment is
+// sampled the same way: a direction from the map's pdf at each vertex, MIS with the BSDF-sampled
+// ray that leaves the scene.
 // `bounces` B counts reflections between the light and the visible surface, as in ispm mode:
 // light is gathered at vertices 1..B+1 and the path stops there.
 #include "lib/scene_buffers.glsl"
@@ -46,9 +48,15 @@ vec3 traceCameraPath(vec2 pixel, inout uint rng) {
         if (!traceRay(origin, dir, kNoHitDistance, hit)) {
             // The camera sees the environment, or the background; the environment's light on
             // surfaces comes from its own samples at each vertex (below), so a path that leaves
-            // the scene after a bounce adds nothing.
+            // the scene after a bounce adds nothing, but for an image's: its samples come from the
+            // map's pdf, which BSDF sampling meets here, weighed by MIS (after a mirror's or
+            // glass's delta direction, which the map's samples cannot find, in full).
             if (vertex == 1u) {
                 radiance += hasEnvironment() ? lookUpEnvironment(dir) : frame.backgroundRadiance;
+            } else if (hasEnvironmentImage()) {
+                float weight =
+                    lastPdf > 0.0 ? computeMisWeight(lastPdf, computeEnvironmentImagePdf(dir)) : 1.0;
+                radiance += throughput * lookUpEnvironment(dir) * weight;
             }
             break;
         }
@@ -90,7 +98,22 @@ vec3 traceCameraPath(vec2 pixel, inout uint rng) {
             }
             radiance += throughput * light;
         }
-        if (hasEnvironment()) {
+        if (hasEnvironmentImage()) {
+            // An image's light: one direction from the map's pdf with a ray to the open sky,
+            // weighed against BSDF sampling by the power heuristic where the path goes on (at
+            // the last vertex too: B counts the reflections after the light).
+            vec2 u = vec2(nextRandom(rng, kRngPcg), nextRandom(rng, kRngPcg));
+            EnvironmentSample s = sampleEnvironmentImage(u);
+            if (s.pdf > 0.0) {
+                vec3 light = shadeEnvironmentDirection(s.toward, s.radiance, position, n, shading,
+                                                       diffuse, m.specular, wo, params.rayOffsetM) /
+                             s.pdf;
+                if (scatters && any(greaterThan(light, vec3(0.0)))) {
+                    light *= computeMisWeight(s.pdf, computeScatterPdf(dir, shading, diffuse, m.specular, s.toward, 1.0 / total));
+                }
+                radiance += throughput * light;
+            }
+        } else if (hasEnvironment()) {
             // The environment's light at this vertex: one cosine-weighted direction with a ray
             // to the open sky, as direct.frag samples it (at the last vertex too: B counts the
             // reflections after the light).

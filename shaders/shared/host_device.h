@@ -26,6 +26,7 @@ ISPM_NAMESPACE_BEGIN
 using glm::abs;
 using glm::acos;
 using glm::asin;
+using glm::atan;
 using glm::clamp;
 using glm::cos;
 using glm::cross;

@@ -2,7 +2,11 @@
 // and the JSON path of the mistake. Every case starts from a valid scene and breaks one thing.
 #include "scene_test_util.h"
 
+#include "image/image_io.h"
+
+#include <cmath>
 #include <functional>
+#include <limits>
 #include <vector>
 
 namespace ispm::test {
@@ -478,6 +482,85 @@ TEST(SceneErrors, MessageHasTheDocumentedForm) {
             std::string(e.what()).rfind(path + ": /lights/0/intensity: expected 3 numbers", 0), 0u)
             << e.what();
     }
+}
+
+// Environment images: the scene names an image file beside it; each broken one (missing,
+// corrupt, not 2:1, a negative or NaN texel) or a negative scale is one line naming the scene
+// file, the JSON path and the image file.
+struct ImageCase {
+    const char* name;
+    std::function<void(const ScratchDir&)> writeFiles; // the image, sky.pfm
+    json environment;
+    std::vector<std::string> expected;
+};
+
+void writeMap(const ScratchDir& dir, int width, int height, float bad = 1.0f) {
+    Image image(width, height, glm::vec3(1.0f));
+    image.at(1, 1).g = bad;
+    writeImage(dir.getPath("sky.pfm"), image);
+}
+
+TEST(SceneErrors, BrokenEnvironmentImages) {
+    const json image = {{"image", "sky.pfm"}};
+    const std::vector<ImageCase> cases = {
+        {"missing", [](const ScratchDir&) {}, image, {"/environment/image", "sky.pfm", "open"}},
+        {"corrupt",
+         [](const ScratchDir& dir) { dir.write("sky.pfm", "PF\n4 2\n-1.0\nshort"); },
+         image,
+         {"/environment/image", "sky.pfm"}},
+        {"three by two",
+         [](const ScratchDir& dir) { writeMap(dir, 6, 4); },
+         image,
+         {"/environment/image", "sky.pfm", "twice as wide", "6 x 4"}},
+        {"negative texel",
+         [](const ScratchDir& dir) { writeMap(dir, 8, 4, -0.5f); },
+         image,
+         {"/environment/image", "sky.pfm", "-0.5", "(1, 1)"}},
+        {"NaN texel",
+         [](const ScratchDir& dir) {
+             writeMap(dir, 8, 4, std::numeric_limits<float>::quiet_NaN());
+         },
+         image,
+         {"/environment/image", "sky.pfm", "nan", "(1, 1)"}},
+        {"infinite texel",
+         [](const ScratchDir& dir) { writeMap(dir, 8, 4, std::numeric_limits<float>::infinity()); },
+         image,
+         {"/environment/image", "sky.pfm", "inf"}},
+        {"negative scale",
+         [](const ScratchDir& dir) { writeMap(dir, 8, 4); },
+         {{"image", "sky.pfm"}, {"scale", -1}},
+         {"/environment/scale", "-1"}},
+        {"not an image type",
+         [](const ScratchDir& dir) { writeMap(dir, 8, 4); },
+         {{"image", "sky.png"}},
+         {"/environment/image", "EXR or PFM"}},
+    };
+    for (const ImageCase& c : cases) {
+        ScratchDir dir;
+        c.writeFiles(dir);
+        json doc = makeValidScene();
+        doc["environment"] = c.environment;
+        const std::string message = getLoadError(dir, doc.dump(), kFileName);
+        ASSERT_FALSE(message.empty()) << c.name << ": no InputError";
+        EXPECT_TRUE(contains(message, kFileName)) << c.name << ": " << message;
+        for (const std::string& part : c.expected) {
+            EXPECT_TRUE(contains(message, part))
+                << c.name << ": '" << part << "' not in: " << message;
+        }
+        EXPECT_FALSE(contains(message, "\n")) << c.name << ": " << message;
+    }
+}
+
+TEST(SceneErrors, EnvironmentImageBesideTheSceneLoads) {
+    ScratchDir dir;
+    writeMap(dir, 8, 4, 3.0f);
+    json doc = makeValidScene();
+    doc["environment"] = {{"image", "sky.pfm"}, {"rotation_deg", 90}, {"scale", 2}};
+    const Scene scene = loadScene(dir.write("scene.json", doc.dump()));
+    ASSERT_EQ(scene.environment.type, EnvironmentType::Image);
+    EXPECT_EQ(scene.environment.image->width, 8);
+    EXPECT_EQ(scene.environment.image->radiance[size_t(1 * 8 + 1)], glm::vec3(2.0f, 6.0f, 2.0f));
+    EXPECT_EQ(scene.environment.rotationDeg, 90.0f);
 }
 
 } // namespace

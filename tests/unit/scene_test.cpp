@@ -134,8 +134,8 @@ TEST(SceneLoader, MatrixWithTrsIsRejected) {
 }
 
 TEST(SceneLoader, ShippedScenesLoad) {
-    for (const char* name :
-         {"cornell.json", "box_city.json", "courtyard.json", "dynamic.json", "caustics.json"}) {
+    for (const char* name : {"cornell.json", "box_city.json", "courtyard.json",
+                             "courtyard_envmap.json", "dynamic.json", "caustics.json"}) {
         SCOPED_TRACE(name);
         const Scene scene = loadScene(std::string(ISPM_ASSET_DIR) + "/scenes/" + name);
         EXPECT_FALSE(scene.meshes.empty());
