@@ -23,6 +23,13 @@ def encode_srgb(linear):
     return np.where(c <= 0.0031308, 12.92 * c, 1.055 * c ** (1.0 / 2.4) - 0.055)
 
 
+def show_panel(ax, title, image):
+    """One panel: `image` already scaled so that 1 is white."""
+    ax.imshow(encode_srgb(image), interpolation="nearest")
+    ax.set_title(title, fontsize=9)
+    ax.axis("off")
+
+
 def main():
     if len(sys.argv) < 3 or any("=" not in a for a in sys.argv[2:]):
         sys.exit(__doc__)
@@ -32,9 +39,7 @@ def main():
     white = np.percentile(luminance[luminance > 0.0], WHITE_PERCENTILE)
     fig, axes = plt.subplots(1, len(images), figsize=(3.2 * len(images), 3.5))
     for ax, (title, _), image in zip(np.atleast_1d(axes), panels, images):
-        ax.imshow(encode_srgb(image / white), interpolation="nearest")
-        ax.set_title(title, fontsize=9)
-        ax.axis("off")
+        show_panel(ax, title, image / white)
     fig.tight_layout()
     fig.savefig(sys.argv[1], dpi=100)
 

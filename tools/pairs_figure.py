@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Figure of scenes, ispm beside the path tracer, for README (one row of pairs).
+"""Figure of scenes, ispm beside the path tracer, for README (two pairs to a row).
 
 Usage: tools/pairs_figure.py OUT.png "SCENE=ISPM.pfm,REFERENCE.pfm" ...
 (/usr/bin/python3: numpy, matplotlib)
@@ -12,11 +12,13 @@ import sys
 
 import matplotlib
 import numpy as np
-from caustics_figure import WHITE_PERCENTILE, encode_srgb
+from caustics_figure import WHITE_PERCENTILE, show_panel
 from measure_caustics import read_pfm
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+
+PAIRS_PER_ROW = 2
 
 
 def parse(argument):
@@ -29,8 +31,12 @@ def main():
     if len(sys.argv) < 3 or any("=" not in a or "," not in a for a in sys.argv[2:]):
         sys.exit(__doc__)
     pairs = [parse(a) for a in sys.argv[2:]]
-    fig, axes = plt.subplots(1, 2 * len(pairs), figsize=(2.4 * 2 * len(pairs), 2.8))
-    axes = np.atleast_1d(axes)
+    columns = 2 * min(len(pairs), PAIRS_PER_ROW)
+    rows = (len(pairs) + PAIRS_PER_ROW - 1) // PAIRS_PER_ROW
+    fig, axes = plt.subplots(rows, columns, figsize=(2.4 * columns, 2.7 * rows))
+    axes = np.atleast_1d(axes).ravel()
+    for ax in axes[2 * len(pairs):]:
+        ax.axis("off")
     for i, (scene, ispm_path, reference_path) in enumerate(pairs):
         ispm = read_pfm(ispm_path)[::-1]  # PFM rows start at the bottom
         reference = read_pfm(reference_path)[::-1]
@@ -38,9 +44,7 @@ def main():
         white = np.percentile(luminance[luminance > 0.0], WHITE_PERCENTILE)
         for ax, title, image in ((axes[2 * i], f"{scene}: ispm", ispm),
                                  (axes[2 * i + 1], "path tracer", reference)):
-            ax.imshow(encode_srgb(image / white), interpolation="nearest")
-            ax.set_title(title, fontsize=9)
-            ax.axis("off")
+            show_panel(ax, title, image / white)
     fig.tight_layout()
     fig.savefig(sys.argv[1], dpi=100)
 

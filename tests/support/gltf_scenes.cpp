@@ -46,6 +46,26 @@ int addFloatAccessor(tinygltf::Model& model, const std::vector<float>& values, i
     return static_cast<int>(model.accessors.size() - 1);
 }
 
+// Triangle indices as unsigned ints in a view of their own; the accessor's index.
+int addIndexAccessor(tinygltf::Model& model, const std::vector<uint32_t>& indices) {
+    tinygltf::Buffer& buffer = model.buffers[0];
+    const size_t offset = buffer.data.size();
+    buffer.data.resize(offset + indices.size() * sizeof(uint32_t));
+    std::memcpy(buffer.data.data() + offset, indices.data(), indices.size() * sizeof(uint32_t));
+    tinygltf::BufferView view;
+    view.buffer = 0;
+    view.byteOffset = offset;
+    view.byteLength = indices.size() * sizeof(uint32_t);
+    model.bufferViews.push_back(view);
+    tinygltf::Accessor accessor;
+    accessor.bufferView = static_cast<int>(model.bufferViews.size() - 1);
+    accessor.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+    accessor.type = TINYGLTF_TYPE_SCALAR;
+    accessor.count = indices.size();
+    model.accessors.push_back(accessor);
+    return static_cast<int>(model.accessors.size() - 1);
+}
+
 // A square at height y facing `up` (or down), with texture coordinates 0..1 over it.
 int addSquareMesh(tinygltf::Model& model, float halfM, float y, bool facingUp, int material) {
     const float h = halfM;
@@ -313,22 +333,7 @@ int writeSphereGltf(const std::string& path, const TessellatedSphere& sphere) {
         model.accessors[size_t(accessor)].maxValues.clear();
         prim.attributes["NORMAL"] = accessor;
     }
-    tinygltf::Buffer& buffer = model.buffers[0];
-    const size_t offset = buffer.data.size();
-    buffer.data.resize(offset + indices.size() * sizeof(uint32_t));
-    std::memcpy(buffer.data.data() + offset, indices.data(), indices.size() * sizeof(uint32_t));
-    tinygltf::BufferView view;
-    view.buffer = 0;
-    view.byteOffset = offset;
-    view.byteLength = indices.size() * sizeof(uint32_t);
-    model.bufferViews.push_back(view);
-    tinygltf::Accessor accessor;
-    accessor.bufferView = static_cast<int>(model.bufferViews.size() - 1);
-    accessor.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
-    accessor.type = TINYGLTF_TYPE_SCALAR;
-    accessor.count = indices.size();
-    model.accessors.push_back(accessor);
-    prim.indices = static_cast<int>(model.accessors.size() - 1);
+    prim.indices = addIndexAccessor(model, indices);
     prim.material = addMaterial(model, "sphere", -1);
     const double albedo = sphere.albedo;
     model.materials.back().pbrMetallicRoughness.baseColorFactor = {albedo, albedo, albedo, 1.0};
@@ -419,22 +424,7 @@ void writeNormalMappedPlaneGltf(const std::string& path, const NormalMappedPlane
     }
     // Counter-clockwise seen from +y, as unsigned ints in their own view.
     const std::vector<uint32_t> indices = {0, 2, 1, 0, 3, 2};
-    tinygltf::Buffer& buffer = model.buffers[0];
-    const size_t offset = buffer.data.size();
-    buffer.data.resize(offset + indices.size() * sizeof(uint32_t));
-    std::memcpy(buffer.data.data() + offset, indices.data(), indices.size() * sizeof(uint32_t));
-    tinygltf::BufferView view;
-    view.buffer = 0;
-    view.byteOffset = offset;
-    view.byteLength = indices.size() * sizeof(uint32_t);
-    model.bufferViews.push_back(view);
-    tinygltf::Accessor accessor;
-    accessor.bufferView = static_cast<int>(model.bufferViews.size() - 1);
-    accessor.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
-    accessor.type = TINYGLTF_TYPE_SCALAR;
-    accessor.count = indices.size();
-    model.accessors.push_back(accessor);
-    prim.indices = static_cast<int>(model.accessors.size() - 1);
+    prim.indices = addIndexAccessor(model, indices);
     prim.material = material;
     prim.mode = TINYGLTF_MODE_TRIANGLES;
     tinygltf::Mesh mesh;
