@@ -15,20 +15,25 @@ namespace {
 
 constexpr double kHalfSqrt2 = 0.70710678118654752;
 
-// Appends a float array to the buffer and a view + accessor over it; returns the accessor.
-int addFloatAccessor(tinygltf::Model& model, const std::vector<float>& values, int type,
-                     size_t count) {
+// Appends `bytes` bytes to the buffer and a view over them; returns the view.
+int appendBufferView(tinygltf::Model& model, const void* data, size_t bytes) {
     tinygltf::Buffer& buffer = model.buffers[0];
     const size_t offset = buffer.data.size();
-    buffer.data.resize(offset + values.size() * sizeof(float));
-    std::memcpy(buffer.data.data() + offset, values.data(), values.size() * sizeof(float));
+    buffer.data.resize(offset + bytes);
+    std::memcpy(buffer.data.data() + offset, data, bytes);
     tinygltf::BufferView view;
     view.buffer = 0;
     view.byteOffset = offset;
-    view.byteLength = values.size() * sizeof(float);
+    view.byteLength = bytes;
     model.bufferViews.push_back(view);
+    return static_cast<int>(model.bufferViews.size() - 1);
+}
+
+// Appends a float array to the buffer and a view + accessor over it; returns the accessor.
+int addFloatAccessor(tinygltf::Model& model, const std::vector<float>& values, int type,
+                     size_t count) {
     tinygltf::Accessor accessor;
-    accessor.bufferView = static_cast<int>(model.bufferViews.size() - 1);
+    accessor.bufferView = appendBufferView(model, values.data(), values.size() * sizeof(float));
     accessor.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
     accessor.type = type;
     accessor.count = count;
@@ -48,17 +53,9 @@ int addFloatAccessor(tinygltf::Model& model, const std::vector<float>& values, i
 
 // Triangle indices as unsigned ints in a view of their own; the accessor's index.
 int addIndexAccessor(tinygltf::Model& model, const std::vector<uint32_t>& indices) {
-    tinygltf::Buffer& buffer = model.buffers[0];
-    const size_t offset = buffer.data.size();
-    buffer.data.resize(offset + indices.size() * sizeof(uint32_t));
-    std::memcpy(buffer.data.data() + offset, indices.data(), indices.size() * sizeof(uint32_t));
-    tinygltf::BufferView view;
-    view.buffer = 0;
-    view.byteOffset = offset;
-    view.byteLength = indices.size() * sizeof(uint32_t);
-    model.bufferViews.push_back(view);
     tinygltf::Accessor accessor;
-    accessor.bufferView = static_cast<int>(model.bufferViews.size() - 1);
+    accessor.bufferView =
+        appendBufferView(model, indices.data(), indices.size() * sizeof(uint32_t));
     accessor.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
     accessor.type = TINYGLTF_TYPE_SCALAR;
     accessor.count = indices.size();
